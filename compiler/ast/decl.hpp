@@ -1,0 +1,142 @@
+// Declarations of a pack: what one .rules file (and its includes) says.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ast/expr.hpp"
+
+namespace rift::ast {
+
+struct Ident {
+  std::string text;
+  Location loc;
+};
+
+struct NodeDecl {
+  Ident name;
+  Label label;
+};
+
+/// a -dim- b; a loop when a and b are the same name.
+struct Arc {
+  Ident a;
+  Ident b;
+  int dim = 0;
+  Location dim_loc;
+  Location loc;
+};
+
+/// node.embedding = value (right-node expressions, updates, forces).
+struct Assign {
+  Ident node;
+  Ident embedding;
+  ExprPtr value;
+  Location loc;
+};
+
+struct Pattern {
+  bool present = false;
+  Location loc;  // the `left` / `right` / `pattern` keyword
+  std::vector<NodeDecl> nodes;
+  std::vector<Arc> arcs;
+  std::vector<Assign> assigns;  // only meaningful on the right
+};
+
+struct Let {
+  Ident name;
+  ExprPtr value;
+};
+
+struct Param {
+  Ident name;
+  Type type = Type::Error;
+  Location type_loc;
+};
+
+struct Rule {
+  Ident name;
+  std::vector<Param> params;
+  std::vector<Ident> hooks;
+  Location hook_loc;
+  Pattern left;
+  Pattern right;
+  std::vector<Let> lets;
+  std::vector<ExprPtr> whens;
+  std::vector<Assign> updates;
+};
+
+struct Interaction {
+  Ident name;
+  Label support;
+  Pattern pattern;
+  std::vector<Let> lets;
+  std::vector<ExprPtr> whens;
+  std::vector<Assign> forces;
+  ExprPtr energy;
+};
+
+struct ApplyArg {
+  Ident name;
+  ExprPtr value;
+};
+
+struct Criterion {
+  Ident name;
+  Label orbit;
+  Ident dart;
+  std::vector<Let> lets;
+  ExprPtr measure;  // a comparison: measure OP threshold
+  bool has_apply = false;
+  Ident rule;
+  std::vector<Ident> apply_hooks;
+  std::vector<ApplyArg> apply_args;
+  Location apply_loc;
+};
+
+struct Embedding {
+  Ident name;
+  Type type = Type::Error;
+  Location type_loc;
+  Label orbit;
+  ExprPtr default_value;
+  std::optional<Ident> merge;
+};
+
+struct PackParam {
+  Ident name;
+  Type type = Type::Error;
+  Location type_loc;
+  ExprPtr value;
+};
+
+struct Init {
+  Ident embedding;
+  Ident dart;
+  ExprPtr value;
+  Location loc;
+};
+
+struct Include {
+  std::string path;
+  Location loc;
+};
+
+/// One parsed file.
+struct File {
+  int file_id = -1;
+  bool has_header = false;
+  Ident pack;
+  int dimension = 2;
+  Location dimension_loc;
+  std::vector<Include> includes;
+  std::vector<Embedding> embeddings;
+  std::vector<PackParam> params;
+  std::vector<Init> inits;
+  std::vector<Rule> rules;
+  std::vector<Interaction> interactions;
+  std::vector<Criterion> criteria;
+};
+
+}  // namespace rift::ast

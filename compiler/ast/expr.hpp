@@ -1,0 +1,64 @@
+// Expression trees. One node type with a kind tag keeps the parser actions and
+// the passes short; the fields a kind uses are listed next to it.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ast/type.hpp"
+#include "diag/location.hpp"
+
+namespace rift::ast {
+
+using diag::Location;
+
+/// An orbit label as written: dimensions, with -1 for `_`.
+struct Label {
+  std::vector<int> dims;
+  Location loc;
+};
+
+struct Expr;
+using ExprPtr = std::unique_ptr<Expr>;
+
+/// What a bare name in an expression refers to (filled by resolve/).
+enum class NameRef { Unresolved, Let, RuleParam, PackParam };
+
+struct Expr {
+  enum class Kind {
+    IntLit,   // integer
+    RealLit,  // real
+    BoolLit,  // boolean
+    Name,     // name
+    Call,     // name(args...)
+    Unary,    // op args[0]      op: "-", "not"
+    Binary,   // args[0] op args[1]
+    Cond,     // if args[0] then args[1] else args[2]
+    Read,     // node@hops... . name
+    Collect,  // op name over <orbit>(node)   op: sum mean min max count
+    Index,    // args[0][args[1]] or args[0][args[1], args[2]]
+  };
+
+  Kind kind = Kind::IntLit;
+  Location loc;
+  std::int64_t integer = 0;
+  double real = 0.0;
+  bool boolean = false;
+  std::string name;
+  std::string op;
+  std::string node;
+  Location node_loc;
+  std::vector<int> hops;
+  Label orbit;
+  std::vector<ExprPtr> args;
+
+  // Filled by the passes.
+  Type type = Type::Error;
+  NameRef ref = NameRef::Unresolved;
+};
+
+ExprPtr make_expr(Expr::Kind kind, const Location& loc);
+
+}  // namespace rift::ast

@@ -1,0 +1,114 @@
+// All embeddings attached to one orbit type share one slot index per dart:
+// every dart of an orbit holds the same slot, so reading a value is
+// `column[slot_of_dart[d]]`, O(1), and the columns themselves are dense arrays
+// that integrators sweep directly.
+#pragma once
+
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "rift/embed/column.hpp"
+#include "rift/gmap/orbit.hpp"
+
+namespace rift {
+
+class OrbitAttachment {
+ public:
+  explicit OrbitAttachment(Orbit orbit) : orbit_(orbit) {}
+
+  Orbit orbit() const { return orbit_; }
+  Slot slot(Dart d) const { return slot_of_dart_[d]; }
+  const Slot* slot_data() const { return slot_of_dart_.data(); }
+
+  /// Number of slot indices in use or free; columns have this many values.
+  std::size_t slot_capacity() const { return dart_count_.size(); }
+  /// A slot is alive while at least one dart refers to it.
+  bool slot_alive(Slot s) const { return dart_count_[s] > 0; }
+  std::uint32_t darts_in_slot(Slot s) const { return dart_count_[s]; }
+  std::size_t live_slots() const { return dart_count_.size() - free_slots_.size(); }
+
+  const std::vector<std::unique_ptr<ColumnBase>>& columns() const { return columns_; }
+  ColumnBase* find_column(std::string_view name) const {
+    for (const auto& c : columns_) {
+      if (c->name() == name) return c.get();
+    }
+    return nullptr;
+  }
+
+  // ---- used by GMap when topology changes -------------------------------
+
+  void add_column(std::unique_ptr<ColumnBase> column) {
+    column->resize(slot_capacity());
+    columns_.push_back(std::move(column));
+  }
+  void resize_darts(std::size_t capacity) { slot_of_dart_.resize(capacity, kNoSlot); }
+
+  /// A fresh slot holding every column's default value, not yet owned by any dart.
+  Slot allocate_slot() {
+    Slot s;
+    if (!free_slots_.empty()) {
+      s = free_slots_.back();
+      free_slots_.pop_back();
+    } else {
+      s = static_cast<Slot>(dart_count_.size());
+      dart_count_.push_back(0);
+      for (auto& c : columns_)
+        c->resize(dart_count_.size());
+    }
+    for (auto& c : columns_)
+      c->set_default(s);
+    return s;
+  }
+
+  void assign(Dart d, Slot s) {
+    release(d);
+    slot_of_dart_[d] = s;
+    ++dart_count_[s];
+  }
+
+  void release(Dart d) {
+    Slot old = slot_of_dart_[d];
+    if (old == kNoSlot) return;
+    slot_of_dart_[d] = kNoSlot;
+    if (--dart_count_[old] == 0) free_slots_.push_back(old);
+  }
+
+  /// Renumbers darts after compaction: new_index[old] (kNoDart for dead darts).
+  void remap_darts(const std::vector<Dart>& new_index, std::size_t new_capacity) {
+    std::vector<Slot> remapped(new_capacity, kNoSlot);
+    for (std::size_t old = 0; old < new_index.size(); ++old) {
+      if (new_index[old] != kNoDart) remapped[new_index[old]] = slot_of_dart_[old];
+    }
+    slot_of_dart_ = std::move(remapped);
+  }
+
+  /// Packs live slots to [0, live_slots()), keeping their order.
+  void compact_slots() {
+    std::vector<Slot> new_slot(dart_count_.size(), kNoSlot);
+    Slot next = 0;
+    for (Slot s = 0; s < dart_count_.size(); ++s) {
+      if (dart_count_[s] == 0) continue;
+      for (auto& c : columns_)
+        c->copy_slot(s, next);
+      dart_count_[next] = dart_count_[s];
+      new_slot[s] = next++;
+    }
+    dart_count_.resize(next);
+    for (auto& c : columns_)
+      c->resize(next);
+    free_slots_.clear();
+    for (Slot& s : slot_of_dart_) {
+      if (s != kNoSlot) s = new_slot[s];
+    }
+  }
+
+ private:
+  Orbit orbit_;
+  std::vector<Slot> slot_of_dart_;
+  std::vector<std::uint32_t> dart_count_;
+  std::vector<Slot> free_slots_;
+  std::vector<std::unique_ptr<ColumnBase>> columns_;
+};
+
+}  // namespace rift

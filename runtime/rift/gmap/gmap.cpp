@@ -1,0 +1,320 @@
+#include "rift/gmap/gmap.hpp"
+
+#include <stdexcept>
+
+namespace rift {
+
+GMap::GMap(int dimension) : dimension_(dimension) {
+  if (dimension < 1 || dimension > kMaxDimension) {
+    throw std::invalid_argument("G-map dimension must be 1, 2 or 3, not " +
+                                std::to_string(dimension));
+  }
+}
+
+// ---- darts ---------------------------------------------------------------------
+
+void GMap::reserve(std::size_t count) {
+  const std::size_t want = alive_.size() + count;
+  for (int i = 0; i <= dimension_; ++i)
+    alpha_[i].reserve(want);
+  alive_.reserve(want);
+  mark_bits_.reserve(want);
+}
+
+Dart GMap::create_dart() {
+  Dart d;
+  if (!free_darts_.empty()) {
+    d = free_darts_.back();
+    free_darts_.pop_back();
+    alive_[d] = 1;
+    mark_bits_[d] = 0;
+  } else {
+    if (alive_.size() >= kNoDart) throw std::length_error("G-map: out of 32-bit dart indices");
+    d = static_cast<Dart>(alive_.size());
+    for (int i = 0; i <= dimension_; ++i)
+      alpha_[i].push_back(d);
+    alive_.push_back(1);
+    mark_bits_.push_back(0);
+    for (auto& att : attachments_)
+      att->resize_darts(alive_.size());
+  }
+  for (int i = 0; i <= dimension_; ++i)
+    alpha_[i][d] = d;
+  return d;
+}
+
+Dart GMap::create_darts(std::size_t count) {
+  const std::size_t first = alive_.size();
+  if (first + count >= kNoDart) throw std::length_error("G-map: out of 32-bit dart indices");
+  const std::size_t end = first + count;
+  for (int i = 0; i <= dimension_; ++i) {
+    alpha_[i].resize(end);
+    for (std::size_t d = first; d < end; ++d)
+      alpha_[i][d] = static_cast<Dart>(d);
+  }
+  alive_.resize(end, 1);
+  mark_bits_.resize(end, 0);
+  for (auto& att : attachments_)
+    att->resize_darts(end);
+  return static_cast<Dart>(first);
+}
+
+void GMap::delete_dart(Dart d) {
+  assert(is_alive(d));
+  for (int i = 0; i <= dimension_; ++i)
+    unlink(d, i);
+  for (auto& att : attachments_)
+    att->release(d);
+  for (Mark m = 0; m < kMaxMarks; ++m)
+    unmark(d, m);
+  alive_[d] = 0;
+  free_darts_.push_back(d);
+}
+
+// ---- links ------------------------------------------------------------------------
+
+void GMap::link(Dart a, Dart b, int i) {
+  assert(is_free(a, i) && is_free(b, i));
+  alpha_[i][a] = b;
+  alpha_[i][b] = a;
+}
+
+void GMap::unlink(Dart a, int i) {
+  const Dart b = alpha_[i][a];
+  alpha_[i][a] = a;
+  alpha_[i][b] = b;
+}
+
+// ---- marks ------------------------------------------------------------------------
+
+Mark GMap::reserve_mark() const {
+  if (used_marks_ == ~0u) throw std::runtime_error("G-map: all 32 marks are in use");
+  const Mark m = __builtin_ctz(~used_marks_);
+  used_marks_ |= (1u << m);
+  assert(mark_count_[m] == 0);
+  return m;
+}
+
+void GMap::free_mark(Mark m) const {
+  unmark_all(m);
+  used_marks_ &= ~(1u << m);
+}
+
+void GMap::unmark_all(Mark m) const {
+  if (mark_count_[m] == 0) return;
+  const std::uint32_t keep = ~(1u << m);
+  for (auto& bits : mark_bits_)
+    bits &= keep;
+  mark_count_[m] = 0;
+}
+
+std::vector<Dart>& GMap::acquire_scratch() const {
+  if (scratch_depth_ == scratch_.size()) scratch_.push_back(std::make_unique<std::vector<Dart>>());
+  return *scratch_[scratch_depth_++];
+}
+
+// ---- orbits and cells -----------------------------------------------------------
+
+void GMap::mark_orbit(Dart d, Orbit o, Mark m) const {
+  if (o.size() <= 2) {
+    for_each_in_orbit(d, o, [&](Dart x) { mark(x, m); });
+    return;
+  }
+  std::vector<Dart>& stack = acquire_scratch();
+  stack.clear();
+  if (!is_marked(d, m)) {
+    mark(d, m);
+    stack.push_back(d);
+  }
+  while (!stack.empty()) {
+    const Dart x = stack.back();
+    stack.pop_back();
+    for (int i = 0; i <= dimension_; ++i) {
+      if (!o.contains(i)) continue;
+      const Dart y = alpha_[i][x];
+      if (!is_marked(y, m)) {
+        mark(y, m);
+        stack.push_back(y);
+      }
+    }
+  }
+  release_scratch();
+}
+
+std::size_t GMap::orbit_size(Dart d, Orbit o) const {
+  std::size_t n = 0;
+  for_each_in_orbit(d, o, [&](Dart) { ++n; });
+  return n;
+}
+
+bool GMap::in_same_orbit(Dart a, Dart b, Orbit o) const {
+  bool found = false;
+  for_each_in_orbit(a, o, [&](Dart x) { found = found || x == b; });
+  return found;
+}
+
+std::size_t GMap::count_cells(Orbit o) const {
+  std::size_t n = 0;
+  for_each_cell(o, [&](Dart) { ++n; });
+  return n;
+}
+
+std::size_t GMap::count_cells_of_dimension(int k) const {
+  if (k < 0 || k > dimension_) return 0;
+  return count_cells(Orbit::cell(k, dimension_));
+}
+
+// ---- embeddings -------------------------------------------------------------------
+
+OrbitAttachment& GMap::attachment_for(Orbit orbit) {
+  for (auto& att : attachments_) {
+    if (att->orbit() == orbit) return *att;
+  }
+  attachments_.push_back(std::make_unique<OrbitAttachment>(orbit));
+  attachments_.back()->resize_darts(alive_.size());
+  return *attachments_.back();
+}
+
+ColumnBase* GMap::find_column(std::string_view name) const {
+  for (const auto& att : attachments_) {
+    if (ColumnBase* c = att->find_column(name)) return c;
+  }
+  return nullptr;
+}
+
+OrbitAttachment* GMap::attachment_of(std::string_view name) const {
+  for (const auto& att : attachments_) {
+    if (att->find_column(name)) return att.get();
+  }
+  return nullptr;
+}
+
+void GMap::assign_missing_slots(OrbitAttachment& att) {
+  const Orbit o = att.orbit();
+  for_each_dart([&](Dart d) {
+    if (att.slot(d) != kNoSlot) return;
+    const Slot s = att.allocate_slot();
+    for_each_in_orbit(d, o, [&](Dart x) {
+      if (att.slot(x) == kNoSlot) att.assign(x, s);
+    });
+  });
+}
+
+// ---- validity -------------------------------------------------------------------------
+
+std::vector<std::string> GMap::check_validity(std::size_t limit) const {
+  std::vector<std::string> problems;
+  auto report = [&](std::string msg) {
+    if (problems.size() < limit) problems.push_back(std::move(msg));
+  };
+  const std::size_t n = alive_.size();
+  for (std::size_t k = 0; k < n && problems.size() < limit; ++k) {
+    const Dart d = static_cast<Dart>(k);
+    if (!alive_[d]) continue;
+    for (int i = 0; i <= dimension_; ++i) {
+      const Dart e = alpha_[i][d];
+      if (e >= n || !alive_[e]) {
+        report("alpha_" + std::to_string(i) + "(" + std::to_string(d) + ") = " + std::to_string(e) +
+               " is not a live dart");
+      } else if (alpha_[i][e] != d) {
+        report("alpha_" + std::to_string(i) + " is not an involution at dart " + std::to_string(d));
+      }
+    }
+    if (!problems.empty()) continue;  // the composition test needs sound links
+    for (int i = 0; i + 2 <= dimension_; ++i) {
+      for (int j = i + 2; j <= dimension_; ++j) {
+        const Dart e = alpha_[j][alpha_[i][alpha_[j][alpha_[i][d]]]];
+        if (e != d) {
+          report("alpha_" + std::to_string(i) + " o alpha_" + std::to_string(j) +
+                 " is not an involution at dart " + std::to_string(d));
+        }
+      }
+    }
+  }
+  if (!problems.empty()) return problems;
+
+  for (const auto& att : attachments_) {
+    const Orbit o = att->orbit();
+    std::vector<std::uint32_t> count(att->slot_capacity(), 0);
+    for (std::size_t k = 0; k < n && problems.size() < limit; ++k) {
+      const Dart d = static_cast<Dart>(k);
+      if (!alive_[d]) continue;
+      const Slot s = att->slot(d);
+      const std::string emb = "embedding on " + o.str();
+      if (s == kNoSlot || s >= att->slot_capacity()) {
+        report(emb + ": dart " + std::to_string(d) + " has no value");
+        continue;
+      }
+      ++count[s];
+      for (int i = 0; i <= dimension_; ++i) {
+        if (o.contains(i) && att->slot(alpha_[i][d]) != s) {
+          report(emb + ": darts " + std::to_string(d) + " and " + std::to_string(alpha_[i][d]) +
+                 " of one orbit hold different values");
+        }
+      }
+    }
+    for (Slot s = 0; s < count.size() && problems.size() < limit; ++s) {
+      if (count[s] != att->darts_in_slot(s)) {
+        report("embedding on " + o.str() + ": slot " + std::to_string(s) + " is used by " +
+               std::to_string(count[s]) + " darts but counts " +
+               std::to_string(att->darts_in_slot(s)));
+      }
+    }
+  }
+  // Darts of two different orbits sharing a slot would alias their values.
+  for (const auto& att : attachments_) {
+    if (!problems.empty()) break;
+    const Orbit o = att->orbit();
+    std::vector<std::uint8_t> seen(att->slot_capacity(), 0);
+    for_each_cell(o, [&](Dart d) {
+      const Slot s = att->slot(d);
+      if (s == kNoSlot || s >= seen.size()) return;
+      if (seen[s]) {
+        report("embedding on " + o.str() + ": two orbits share slot " + std::to_string(s));
+      }
+      seen[s] = 1;
+    });
+  }
+  return problems;
+}
+
+void GMap::check_after_rewrite([[maybe_unused]] const char* what) const {
+#ifdef RIFT_CHECK_REWRITES
+  auto problems = check_validity(5);
+  if (!problems.empty()) {
+    std::string msg = std::string("G-map invalid after ") + what + ":";
+    for (const auto& p : problems)
+      msg += "\n  " + p;
+    throw std::logic_error(msg);
+  }
+#endif
+}
+
+// ---- compaction -------------------------------------------------------------------------
+
+std::vector<Dart> GMap::compact() {
+  if (used_marks_ != 0) throw std::logic_error("G-map: compact() while marks are reserved");
+  const std::size_t n = alive_.size();
+  std::vector<Dart> new_index(n, kNoDart);
+  Dart next = 0;
+  for (std::size_t d = 0; d < n; ++d) {
+    if (alive_[d]) new_index[d] = next++;
+  }
+  for (int i = 0; i <= dimension_; ++i) {
+    std::vector<Dart> remapped(next);
+    for (std::size_t d = 0; d < n; ++d) {
+      if (alive_[d]) remapped[new_index[d]] = new_index[alpha_[i][d]];
+    }
+    alpha_[i] = std::move(remapped);
+  }
+  alive_.assign(next, 1);
+  mark_bits_.assign(next, 0);
+  free_darts_.clear();
+  for (auto& att : attachments_) {
+    att->remap_darts(new_index, next);
+    att->compact_slots();
+  }
+  return new_index;
+}
+
+}  // namespace rift

@@ -1,0 +1,317 @@
+// The generalized map: darts as 32-bit indices, one flat alpha array per
+// dimension, marks as per-dart bits, and embeddings attached to orbit types.
+//
+// Conventions (docs/gmap.md): alpha_i(d) == d means d is i-free; every alpha_i
+// is an involution and alpha_i o alpha_j is an involution for i + 2 <= j.
+#pragma once
+
+#include <array>
+#include <cassert>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "rift/core/types.hpp"
+#include "rift/embed/attachment.hpp"
+#include "rift/gmap/orbit.hpp"
+
+namespace rift {
+
+/// Handle to one mark; at most kMaxMarks are reserved at a time.
+using Mark = int;
+
+/// Typed, O(1) access to an embedding: all darts of one orbit read the same value.
+template <class T>
+class Embedding {
+ public:
+  Embedding() = default;
+  Embedding(OrbitAttachment* attachment, Column<T>* column)
+      : attachment_(attachment), column_(column) {}
+
+  explicit operator bool() const { return column_ != nullptr; }
+  T& operator[](Dart d) { return column_->values()[attachment_->slot(d)]; }
+  const T& operator[](Dart d) const { return column_->values()[attachment_->slot(d)]; }
+  Slot slot(Dart d) const { return attachment_->slot(d); }
+  /// The dense value array, indexed by slot; dead slots hold stale values.
+  std::vector<T>& values() { return column_->values(); }
+  const std::vector<T>& values() const { return column_->values(); }
+  Orbit orbit() const { return attachment_->orbit(); }
+  const OrbitAttachment& attachment() const { return *attachment_; }
+
+ private:
+  OrbitAttachment* attachment_ = nullptr;
+  Column<T>* column_ = nullptr;
+};
+
+class GMap {
+ public:
+  static constexpr int kMaxMarks = 32;
+
+  explicit GMap(int dimension);
+  GMap(GMap&&) noexcept = default;
+  GMap& operator=(GMap&&) noexcept = default;
+  GMap(const GMap&) = delete;
+  GMap& operator=(const GMap&) = delete;
+
+  int dimension() const { return dimension_; }
+
+  // ---- darts ---------------------------------------------------------------
+
+  /// A new dart, free in every dimension, without embedding values.
+  Dart create_dart();
+  /// `count` new free darts with consecutive indices; returns the first.
+  /// Builders use it to lay out elements without touching the free list.
+  Dart create_darts(std::size_t count);
+  /// Makes room for `count` more darts without reallocating on each create.
+  void reserve(std::size_t count);
+  /// Unlinks d in every dimension, releases its embedding slots, and recycles it.
+  void delete_dart(Dart d);
+  bool is_alive(Dart d) const { return d < alive_.size() && alive_[d]; }
+  /// Number of live darts.
+  std::size_t size() const { return alive_.size() - free_darts_.size(); }
+  /// One past the largest dart index (live or recycled).
+  std::size_t capacity() const { return alive_.size(); }
+
+  template <class F>
+  void for_each_dart(F&& f) const {
+    const std::size_t n = alive_.size();
+    for (std::size_t d = 0; d < n; ++d) {
+      if (alive_[d]) f(static_cast<Dart>(d));
+    }
+  }
+
+  // ---- links -----------------------------------------------------------------
+
+  Dart alpha(Dart d, int i) const { return alpha_[i][d]; }
+  bool is_free(Dart d, int i) const { return alpha_[i][d] == d; }
+  const Dart* alpha_data(int i) const { return alpha_[i].data(); }
+
+  /// Raw link: alpha_i(a) = b and alpha_i(b) = a. No embedding is updated;
+  /// builders use this and attach embeddings afterwards.
+  void link(Dart a, Dart b, int i);
+  /// Raw unlink of a and its i-neighbour.
+  void unlink(Dart a, int i);
+
+  /// Why sew(a, b, i) would fail, or an empty string when it can be done.
+  std::string why_not_sewable(Dart a, Dart b, int i) const;
+  /// G-map i-sew: links the orbit <0..i-2,i+2..n>(a) with the isomorphic
+  /// orbit of b, dart by dart. Orbits of embeddings that now merge are merged
+  /// with their columns' policies. Returns false and changes nothing when the
+  /// sew is impossible (see why_not_sewable).
+  bool sew(Dart a, Dart b, int i);
+  /// G-map i-unsew of the orbit <0..i-2,i+2..n>(a). An embedding orbit that is
+  /// split in two gives each part a copy of the value.
+  void unsew(Dart a, int i);
+
+  // ---- marks -----------------------------------------------------------------
+
+  /// Reserves a mark with no marked dart. Throws when all kMaxMarks are taken.
+  Mark reserve_mark() const;
+  /// Releases a mark; darts still marked with it are unmarked first.
+  void free_mark(Mark m) const;
+  bool is_marked(Dart d, Mark m) const { return (mark_bits_[d] >> m) & 1u; }
+  void mark(Dart d, Mark m) const {
+    if (!is_marked(d, m)) {
+      mark_bits_[d] |= (1u << m);
+      ++mark_count_[m];
+    }
+  }
+  void unmark(Dart d, Mark m) const {
+    if (is_marked(d, m)) {
+      mark_bits_[d] &= ~(1u << m);
+      --mark_count_[m];
+    }
+  }
+  std::size_t marked_count(Mark m) const { return mark_count_[m]; }
+  /// Unmarks every dart; O(1) when nothing is marked.
+  void unmark_all(Mark m) const;
+  int reserved_marks() const { return __builtin_popcount(used_marks_); }
+
+  // ---- orbits and cells ------------------------------------------------------
+
+  /// Calls f(dart) once for every dart of the orbit <o>(d). No allocation
+  /// after warm-up; f may itself traverse orbits.
+  template <class F>
+  void for_each_in_orbit(Dart d, Orbit o, F&& f) const;
+  /// Marks every dart of <o>(d) with m (darts already marked stop the walk).
+  void mark_orbit(Dart d, Orbit o, Mark m) const;
+  std::size_t orbit_size(Dart d, Orbit o) const;
+  bool in_same_orbit(Dart a, Dart b, Orbit o) const;
+
+  /// Calls f(d) with one dart of each orbit <o> of the map.
+  template <class F>
+  void for_each_cell(Orbit o, F&& f) const;
+  std::size_t count_cells(Orbit o) const;
+  /// Cells of dimension k: vertices k = 0, edges 1, faces 2, volumes 3.
+  std::size_t count_cells_of_dimension(int k) const;
+
+  // ---- embeddings ----------------------------------------------------------------
+
+  /// Declares an embedding column; existing orbits get the default value.
+  /// Throws std::invalid_argument when the name exists or the orbit does not fit.
+  template <class T>
+  Embedding<T> add_embedding(std::string name, Orbit orbit,
+                             MergePolicy policy = MergePolicy::kKeepFirst, T default_value = T{});
+  template <class T>
+  Embedding<T> embedding(std::string_view name) const;
+  bool has_embedding(std::string_view name) const { return find_column(name) != nullptr; }
+  ColumnBase* find_column(std::string_view name) const;
+  OrbitAttachment* attachment_of(std::string_view name) const;
+  const std::vector<std::unique_ptr<OrbitAttachment>>& attachments() const { return attachments_; }
+  /// Gives every orbit of the attachment's type that has no slot a fresh one
+  /// (default values), splitting orbits whose darts disagree is not attempted.
+  void assign_missing_slots(OrbitAttachment& attachment);
+
+  // ---- validity and maintenance ------------------------------------------------------
+
+  /// Every violated condition, described (empty when valid). At most `limit` entries.
+  std::vector<std::string> check_validity(std::size_t limit = 20) const;
+  bool is_valid() const { return check_validity(1).empty(); }
+
+  /// Renumbers live darts to [0, size()) in order and packs every embedding's
+  /// slots. Returns new_index[old] (kNoDart for dead darts). No mark may be reserved.
+  std::vector<Dart> compact();
+
+ private:
+  OrbitAttachment& attachment_for(Orbit orbit);
+  /// Fills `pairs` (x0, y0, x1, y1, ...) with the darts sew(a, b, i) links;
+  /// returns the reason when the two orbits cannot be paired.
+  std::string pair_sewing_orbits(Dart a, Dart b, int i, std::vector<Dart>& pairs) const;
+  void merge_embeddings_after_sew(const std::vector<Dart>& pairs, int i);
+  void split_embeddings_after_unsew(const std::vector<Dart>& pairs, int i);
+  std::vector<Dart>& acquire_scratch() const;
+  void release_scratch() const { --scratch_depth_; }
+  void check_after_rewrite(const char* what) const;
+
+  int dimension_;
+  std::array<std::vector<Dart>, kMaxDimension + 1> alpha_;
+  std::vector<std::uint8_t> alive_;
+  std::vector<Dart> free_darts_;
+
+  mutable std::vector<std::uint32_t> mark_bits_;
+  mutable std::array<std::size_t, kMaxMarks> mark_count_{};
+  mutable std::uint32_t used_marks_ = 0;
+
+  // Reused traversal buffers, one per nesting depth, so traversals never allocate
+  // once warm.
+  mutable std::vector<std::unique_ptr<std::vector<Dart>>> scratch_;
+  mutable std::size_t scratch_depth_ = 0;
+  // partner_[x] during sewing; kNoDart everywhere between calls.
+  mutable std::vector<Dart> partner_;
+
+  std::vector<std::unique_ptr<OrbitAttachment>> attachments_;
+};
+
+// ---- template implementations ---------------------------------------------------------
+
+template <class F>
+void GMap::for_each_in_orbit(Dart d, Orbit o, F&& f) const {
+  const int n = o.size();
+  if (n == 0) {
+    f(d);
+    return;
+  }
+  if (n == 1) {
+    const Dart e = alpha_[o.first()][d];
+    f(d);
+    if (e != d) f(e);
+    return;
+  }
+  if (n == 2) {
+    // Darts of a two-link orbit form a path or a cycle alternating i and j.
+    const Dart* ai = alpha_[o.first()].data();
+    const Dart* aj = alpha_[o.second()].data();
+    f(d);
+    Dart cur = d;
+    bool use_i = true;
+    for (;;) {
+      const Dart next = use_i ? ai[cur] : aj[cur];
+      if (next == cur) break;  // free end: walk the other way from d
+      if (next == d) return;   // closed cycle
+      f(next);
+      cur = next;
+      use_i = !use_i;
+    }
+    cur = d;
+    use_i = false;
+    for (;;) {
+      const Dart next = use_i ? ai[cur] : aj[cur];
+      if (next == cur) return;
+      f(next);
+      cur = next;
+      use_i = !use_i;
+    }
+  }
+  // General orbit: breadth-first walk with a mark; the visit list doubles as queue.
+  const Mark m = reserve_mark();
+  std::vector<Dart>& visited = acquire_scratch();
+  visited.clear();
+  visited.push_back(d);
+  mark(d, m);
+  for (std::size_t k = 0; k < visited.size(); ++k) {
+    const Dart x = visited[k];
+    for (int i = 0; i <= dimension_; ++i) {
+      if (!o.contains(i)) continue;
+      const Dart y = alpha_[i][x];
+      if (!is_marked(y, m)) {
+        mark(y, m);
+        visited.push_back(y);
+      }
+    }
+  }
+  for (Dart x : visited)
+    unmark(x, m);
+  free_mark(m);
+  // Callbacks run after the walk so that they may change marks freely.
+  const std::size_t count = visited.size();
+  for (std::size_t k = 0; k < count; ++k)
+    f(visited[k]);
+  release_scratch();
+}
+
+template <class F>
+void GMap::for_each_cell(Orbit o, F&& f) const {
+  const Mark m = reserve_mark();
+  const std::size_t n = alive_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Dart d = static_cast<Dart>(i);
+    if (!alive_[d] || is_marked(d, m)) continue;
+    mark_orbit(d, o, m);
+    f(d);
+  }
+  unmark_all(m);
+  free_mark(m);
+}
+
+template <class T>
+Embedding<T> GMap::add_embedding(std::string name, Orbit orbit, MergePolicy policy,
+                                 T default_value) {
+  if (find_column(name)) throw std::invalid_argument("embedding '" + name + "' already exists");
+  if (!orbit.fits(dimension_)) {
+    throw std::invalid_argument("embedding '" + name + "': orbit " + orbit.str() +
+                                " does not fit a map of dimension " + std::to_string(dimension_));
+  }
+  OrbitAttachment& att = attachment_for(orbit);
+  auto column = std::make_unique<Column<T>>(std::move(name), policy, std::move(default_value));
+  Column<T>* raw = column.get();
+  att.add_column(std::move(column));
+  assign_missing_slots(att);
+  return Embedding<T>(&att, raw);
+}
+
+template <class T>
+Embedding<T> GMap::embedding(std::string_view name) const {
+  for (const auto& att : attachments_) {
+    if (ColumnBase* c = att->find_column(name)) {
+      if (c->type() != ValueTypeOf<T>::value) {
+        throw std::invalid_argument("embedding '" + std::string(name) + "' holds " +
+                                    std::string(to_string(c->type())) + " values");
+      }
+      return Embedding<T>(att.get(), static_cast<Column<T>*>(c));
+    }
+  }
+  return {};
+}
+
+}  // namespace rift

@@ -1,0 +1,268 @@
+#include "rift/mesh/assemble.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "rift/mesh/element_faces.hpp"
+#include "rift/mesh/mesh_error.hpp"
+
+namespace rift {
+
+namespace {
+
+// One side of a shared entity (an edge in 2D, a face in 3D) waiting for its twin.
+struct Side {
+  std::array<std::uint32_t, 4> key;  // sorted vertex ids, unused entries = max
+  Dart first_dart;                   // first of the entity's consecutive darts
+  std::uint32_t darts;               // 2 for an edge (2D), 2 * vertices for a face (3D)
+};
+
+// Buckets sides by their smallest vertex (counting sort, O(n)) so that twins
+// are found by comparing a handful of neighbours instead of hashing.
+template <class Sew>
+std::size_t match_sides(std::vector<Side>& sides, std::size_t point_count, Sew&& sew) {
+  std::vector<std::uint32_t> start(point_count + 1, 0);
+  for (const Side& s : sides)
+    ++start[s.key[0] + 1];
+  for (std::size_t p = 0; p < point_count; ++p)
+    start[p + 1] += start[p];
+  std::vector<std::uint32_t> order(sides.size());
+  {
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::uint32_t k = 0; k < sides.size(); ++k)
+      order[fill[sides[k].key[0]]++] = k;
+  }
+  std::size_t nonmanifold = 0;
+  std::vector<std::uint8_t> used(sides.size(), 0);
+  for (std::size_t p = 0; p < point_count; ++p) {
+    for (std::uint32_t a = start[p]; a < start[p + 1]; ++a) {
+      const Side& sa = sides[order[a]];
+      if (used[order[a]]) continue;
+      bool paired = false;
+      for (std::uint32_t b = a + 1; b < start[p + 1]; ++b) {
+        const Side& sb = sides[order[b]];
+        if (used[order[b]] || sb.key != sa.key) continue;
+        if (!paired) {
+          sew(sa, sb);
+          paired = true;
+        } else {
+          ++nonmanifold;  // a third element on the same edge/face stays free there
+        }
+        used[order[b]] = 1;
+      }
+      used[order[a]] = 1;
+    }
+  }
+  return nonmanifold;
+}
+
+// Local alpha_2 pairing inside one solid: dart k (0-based over its faces'
+// darts) is 2-linked with pairing[k]. Computed once per element type.
+struct SolidLayout {
+  std::vector<std::uint8_t> dart_vertex;  // local vertex of each dart
+  std::vector<std::uint8_t> pairing;
+  std::vector<std::uint8_t> face_first;  // first local dart of each face
+};
+
+SolidLayout make_layout(ElementType type) {
+  SolidLayout layout;
+  std::vector<std::uint8_t> other;  // the other vertex of the dart's edge
+  for (const LocalFace& f : element_faces(type)) {
+    layout.face_first.push_back(static_cast<std::uint8_t>(layout.dart_vertex.size()));
+    for (int e = 0; e < f.count; ++e) {
+      const std::uint8_t a = f.v[e];
+      const std::uint8_t b = f.v[(e + 1) % f.count];
+      layout.dart_vertex.push_back(a);
+      other.push_back(b);
+      layout.dart_vertex.push_back(b);
+      other.push_back(a);
+    }
+  }
+  const std::size_t n = layout.dart_vertex.size();
+  layout.pairing.assign(n, 0);
+  auto face_of = [&](std::size_t k) {
+    std::size_t f = 0;
+    while (f + 1 < layout.face_first.size() && layout.face_first[f + 1] <= k)
+      ++f;
+    return f;
+  };
+  for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t m = 0; m < n; ++m) {
+      if (m != k && face_of(m) != face_of(k) && layout.dart_vertex[m] == layout.dart_vertex[k] &&
+          other[m] == other[k]) {
+        layout.pairing[k] = static_cast<std::uint8_t>(m);
+      }
+    }
+  }
+  return layout;
+}
+
+const SolidLayout& layout_of(ElementType type) {
+  static const SolidLayout layouts[] = {
+      SolidLayout{}, make_layout(ElementType::Tetra), make_layout(ElementType::Hexa),
+      make_layout(ElementType::Wedge), make_layout(ElementType::Pyramid)};
+  return layouts[static_cast<int>(type)];
+}
+
+void validate_element(const MeshData& mesh, const MeshElement& e, std::size_t index) {
+  auto fail = [&](const std::string& what) {
+    throw MeshError(
+        mesh.source, e.source_line,
+        std::string(element_name(e.type)) + " (element " + std::to_string(index + 1) + ") " + what);
+  };
+  if (element_dimension(e.type) != mesh.dimension) {
+    fail("does not belong in a " + std::to_string(mesh.dimension) + "D mesh");
+  }
+  const int expected = element_vertex_count(e.type);
+  if (expected == 0 ? e.count < 3 : static_cast<int>(e.count) != expected) {
+    fail("has " + std::to_string(e.count) + " vertices, expected " +
+         (expected == 0 ? std::string("at least 3") : std::to_string(expected)));
+  }
+  const std::uint32_t* v = mesh.vertices_of(e);
+  for (std::uint32_t k = 0; k < e.count; ++k) {
+    if (v[k] >= mesh.points.size()) {
+      fail("refers to vertex " + std::to_string(v[k] + 1) + " but the mesh has " +
+           std::to_string(mesh.points.size()) + " vertices");
+    }
+    for (std::uint32_t m = 0; m < k; ++m) {
+      if (v[m] == v[k]) fail("repeats vertex " + std::to_string(v[k] + 1));
+    }
+  }
+}
+
+Side make_side(const std::uint32_t* ids, std::uint32_t count, Dart first, std::uint32_t darts) {
+  Side s{{~0u, ~0u, ~0u, ~0u}, first, darts};
+  // Insertion sort of at most four ids (std::sort trips GCC 12's array-bounds
+  // analysis here).
+  for (std::uint32_t i = 0; i < count; ++i) {
+    std::uint32_t j = i;
+    while (j > 0 && s.key[j - 1] > ids[i]) {
+      s.key[j] = s.key[j - 1];
+      --j;
+    }
+    s.key[j] = ids[i];
+  }
+  return s;
+}
+
+}  // namespace
+
+GMap assemble_gmap(const MeshData& mesh, AssemblyReport* report) {
+  AssemblyReport local;
+  AssemblyReport& rep = report ? *report : local;
+  rep = {};
+  if (mesh.dimension != 2 && mesh.dimension != 3) {
+    throw MeshError(mesh.source, 0, "unsupported mesh dimension " + std::to_string(mesh.dimension));
+  }
+  if (mesh.elements.empty()) throw MeshError(mesh.source, 0, "the mesh has no element");
+  for (std::size_t p = 0; p < mesh.points.size(); ++p) {
+    if (!mesh.points[p].allFinite()) {
+      throw MeshError(mesh.source, 0,
+                      "vertex " + std::to_string(p + 1) + " has a non-finite coordinate");
+    }
+  }
+
+  std::size_t dart_count = 0;
+  for (std::size_t k = 0; k < mesh.elements.size(); ++k) {
+    const MeshElement& e = mesh.elements[k];
+    validate_element(mesh, e, k);
+    dart_count += mesh.dimension == 2 ? 2 * e.count : layout_of(e.type).dart_vertex.size();
+  }
+
+  const int n = mesh.dimension;
+  GMap map(n);
+  const Dart first = map.create_darts(dart_count);
+  std::vector<std::uint32_t> dart_point(dart_count);
+  std::vector<Side> sides;
+  sides.reserve(mesh.dimension == 2 ? dart_count / 2 : dart_count / 6);
+
+  Dart next = first;
+  std::array<std::uint32_t, 8> ids{};
+  for (const MeshElement& e : mesh.elements) {
+    const std::uint32_t* v = mesh.vertices_of(e);
+    if (n == 2) {
+      const std::uint32_t k = e.count;
+      for (std::uint32_t i = 0; i < k; ++i) {
+        const Dart d0 = next + 2 * i;  // at v[i], on edge v[i] v[i+1]
+        const Dart d1 = d0 + 1;        // at v[i+1]
+        map.link(d0, d1, 0);
+        map.link(d1, next + 2 * ((i + 1) % k), 1);
+        dart_point[d0 - first] = v[i];
+        dart_point[d1 - first] = v[(i + 1) % k];
+        const std::uint32_t edge[2] = {v[i], v[(i + 1) % k]};
+        sides.push_back(make_side(edge, 2, d0, 2));
+      }
+      next += 2 * k;
+      continue;
+    }
+    std::copy(v, v + e.count, ids.begin());
+    if (e.type == ElementType::Tetra) {
+      const Vec3& p0 = mesh.points[ids[0]];
+      const Real volume6 =
+          (mesh.points[ids[1]] - p0).cross(mesh.points[ids[2]] - p0).dot(mesh.points[ids[3]] - p0);
+      const Real scale = (mesh.points[ids[1]] - p0).squaredNorm();
+      if (std::abs(volume6) <= 1e-14 * scale * std::sqrt(scale)) {
+        ++rep.flat_tetrahedra;
+      } else if (volume6 < 0) {
+        std::swap(ids[1], ids[2]);
+        ++rep.reoriented_tetrahedra;
+      }
+    }
+    const SolidLayout& layout = layout_of(e.type);
+    const auto faces = element_faces(e.type);
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      const std::uint32_t c = faces[f].count;
+      const Dart fd = next + layout.face_first[f];
+      for (std::uint32_t i = 0; i < c; ++i) {
+        map.link(fd + 2 * i, fd + 2 * i + 1, 0);
+        map.link(fd + 2 * i + 1, fd + 2 * ((i + 1) % c), 1);
+      }
+      std::uint32_t face_ids[4];
+      for (std::uint32_t i = 0; i < c; ++i)
+        face_ids[i] = ids[faces[f].v[i]];
+      sides.push_back(make_side(face_ids, c, fd, 2 * c));
+    }
+    for (std::size_t k = 0; k < layout.dart_vertex.size(); ++k) {
+      dart_point[next + k - first] = ids[layout.dart_vertex[k]];
+      if (k < layout.pairing[k]) map.link(next + k, next + layout.pairing[k], 2);
+    }
+    next += static_cast<Dart>(layout.dart_vertex.size());
+  }
+
+  const int sew_dim = n;  // 2-sew edges in 2D, 3-sew faces in 3D
+  rep.nonmanifold_shared =
+      match_sides(sides, mesh.points.size(), [&](const Side& a, const Side& b) {
+        // Pair darts by (vertex, other end of their edge): that respects alpha_0
+        // and alpha_1 whatever the two elements' orientations.
+        for (std::uint32_t i = 0; i < a.darts; ++i) {
+          const Dart da = a.first_dart + i;
+          const std::uint32_t pa = dart_point[da - first];
+          const std::uint32_t qa = dart_point[map.alpha(da, 0) - first];
+          for (std::uint32_t j = 0; j < b.darts; ++j) {
+            const Dart db = b.first_dart + j;
+            if (dart_point[db - first] == pa && dart_point[map.alpha(db, 0) - first] == qa) {
+              map.link(da, db, sew_dim);
+              break;
+            }
+          }
+        }
+      });
+
+  Embedding<Vec3> position =
+      map.add_embedding<Vec3>("position", vertex_orbit(n), MergePolicy::kMean, Vec3::Zero());
+  Embedding<std::int64_t> point_index =
+      map.add_embedding<std::int64_t>("point_index", vertex_orbit(n), MergePolicy::kKeepFirst, -1);
+  std::vector<std::uint8_t> referenced(mesh.points.size(), 0);
+  for (std::size_t k = 0; k < dart_count; ++k) {
+    const Dart d = first + static_cast<Dart>(k);
+    const std::uint32_t p = dart_point[k];
+    position[d] = mesh.points[p];
+    point_index[d] = p;
+    referenced[p] = 1;
+  }
+  rep.unused_points = static_cast<std::size_t>(std::count(referenced.begin(), referenced.end(), 0));
+  return map;
+}
+
+}  // namespace rift
