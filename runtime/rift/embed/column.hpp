@@ -60,14 +60,14 @@ class Column final : public ColumnBase {
       case MergePolicy::kRefuse:
         break;
       case MergePolicy::kSum:
-        if constexpr (std::is_same_v<T, bool>) {
+        if constexpr (std::is_same_v<T, Bool>) {
           a = a || b;
         } else {
           a = a + b;
         }
         break;
       case MergePolicy::kMean:
-        if constexpr (std::is_same_v<T, bool>) {
+        if constexpr (std::is_same_v<T, Bool>) {
           a = a || b;
         } else if constexpr (std::is_same_v<T, std::int64_t>) {
           a = (a + b) / 2;

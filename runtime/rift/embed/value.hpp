@@ -21,7 +21,17 @@ enum class MergePolicy : std::uint8_t {
   kRefuse,     ///< the sew is refused unless both values are equal
 };
 
-using Value = std::variant<Real, std::int64_t, bool, Vec3, Mat3>;
+/// A boolean embedding value. A distinct type (rather than bool) so that
+/// columns are plain arrays with addressable elements, unlike std::vector<bool>.
+struct Bool {
+  bool value = false;
+  constexpr Bool() = default;
+  constexpr Bool(bool v) : value(v) {}               // NOLINT(google-explicit-constructor)
+  constexpr operator bool() const { return value; }  // NOLINT(google-explicit-constructor)
+  friend constexpr bool operator==(Bool a, Bool b) { return a.value == b.value; }
+};
+
+using Value = std::variant<Real, std::int64_t, Bool, Vec3, Mat3>;
 
 std::string_view to_string(ValueType type);
 std::string_view to_string(MergePolicy policy);
@@ -39,7 +49,7 @@ struct ValueTypeOf<std::int64_t> {
   static constexpr ValueType value = ValueType::kInt;
 };
 template <>
-struct ValueTypeOf<bool> {
+struct ValueTypeOf<Bool> {
   static constexpr ValueType value = ValueType::kBool;
 };
 template <>

@@ -1,4 +1,5 @@
 // G-map sewing and unsewing along dimension i, with embedding merge and split.
+#include <algorithm>
 #include <string>
 
 #include "rift/gmap/gmap.hpp"
@@ -145,31 +146,42 @@ void GMap::unsew(Dart a, int i) {
 }
 
 void GMap::split_embeddings_after_unsew(const std::vector<Dart>& pairs, int i) {
+  // Removing the i-links may cut an embedding orbit into several parts; every
+  // part contains an end of a removed link. The first part met keeps the
+  // slot, each further part of the same old orbit gets a copy of its values.
   for (auto& att : attachments_) {
     const Orbit o = att->orbit();
     if (!o.contains(i)) continue;
-    for (std::size_t k = 0; k < pairs.size(); k += 2) {
-      const Dart x = pairs[k];
-      const Dart y = pairs[k + 1];
-      const Slot s = att->slot(x);
-      if (s == kNoSlot || att->slot(y) != s) continue;
-      std::vector<Dart>& part = acquire_scratch();
+    const Mark m = reserve_mark();
+    std::vector<Dart>& claimed = acquire_scratch();  // slots already kept by a part
+    claimed.clear();
+    std::vector<Dart>& part = acquire_scratch();
+    for (Dart seed : pairs) {
+      const Slot s = att->slot(seed);
+      if (is_marked(seed, m) || s == kNoSlot) continue;
       part.clear();
-      bool still_connected = false;
-      for_each_in_orbit(y, o, [&](Dart z) {
+      for_each_in_orbit(seed, o, [&](Dart z) {
+        mark(z, m);
         part.push_back(z);
-        still_connected = still_connected || z == x;
       });
-      if (!still_connected) {
-        // The orbit fell in two: y's part gets its own copy of every value.
-        const Slot copy = att->allocate_slot();
-        for (const auto& column : att->columns())
-          column->copy_slot(s, copy);
-        for (Dart z : part)
-          att->assign(z, copy);
+      if (std::find(claimed.begin(), claimed.end(), s) == claimed.end()) {
+        claimed.push_back(s);
+        continue;
       }
-      release_scratch();
+      const Slot copy = att->allocate_slot();
+      for (const auto& column : att->columns())
+        column->copy_slot(s, copy);
+      for (Dart z : part)
+        att->assign(z, copy);
     }
+    release_scratch();
+    release_scratch();
+    for (Dart seed : pairs) {
+      if (is_marked(seed, m)) {
+        for_each_in_orbit(seed, o, [&](Dart z) { unmark(z, m); });
+      }
+    }
+    free_mark(m);
   }
 }
 

@@ -1,0 +1,50 @@
+#include <gtest/gtest.h>
+
+#include "rift/gmap/gmap.hpp"
+#include "rift/mesh/assemble.hpp"
+#include "rift/mesh/generators.hpp"
+#include "rift/mesh/map_statistics.hpp"
+
+namespace rift {
+namespace {
+
+TEST(Compaction, RenumbersDartsAndKeepsTopologyAndValues) {
+  GMap map = assemble_gmap(make_grid(GridKind::Mix, 3, 3));
+  auto pos = map.embedding<Vec3>("position");
+  // Isolate and delete the first face.
+  const Dart first = 0;
+  std::vector<Dart> face;
+  map.for_each_in_orbit(first, Orbit{0, 1}, [&](Dart d) { face.push_back(d); });
+  for (Dart d : face) {
+    if (!map.is_free(d, 2)) map.unsew(d, 2);
+  }
+  for (Dart d : face)
+    map.delete_dart(d);
+  ASSERT_TRUE(map.is_valid());
+  const MapStatistics before = compute_statistics(map);
+  Vec3 sum_before = Vec3::Zero();
+  map.for_each_cell(Orbit{1, 2}, [&](Dart d) { sum_before += pos[d]; });
+
+  const std::vector<Dart> new_index = map.compact();
+  EXPECT_EQ(map.capacity(), map.size());
+  EXPECT_EQ(new_index[face[0]], kNoDart);
+  EXPECT_TRUE(map.is_valid());
+  const MapStatistics after = compute_statistics(map);
+  EXPECT_EQ(after.to_line(), before.to_line());
+  Vec3 sum_after = Vec3::Zero();
+  map.for_each_cell(Orbit{1, 2}, [&](Dart d) { sum_after += pos[d]; });
+  EXPECT_TRUE(sum_after.isApprox(sum_before));
+  // Slots are dense after compaction.
+  EXPECT_EQ(pos.attachment().slot_capacity(), pos.attachment().live_slots());
+}
+
+TEST(Compaction, RefusedWhileAMarkIsReserved) {
+  GMap map = assemble_gmap(make_grid(GridKind::Quad, 1, 1));
+  const Mark m = map.reserve_mark();
+  EXPECT_THROW(map.compact(), std::logic_error);
+  map.free_mark(m);
+  EXPECT_NO_THROW(map.compact());
+}
+
+}  // namespace
+}  // namespace rift

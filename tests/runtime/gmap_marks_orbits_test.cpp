@@ -1,0 +1,117 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+#include "rift/gmap/gmap.hpp"
+#include "rift/mesh/assemble.hpp"
+#include "rift/mesh/generators.hpp"
+#include "test_maps.hpp"
+
+namespace rift {
+namespace {
+
+std::set<Dart> orbit_set(const GMap& map, Dart d, Orbit o) {
+  std::set<Dart> s;
+  map.for_each_in_orbit(d, o, [&](Dart x) { EXPECT_TRUE(s.insert(x).second) << "visited twice"; });
+  return s;
+}
+
+// Reference traversal: closure under the orbit's alphas with a std::set.
+std::set<Dart> reference_orbit(const GMap& map, Dart d, Orbit o) {
+  std::set<Dart> seen{d};
+  std::vector<Dart> todo{d};
+  while (!todo.empty()) {
+    Dart x = todo.back();
+    todo.pop_back();
+    for (int i = 0; i <= map.dimension(); ++i) {
+      if (o.contains(i) && seen.insert(map.alpha(x, i)).second) todo.push_back(map.alpha(x, i));
+    }
+  }
+  return seen;
+}
+
+TEST(Marks, ReserveMarkUnmarkAndCount) {
+  GMap map(2);
+  test::make_polygon(map, 4);
+  const Mark m = map.reserve_mark();
+  EXPECT_EQ(map.reserved_marks(), 1);
+  map.mark(0, m);
+  map.mark(0, m);
+  map.mark(3, m);
+  EXPECT_EQ(map.marked_count(m), 2u);
+  EXPECT_TRUE(map.is_marked(3, m));
+  map.unmark(3, m);
+  EXPECT_EQ(map.marked_count(m), 1u);
+  const Mark m2 = map.reserve_mark();
+  EXPECT_NE(m, m2);
+  EXPECT_FALSE(map.is_marked(0, m2));
+  map.free_mark(m);  // unmarks what is left
+  map.free_mark(m2);
+  EXPECT_EQ(map.reserved_marks(), 0);
+  const Mark again = map.reserve_mark();
+  EXPECT_FALSE(map.is_marked(0, again));
+  map.free_mark(again);
+}
+
+TEST(Marks, RunningOutOfMarksThrows) {
+  GMap map(2);
+  std::vector<Mark> marks;
+  for (int k = 0; k < GMap::kMaxMarks; ++k)
+    marks.push_back(map.reserve_mark());
+  EXPECT_THROW(map.reserve_mark(), std::runtime_error);
+  for (Mark m : marks)
+    map.free_mark(m);
+}
+
+TEST(Orbits, EveryOrbitTypeMatchesAReferenceTraversal) {
+  for (const char* spec : {"grid:mix:3x2", "block:hex:2x2x1", "block:tet:2x1x1"}) {
+    GMap map = assemble_gmap(make_generated_mesh(spec));
+    const int n = map.dimension();
+    for (int mask = 0; mask < (1 << (n + 1)); ++mask) {
+      const Orbit o = Orbit::from_mask(static_cast<std::uint8_t>(mask));
+      for (Dart d = 0; d < map.capacity(); d += 7) {
+        EXPECT_EQ(orbit_set(map, d, o), reference_orbit(map, d, o)) << spec << " " << o.str();
+      }
+    }
+    EXPECT_EQ(map.reserved_marks(), 0);
+  }
+}
+
+TEST(Orbits, BoundaryTwoLinkOrbitIsAPath) {
+  GMap map(2);
+  const Dart a = test::make_polygon(map, 4);
+  // The vertex <1,2> of a lone face: 2 darts, both 2-free.
+  EXPECT_EQ(map.orbit_size(a, Orbit{1, 2}), 2u);
+  EXPECT_EQ(map.orbit_size(a, Orbit{0, 1}), 8u);
+  EXPECT_EQ(map.orbit_size(a, Orbit{0}), 2u);
+  EXPECT_EQ(map.orbit_size(a, Orbit{2}), 1u);
+  EXPECT_TRUE(map.in_same_orbit(a, a + 5, Orbit{0, 1}));
+  EXPECT_FALSE(map.in_same_orbit(a, a + 5, Orbit{0}));
+}
+
+TEST(Orbits, NestedTraversalsDoNotInterfere) {
+  GMap map = assemble_gmap(make_grid(GridKind::Quad, 3, 3));
+  std::size_t total = 0;
+  map.for_each_in_orbit(0, Orbit{0, 1, 2}, [&](Dart d) {
+    map.for_each_in_orbit(d, Orbit{0, 1, 2}, [&](Dart) { ++total; });
+  });
+  EXPECT_EQ(total, map.size() * map.size());
+  EXPECT_EQ(map.reserved_marks(), 0);
+}
+
+TEST(Cells, ForEachCellGivesOneDartPerCell) {
+  GMap map = assemble_gmap(make_grid(GridKind::Tri, 4, 3));
+  std::set<std::set<Dart>> faces;
+  std::size_t calls = 0;
+  map.for_each_cell(Orbit{0, 1}, [&](Dart d) {
+    ++calls;
+    faces.insert(reference_orbit(map, d, Orbit{0, 1}));
+  });
+  EXPECT_EQ(calls, 24u);
+  EXPECT_EQ(faces.size(), 24u);
+  EXPECT_EQ(map.count_cells_of_dimension(2), 24u);
+}
+
+}  // namespace
+}  // namespace rift
