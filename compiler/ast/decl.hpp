@@ -34,6 +34,7 @@ struct Assign {
   Ident embedding;
   ExprPtr value;
   Location loc;
+  const Embedding* target = nullptr;  // bound by resolve/
 };
 
 struct Pattern {
@@ -47,12 +48,14 @@ struct Pattern {
 struct Let {
   Ident name;
   ExprPtr value;
+  mutable int uses = 0;  // counted by resolve/ for -Wunused-variable
 };
 
 struct Param {
   Ident name;
   Type type = Type::Error;
   Location type_loc;
+  mutable int uses = 0;  // counted by resolve/ for -Wunused-parameter
 };
 
 struct Rule {

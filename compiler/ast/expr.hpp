@@ -21,6 +21,10 @@ struct Label {
 };
 
 struct Expr;
+struct Let;
+struct Param;
+struct PackParam;
+struct Embedding;
 using ExprPtr = std::unique_ptr<Expr>;
 
 /// What a bare name in an expression refers to (filled by resolve/).
@@ -54,9 +58,13 @@ struct Expr {
   Label orbit;
   std::vector<ExprPtr> args;
 
-  // Filled by the passes.
+  // Filled by the passes: resolve/ binds names, check/ computes types.
   Type type = Type::Error;
   NameRef ref = NameRef::Unresolved;
+  const Let* let = nullptr;
+  const Param* param = nullptr;
+  const PackParam* pack_param = nullptr;
+  const Embedding* embedding = nullptr;  // Read, Collect
 };
 
 ExprPtr make_expr(Expr::Kind kind, const Location& loc);

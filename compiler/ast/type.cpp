@@ -4,12 +4,18 @@ namespace rift::ast {
 
 std::string_view to_string(Type t) {
   switch (t) {
-    case Type::Real: return "real";
-    case Type::Int: return "int";
-    case Type::Bool: return "bool";
-    case Type::Vec3: return "vec3";
-    case Type::Mat3: return "mat3";
-    case Type::Error: break;
+    case Type::Real:
+      return "real";
+    case Type::Int:
+      return "int";
+    case Type::Bool:
+      return "bool";
+    case Type::Vec3:
+      return "vec3";
+    case Type::Mat3:
+      return "mat3";
+    case Type::Error:
+      break;
   }
   return "<error>";
 }

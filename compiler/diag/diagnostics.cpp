@@ -21,19 +21,22 @@ Diagnostic& Diagnostics::warning(const std::string& name, const Location& loc,
     scratch_ = Diagnostic{};
     return scratch_;
   }
-  list_.push_back(Diagnostic{werror_ ? Severity::Error : Severity::Warning, loc,
-                             std::move(message), name, {}});
+  list_.push_back(
+      Diagnostic{werror_ ? Severity::Error : Severity::Warning, loc, std::move(message), name, {}});
   return list_.back();
 }
 
 std::size_t Diagnostics::error_count() const {
-  return static_cast<std::size_t>(std::count_if(
-      list_.begin(), list_.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; }));
+  return static_cast<std::size_t>(
+      std::count_if(list_.begin(), list_.end(),
+                    [](const Diagnostic& d) { return d.severity == Severity::Error; }));
 }
 
 namespace {
 
-bool is_continuation(unsigned char c) { return (c & 0xC0u) == 0x80u; }
+bool is_continuation(unsigned char c) {
+  return (c & 0xC0u) == 0x80u;
+}
 
 /// The caret line: spaces (tabs kept, so the caret lines up) up to `column`,
 /// then '^' and '~' up to `end_column` (exclusive) on the same line.
@@ -51,7 +54,8 @@ std::string caret_line(std::string_view line, int column, int end_column) {
     ++col;
   }
   out += '^';
-  for (int k = column + 1; k < end_column; ++k) out += '~';
+  for (int k = column + 1; k < end_column; ++k)
+    out += '~';
   return out;
 }
 
@@ -59,7 +63,9 @@ std::string caret_line(std::string_view line, int column, int end_column) {
 
 void Diagnostics::render_one(std::string& out, Severity sev, const Location& loc,
                              const std::string& message, const std::string& warning_name) const {
-  const char* label = sev == Severity::Error ? "error" : sev == Severity::Warning ? "warning" : "note";
+  const char* label = sev == Severity::Error     ? "error"
+                      : sev == Severity::Warning ? "warning"
+                                                 : "note";
   if (loc.valid()) {
     out += sources_->file(loc.file).path + ":" + std::to_string(loc.begin.line) + ":" +
            std::to_string(loc.begin.column) + ": ";
@@ -78,7 +84,8 @@ void Diagnostics::render_one(std::string& out, Severity sev, const Location& loc
 
 std::string Diagnostics::render() const {
   std::vector<const Diagnostic*> sorted;
-  for (const Diagnostic& d : list_) sorted.push_back(&d);
+  for (const Diagnostic& d : list_)
+    sorted.push_back(&d);
   std::stable_sort(sorted.begin(), sorted.end(), [](const Diagnostic* a, const Diagnostic* b) {
     if (a->loc.file != b->loc.file) return a->loc.file < b->loc.file;
     return a->loc.begin < b->loc.begin;
@@ -86,7 +93,8 @@ std::string Diagnostics::render() const {
   std::string out;
   for (const Diagnostic* d : sorted) {
     render_one(out, d->severity, d->loc, d->message, d->warning_name);
-    for (const Note& n : d->notes) render_one(out, Severity::Note, n.loc, n.message, {});
+    for (const Note& n : d->notes)
+      render_one(out, Severity::Note, n.loc, n.message, {});
   }
   return out;
 }

@@ -1,0 +1,371 @@
+#include "check/topology.hpp"
+
+#include <set>
+
+#include "check/types.hpp"
+
+namespace rift::check {
+
+namespace {
+
+std::string dim_str(int d) {
+  return std::to_string(d);
+}
+
+class RuleChecker {
+ public:
+  RuleChecker(RuleGraph& g, diag::Diagnostics& diags) : g_(g), diags_(diags) {}
+
+  /// Every label of the rule has the length of the first one.
+  void label_lengths() {
+    const GraphNode* ref = nullptr;
+    for (const PatternSide* side : {&g_.left, &g_.right}) {
+      for (const GraphNode& n : side->nodes) {
+        if (!ref) {
+          ref = &n;
+          g_.label_length = static_cast<int>(n.label().size());
+          continue;
+        }
+        if (n.label().size() != ref->label().size()) {
+          fail(n.decl->label.loc, "the label of '" + n.name() + "' has " +
+                                      std::to_string(n.label().size()) +
+                                      " entries but the labels of this rule have " +
+                                      std::to_string(ref->label().size()))
+              .notes.push_back({ref->decl->label.loc, "the label of '" + ref->name() + "'"});
+        }
+      }
+    }
+  }
+
+  /// Explicit or inferred hooks: one full-label left node per left component.
+  void hooks(const std::vector<ast::Ident>& explicit_hooks, const char* pattern_name) {
+    const std::vector<int> comp = components(g_.left);
+    std::vector<int> hook_of(g_.left.nodes.size(), -1);  // by component root
+    for (const ast::Ident& h : explicit_hooks) {
+      const int v = g_.left.find(h.text);
+      if (v < 0) {
+        fail(h.loc, "hook '" + h.text + "' is not a node of the " + pattern_name + " pattern");
+        continue;
+      }
+      const GraphNode& node = g_.left.nodes[static_cast<std::size_t>(v)];
+      if (has_underscore(node)) {
+        fail(h.loc, "hook '" + h.text + "' has '_' in its label; a hook needs a full label")
+            .notes.push_back({node.decl->label.loc, "label given here"});
+      }
+      int& slot = hook_of[static_cast<std::size_t>(comp[static_cast<std::size_t>(v)])];
+      if (slot >= 0) {
+        fail(h.loc, "'" + h.text + "' and '" +
+                        g_.left.nodes[static_cast<std::size_t>(slot)].name() +
+                        "' are two hooks in one connected component")
+            .notes.push_back(
+                {g_.left.nodes[static_cast<std::size_t>(slot)].decl->name.loc, "the other hook"});
+        continue;
+      }
+      slot = v;
+      g_.hooks.push_back(v);
+    }
+    for (std::size_t v = 0; v < g_.left.nodes.size(); ++v) {
+      const auto c = static_cast<std::size_t>(comp[v]);
+      if (hook_of[c] >= 0 || hook_of[c] == -2) continue;
+      const GraphNode& node = g_.left.nodes[v];
+      if (!explicit_hooks.empty()) {
+        fail(node.decl->name.loc, "the connected component of '" + node.name() + "' has no hook")
+            .notes.push_back({explicit_hooks.front().loc, "hooks are listed here"});
+        hook_of[c] = -2;
+        continue;
+      }
+      // Inferred: the first node written in the component whose label is full.
+      int chosen = -1;
+      for (std::size_t w = 0; w < g_.left.nodes.size() && chosen < 0; ++w) {
+        if (comp[w] == comp[v] && !has_underscore(g_.left.nodes[w])) chosen = static_cast<int>(w);
+      }
+      if (chosen < 0) {
+        fail(node.decl->name.loc, "the connected component of '" + node.name() +
+                                      "' has no node with a full label to serve as its hook");
+        hook_of[c] = -2;
+        continue;
+      }
+      hook_of[c] = chosen;
+      g_.hooks.push_back(chosen);
+    }
+    if (!g_.hooks.empty()) {
+      const GraphNode& first = g_.left.nodes[static_cast<std::size_t>(g_.hooks.front())];
+      g_.hook_label = first.label();
+      for (int h : g_.hooks) {
+        const GraphNode& other = g_.left.nodes[static_cast<std::size_t>(h)];
+        if (other.label() != first.label() && other.label().size() == first.label().size()) {
+          fail(other.decl->label.loc, "hooks '" + first.name() + "' and '" + other.name() +
+                                          "' have different labels; rift requires one hook label")
+              .notes.push_back({first.decl->label.loc, "label of '" + first.name() + "'"});
+        }
+      }
+    } else if (g_.left.nodes.empty() && g_.label_length > 0) {
+      // A generator has a single row: implicit arcs would have nothing to follow.
+      const GraphNode& n = g_.right.nodes.front();
+      fail(n.decl->label.loc,
+           "a rule without a left pattern has a single row; its labels must be <>");
+    }
+  }
+
+  /// Dimensions used on node v: (dimension, where) for its label and arcs.
+  std::vector<std::pair<int, diag::Location>> dims_of(const PatternSide& side, int v) const {
+    std::vector<std::pair<int, diag::Location>> out;
+    const GraphNode& n = side.nodes[static_cast<std::size_t>(v)];
+    for (int d : n.label()) {
+      if (d >= 0) out.emplace_back(d, n.decl->label.loc);
+    }
+    for (const GraphArc& arc : side.arcs) {
+      if (arc.a == v || arc.b == v) out.emplace_back(arc.dim, arc.decl->dim_loc);
+    }
+    return out;
+  }
+
+  /// Per side: no dimension twice on a node. Returns the set of dimensions per node.
+  std::vector<std::set<int>> unique_dims(const PatternSide& side) {
+    std::vector<std::set<int>> result(side.nodes.size());
+    for (std::size_t v = 0; v < side.nodes.size(); ++v) {
+      for (const auto& [d, loc] : dims_of(side, static_cast<int>(v))) {
+        if (!result[v].insert(d).second) {
+          fail(loc, "dimension " + dim_str(d) + " is used twice on node '" + side.nodes[v].name() +
+                        "' (label and arcs together give each dimension at most once)");
+        }
+      }
+    }
+    return result;
+  }
+
+  void incident_arcs() {
+    const auto left = unique_dims(g_.left);
+    const auto right = unique_dims(g_.right);
+    for (std::size_t v = 0; v < g_.left.nodes.size(); ++v) {
+      const GraphNode& n = g_.left.nodes[v];
+      const int r = g_.right.find(n.name());
+      if (r < 0) {
+        require_all(left[v], n, "deleted");
+        continue;
+      }
+      const GraphNode& rn = g_.right.nodes[static_cast<std::size_t>(r)];
+      const auto& rd = right[static_cast<std::size_t>(r)];
+      for (int d = 0; d <= g_.dimension; ++d) {
+        const bool in_l = left[v].count(d) > 0;
+        const bool in_r = rd.count(d) > 0;
+        if (in_l == in_r) continue;
+        const GraphNode& where = in_l ? rn : n;
+        fail(where.decl->name.loc, "node '" + n.name() + "' has a " + dim_str(d) + "-arc in the " +
+                                       (in_l ? "left" : "right") + " pattern but none in the " +
+                                       (in_l ? "right" : "left") +
+                                       " one; a preserved node keeps the same arc dimensions")
+            .notes.push_back({(in_l ? n : rn).decl->name.loc,
+                              std::string("the ") + (in_l ? "left" : "right") + " node"});
+      }
+    }
+    for (std::size_t v = 0; v < g_.right.nodes.size(); ++v) {
+      if (g_.left.find(g_.right.nodes[v].name()) < 0) {
+        require_all(right[v], g_.right.nodes[v], "created");
+      }
+    }
+  }
+
+  void cycles() {
+    for (int i = 0; i <= g_.dimension; ++i) {
+      for (int j = i + 2; j <= g_.dimension; ++j)
+        cycles(i, j);
+    }
+  }
+
+  bool ok() const { return ok_; }
+
+ private:
+  static bool has_underscore(const GraphNode& n) {
+    for (int d : n.label()) {
+      if (d < 0) return true;
+    }
+    return false;
+  }
+
+  diag::Diagnostic& fail(const diag::Location& loc, std::string message) {
+    ok_ = false;
+    return diags_.error(loc, std::move(message));
+  }
+
+  void require_all(const std::set<int>& dims, const GraphNode& n, const char* kind) {
+    for (int d = 0; d <= g_.dimension; ++d) {
+      if (dims.count(d)) continue;
+      fail(n.decl->name.loc, std::string(kind) + " node '" + n.name() + "' has no " + dim_str(d) +
+                                 "-arc; a " + kind + " node needs one arc of every dimension 0.." +
+                                 dim_str(g_.dimension));
+    }
+  }
+
+  /// Walks i, j, i, j from v and tells whether it closes on v in the same row.
+  bool on_cycle(const PatternSide& side, int v, int i, int j) const {
+    int cur = v;
+    std::vector<int> word;  // hook links crossed, reduced as we go
+    for (int d : {i, j, i, j}) {
+      const auto s = step(side, g_.hook_label, cur, d);
+      if (!s) return false;
+      cur = s->node;
+      if (s->hook_dim < 0) continue;
+      if (!word.empty() && word.back() == s->hook_dim) {
+        word.pop_back();  // alpha_h is an involution
+      } else {
+        word.push_back(s->hook_dim);
+      }
+    }
+    if (cur != v) return false;
+    if (word.empty()) return true;
+    // a b a b is the identity on the matched orbit when |a - b| >= 2 (G-map condition).
+    return word.size() == 4 && word[0] == word[2] && word[1] == word[3] &&
+           (word[0] - word[1] >= 2 || word[1] - word[0] >= 2);
+  }
+
+  void cycles(int i, int j) {
+    const std::string ij = dim_str(i) + "-" + dim_str(j);
+    for (std::size_t v = 0; v < g_.right.nodes.size(); ++v) {
+      const GraphNode& rn = g_.right.nodes[v];
+      const int l = g_.left.find(rn.name());
+      const bool on_r = on_cycle(g_.right, static_cast<int>(v), i, j);
+      if (l < 0) {
+        if (!on_r) {
+          fail(rn.decl->name.loc, "created node '" + rn.name() + "' does not lie on a " + ij + "-" +
+                                      ij + " cycle, so alpha_" + dim_str(i) + " o alpha_" +
+                                      dim_str(j) + " would not be an involution");
+        }
+        continue;
+      }
+      const GraphNode& ln = g_.left.nodes[static_cast<std::size_t>(l)];
+      if (on_cycle(g_.left, l, i, j)) {
+        if (!on_r) {
+          fail(rn.decl->name.loc, "node '" + rn.name() + "' lies on a " + ij + "-" + ij +
+                                      " cycle in the left pattern but not in the right one")
+              .notes.push_back({ln.decl->name.loc, "the left node"});
+        }
+        continue;
+      }
+      for (int d : {i, j}) {
+        const auto before = step(g_.left, g_.hook_label, l, d);
+        const auto after = step(g_.right, g_.hook_label, static_cast<int>(v), d);
+        if (same_step(before, after)) continue;
+        fail(rn.decl->name.loc, "node '" + rn.name() + "' lies on no " + ij + "-" + ij +
+                                    " cycle in the left pattern, so its " + dim_str(d) +
+                                    "-arc must not change")
+            .notes.push_back({ln.decl->name.loc, "the left node"});
+      }
+    }
+  }
+
+  /// Same arc before and after: same kind, same target (compared by name).
+  bool same_step(const std::optional<Step>& a, const std::optional<Step>& b) const {
+    if (!a || !b) return !a && !b;
+    if (a->hook_dim != b->hook_dim) return false;
+    return g_.left.nodes[static_cast<std::size_t>(a->node)].name() ==
+           g_.right.nodes[static_cast<std::size_t>(b->node)].name();
+  }
+
+  RuleGraph& g_;
+  diag::Diagnostics& diags_;
+  bool ok_ = true;
+};
+
+}  // namespace
+
+std::vector<CheckedRule> check_rules(const ast::Program& program, diag::Diagnostics& diags) {
+  std::vector<CheckedRule> out;
+  for (const ast::File& file : program.files) {
+    for (const ast::Rule& rule : file.rules) {
+      CheckedRule cr;
+      cr.rule = &rule;
+      cr.graph.dimension = program.dimension;
+      const std::size_t before = diags.error_count();
+      if (!rule.left.present && !rule.right.present) {
+        diags.error(rule.name.loc,
+                    "rule '" + rule.name.text + "' has neither a left nor a right pattern");
+      }
+      for (const ast::Assign& a : rule.left.assigns) {
+        diags.error(a.loc, "embedding expressions belong to right nodes; move this into 'right'");
+      }
+      cr.graph.left = build_side(rule.left, program.dimension, diags);
+      cr.graph.right = build_side(rule.right, program.dimension, diags);
+      RuleChecker rc(cr.graph, diags);
+      rc.label_lengths();
+      rc.hooks(rule.hooks, "left");
+      if (diags.error_count() == before) {
+        // Arc and cycle conditions only make sense on well-formed labels and hooks.
+        rc.incident_arcs();
+        if (rc.ok()) rc.cycles();
+      }
+      cr.ok = rc.ok() && diags.error_count() == before;
+      out.push_back(std::move(cr));
+    }
+  }
+  return out;
+}
+
+std::vector<CheckedInteraction> check_interactions(const ast::Program& program,
+                                                   diag::Diagnostics& diags) {
+  std::vector<CheckedInteraction> out;
+  for (const ast::File& file : program.files) {
+    for (const ast::Interaction& inter : file.interactions) {
+      CheckedInteraction ci;
+      ci.interaction = &inter;
+      ci.graph.dimension = program.dimension;
+      const std::size_t before = diags.error_count();
+      check_orbit_type(inter.support, program.dimension, "an interaction's support", diags);
+      if (!inter.pattern.present) {
+        diags.error(inter.name.loc, "interaction '" + inter.name.text + "' has no 'pattern'");
+      }
+      for (const ast::Assign& a : inter.pattern.assigns) {
+        diags.error(a.loc, "a pattern only matches; store results with 'force'");
+      }
+      ci.graph.left = build_side(inter.pattern, program.dimension, diags);
+      RuleChecker rc(ci.graph, diags);
+      rc.label_lengths();
+      rc.hooks({}, "interaction");
+      if (rc.ok()) rc.unique_dims(ci.graph.left);
+      std::string vertex = "<";
+      for (int d = 1; d <= program.dimension; ++d)
+        vertex += (d > 1 ? "," : "") + dim_str(d);
+      vertex += ">";
+      for (const ast::Assign& f : inter.forces) {
+        if (!f.target) continue;
+        bool inside = true;
+        for (int d : f.target->orbit.dims)
+          inside = inside && d >= 1 && d <= program.dimension;
+        if (!inside) {
+          diags
+              .error(f.embedding.loc, "force embedding '" + f.embedding.text +
+                                          "' is not stored in a sub-orbit of the vertex orbit " +
+                                          vertex + ", so it cannot be gathered per vertex")
+              .notes.push_back({f.target->orbit.loc, "its orbit"});
+        }
+      }
+      ci.ok = rc.ok() && diags.error_count() == before;
+      out.push_back(std::move(ci));
+    }
+  }
+  return out;
+}
+
+void check_applies(const ast::Program& program, const std::vector<CheckedRule>& rules,
+                   diag::Diagnostics& diags) {
+  for (const ast::File& file : program.files) {
+    for (const ast::Criterion& crit : file.criteria) {
+      check_orbit_type(crit.orbit, program.dimension, "a criterion", diags);
+      if (!crit.has_apply) continue;
+      for (const CheckedRule& cr : rules) {
+        if (cr.rule->name.text != crit.rule.text || !cr.ok) continue;
+        if (cr.graph.hooks.size() != crit.apply_hooks.size()) {
+          diags
+              .error(crit.apply_loc, "rule '" + crit.rule.text + "' has " +
+                                         std::to_string(cr.graph.hooks.size()) + " hook(s) but " +
+                                         std::to_string(crit.apply_hooks.size()) +
+                                         " dart(s) are given")
+              .notes.push_back({cr.rule->name.loc, "rule declared here"});
+        }
+        break;
+      }
+    }
+  }
+}
+
+}  // namespace rift::check

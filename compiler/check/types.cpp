@@ -1,0 +1,364 @@
+#include "check/types.hpp"
+
+#include <map>
+#include <set>
+
+#include "check/builtins.hpp"
+
+namespace rift::check {
+
+namespace {
+
+using ast::Expr;
+using ast::Type;
+
+bool numeric(Type t) {
+  return t == Type::Int || t == Type::Real;
+}
+std::string str(Type t) {
+  return std::string(ast::to_string(t));
+}
+
+/// Whether a value of type `from` may be stored where `to` is expected.
+bool assignable(Type from, Type to) {
+  return from == to || (from == Type::Int && to == Type::Real);
+}
+
+class TypeChecker {
+ public:
+  TypeChecker(int dimension, diag::Diagnostics& diags) : dimension_(dimension), diags_(diags) {}
+
+  Type expr(const Expr& ce) {
+    auto& e = const_cast<Expr&>(ce);  // the pass records types in the tree
+    e.type = compute(e);
+    return e.type;
+  }
+
+  /// Checks that `e` has a type assignable to `want`; `what` names the place.
+  void expect(const Expr& e, Type want, const std::string& what) {
+    const Type t = expr(e);
+    if (t == Type::Error || want == Type::Error || assignable(t, want)) return;
+    diags_.error(e.loc, what + " must be " + str(want) + ", not " + str(t));
+  }
+
+  void lets(const std::vector<ast::Let>& lets) {
+    for (const auto& l : lets)
+      expr(*l.value);
+  }
+
+ private:
+  Type compute(Expr& e) {
+    switch (e.kind) {
+      case Expr::Kind::IntLit:
+        return Type::Int;
+      case Expr::Kind::RealLit:
+        return Type::Real;
+      case Expr::Kind::BoolLit:
+        return Type::Bool;
+      case Expr::Kind::Name:
+        if (e.let) return e.let->value->type;
+        if (e.param) return e.param->type;
+        if (e.pack_param) return e.pack_param->type;
+        return Type::Error;
+      case Expr::Kind::Read:
+        return read(e);
+      case Expr::Kind::Collect:
+        return collect(e);
+      case Expr::Kind::Unary:
+        return unary(e);
+      case Expr::Kind::Binary:
+        return binary(e);
+      case Expr::Kind::Cond:
+        return cond(e);
+      case Expr::Kind::Index:
+        return index(e);
+      case Expr::Kind::Call:
+        return call(e);
+    }
+    return Type::Error;
+  }
+
+  void check_hops(const Expr& e) {
+    for (int h : e.hops) {
+      if (h < 0 || h > dimension_) {
+        diags_.error(e.node_loc, "link dimension " + std::to_string(h) + " is out of range 0.." +
+                                     std::to_string(dimension_));
+      }
+    }
+  }
+
+  Type read(const Expr& e) {
+    check_hops(e);
+    return e.embedding ? e.embedding->type : Type::Error;
+  }
+
+  Type collect(const Expr& e) {
+    check_hops(e);
+    check_orbit_type(e.orbit, dimension_, "a collection", diags_);
+    if (!e.embedding) return Type::Error;
+    const Type t = e.embedding->type;
+    if (e.op == "count") return Type::Int;
+    if (e.op == "min" || e.op == "max") {
+      if (numeric(t)) return t;
+      diags_.error(e.loc, "'" + e.op + "' over an orbit needs real or int values; '" + e.name +
+                              "' holds " + str(t));
+      return Type::Error;
+    }
+    if (t == Type::Bool) {
+      diags_.error(e.loc,
+                   "'" + e.op + "' over an orbit cannot combine bool values of '" + e.name + "'");
+      return Type::Error;
+    }
+    return e.op == "mean" && t == Type::Int ? Type::Real : t;
+  }
+
+  Type unary(const Expr& e) {
+    const Type a = expr(*e.args[0]);
+    if (a == Type::Error) return a;
+    if (e.op == "not") {
+      if (a == Type::Bool) return a;
+    } else if (a != Type::Bool) {
+      return a;
+    }
+    diags_.error(e.loc, "operator '" + e.op + "' cannot be applied to " + str(a));
+    return Type::Error;
+  }
+
+  Type binary(const Expr& e) {
+    const Type a = expr(*e.args[0]);
+    const Type b = expr(*e.args[1]);
+    if (a == Type::Error || b == Type::Error) return Type::Error;
+    const std::string& op = e.op;
+    const bool scalars = numeric(a) && numeric(b);
+    const Type scalar = a == Type::Real || b == Type::Real ? Type::Real : Type::Int;
+    if (op == "and" || op == "or") {
+      if (a == Type::Bool && b == Type::Bool) return Type::Bool;
+    } else if (op == "<" || op == "<=" || op == ">" || op == ">=") {
+      if (scalars) return Type::Bool;
+    } else if (op == "==" || op == "!=") {
+      if (scalars || a == b) {
+        if (a == Type::Real || b == Type::Real) {
+          diags_.warning(
+              "float-equality", e.loc,
+              "comparing real numbers with '" + op + "' is fragile; compare with a tolerance");
+        }
+        return Type::Bool;
+      }
+    } else if (op == "+" || op == "-") {
+      if (scalars) return scalar;
+      if (a == b && (a == Type::Vec3 || a == Type::Mat3)) return a;
+    } else if (op == "*") {
+      if (scalars) return scalar;
+      if (numeric(a) && (b == Type::Vec3 || b == Type::Mat3)) return b;
+      if (numeric(b) && (a == Type::Vec3 || a == Type::Mat3)) return a;
+      if (a == Type::Mat3 && (b == Type::Vec3 || b == Type::Mat3)) return b;
+    } else if (op == "/") {
+      if (scalars) return scalar;
+      if (numeric(b) && (a == Type::Vec3 || a == Type::Mat3)) return a;
+    }
+    diags_.error(e.loc, "operator '" + op + "' cannot combine " + str(a) + " and " + str(b));
+    return Type::Error;
+  }
+
+  Type cond(const Expr& e) {
+    expect(*e.args[0], Type::Bool, "the condition of 'if'");
+    const Type a = expr(*e.args[1]);
+    const Type b = expr(*e.args[2]);
+    if (a == Type::Error || b == Type::Error) return Type::Error;
+    if (a == b) return a;
+    if (numeric(a) && numeric(b)) return Type::Real;
+    diags_.error(e.loc, "the branches of 'if' have different types: " + str(a) + " and " + str(b));
+    return Type::Error;
+  }
+
+  Type index(const Expr& e) {
+    const Type base = expr(*e.args[0]);
+    for (std::size_t k = 1; k < e.args.size(); ++k)
+      expect(*e.args[k], Type::Int, "an index");
+    if (base == Type::Error) return base;
+    const std::size_t want = base == Type::Vec3 ? 1 : base == Type::Mat3 ? 2 : 0;
+    if (want == 0) {
+      diags_.error(e.loc, "only vec3 and mat3 values can be indexed, not " + str(base));
+      return Type::Error;
+    }
+    if (e.args.size() - 1 != want) {
+      diags_.error(e.loc, "a " + str(base) + " takes " + std::to_string(want) +
+                              (want == 1 ? " index" : " indices"));
+      return Type::Error;
+    }
+    for (std::size_t k = 1; k < e.args.size(); ++k) {
+      const Expr& i = *e.args[k];
+      if (i.kind == Expr::Kind::IntLit && (i.integer < 0 || i.integer > 2)) {
+        diags_.error(i.loc, "index " + std::to_string(i.integer) + " is out of range 0..2");
+      }
+    }
+    return Type::Real;
+  }
+
+  Type call(const Expr& e) {
+    std::vector<Type> args;
+    bool bad = false;
+    for (const auto& a : e.args) {
+      args.push_back(expr(*a));
+      bad = bad || args.back() == Type::Error;
+    }
+    const std::vector<Signature>* overloads = builtin(e.name);
+    if (!overloads) {
+      diags_.error(e.loc, "unknown function '" + e.name + "'");
+      return Type::Error;
+    }
+    if (bad) return Type::Error;
+    if (const Signature* s = select_overload(*overloads, args)) return s->result;
+    std::string expected;
+    for (const Signature& s : *overloads) {
+      expected += (expected.empty() ? "" : " or ") + describe(s.params);
+    }
+    diags_.error(e.loc, "'" + e.name + "' expects " + expected + ", got " + describe(args));
+    return Type::Error;
+  }
+
+  int dimension_;
+  diag::Diagnostics& diags_;
+};
+
+void check_embedding(const ast::Embedding& e, int dimension, TypeChecker& tc,
+                     diag::Diagnostics& diags) {
+  check_orbit_type(e.orbit, dimension, "an embedding", diags);
+  if (e.default_value) tc.expect(*e.default_value, e.type, "the default of '" + e.name.text + "'");
+  if (e.merge) {
+    static const std::set<std::string> policies = {"keep", "sum", "mean", "refuse"};
+    if (!policies.count(e.merge->text)) {
+      diags.error(e.merge->loc, "unknown merge policy '" + e.merge->text +
+                                    "'; expected keep, sum, mean or refuse");
+    } else if ((e.merge->text == "sum" || e.merge->text == "mean") && e.type == Type::Bool) {
+      diags.error(e.merge->loc, "merge policy '" + e.merge->text + "' needs numbers, not bool");
+    }
+  }
+}
+
+void check_assign(const ast::Assign& a, TypeChecker& tc, const char* what) {
+  if (!a.target) {
+    tc.expr(*a.value);
+    return;
+  }
+  tc.expect(*a.value, a.target->type, std::string(what) + " '" + a.embedding.text + "'");
+}
+
+}  // namespace
+
+bool check_orbit_type(const ast::Label& label, int dimension, const char* what,
+                      diag::Diagnostics& diags) {
+  std::set<int> seen;
+  for (int d : label.dims) {
+    if (d < 0) {
+      diags.error(label.loc, std::string("the orbit of ") + what + " cannot contain '_'");
+      return false;
+    }
+    if (d > dimension) {
+      diags.error(label.loc, "dimension " + std::to_string(d) + " is out of range 0.." +
+                                 std::to_string(dimension));
+      return false;
+    }
+    if (!seen.insert(d).second) {
+      diags.error(label.loc, "dimension " + std::to_string(d) + " appears twice in an orbit");
+      return false;
+    }
+  }
+  return true;
+}
+
+void check_types(const ast::Program& program, const resolve::Symbols& symbols,
+                 diag::Diagnostics& diags) {
+  TypeChecker tc(program.dimension, diags);
+  std::map<std::string, diag::Location> initialised;
+  for (const ast::File& file : program.files) {
+    for (const auto& e : file.embeddings)
+      check_embedding(e, program.dimension, tc, diags);
+    for (const auto& p : file.params)
+      tc.expect(*p.value, p.type, "the value of '" + p.name.text + "'");
+    for (const auto& init : file.inits) {
+      const ast::Embedding* emb = symbols.embedding(init.embedding.text);
+      if (!emb) {
+        tc.expr(*init.value);
+        continue;
+      }
+      tc.expect(*init.value, emb->type, "the initial value of '" + init.embedding.text + "'");
+      auto [it, fresh] = initialised.emplace(init.embedding.text, init.embedding.loc);
+      if (!fresh) {
+        diags.error(init.embedding.loc, "'" + init.embedding.text + "' is initialised twice")
+            .notes.push_back({it->second, "first initialised here"});
+      }
+    }
+    for (const auto& rule : file.rules) {
+      tc.lets(rule.lets);
+      for (const auto& w : rule.whens)
+        tc.expect(*w, Type::Bool, "a precondition");
+      for (const auto& a : rule.right.assigns)
+        check_assign(a, tc, "the value of");
+      for (const auto& u : rule.updates)
+        check_assign(u, tc, "the update of");
+    }
+    for (const auto& inter : file.interactions) {
+      tc.lets(inter.lets);
+      for (const auto& w : inter.whens)
+        tc.expect(*w, Type::Bool, "a precondition");
+      for (const auto& f : inter.forces) {
+        check_assign(f, tc, "the force");
+        if (f.target && f.target->type != Type::Vec3) {
+          diags
+              .error(f.embedding.loc, "force embedding '" + f.embedding.text +
+                                          "' must hold vec3 values, not " + str(f.target->type))
+              .notes.push_back({f.target->name.loc, "declared here"});
+        }
+      }
+      if (inter.energy) tc.expect(*inter.energy, Type::Real, "the energy");
+    }
+    for (const auto& crit : file.criteria) {
+      tc.lets(crit.lets);
+      if (!crit.measure) {
+        diags.error(crit.name.loc, "criterion '" + crit.name.text + "' has no 'measure'");
+      } else {
+        const Expr& m = *crit.measure;
+        const bool comparison = m.kind == Expr::Kind::Binary &&
+                                (m.op == "<" || m.op == "<=" || m.op == ">" || m.op == ">=");
+        tc.expr(m);
+        if (!comparison) {
+          diags.error(m.loc, "a measure is a comparison 'VALUE > THRESHOLD' (or <, <=, >=)");
+        }
+      }
+      if (!crit.has_apply) {
+        diags.error(crit.name.loc, "criterion '" + crit.name.text + "' applies no rule");
+      }
+      const ast::Rule* rule = crit.has_apply ? symbols.rule(crit.rule.text) : nullptr;
+      for (const auto& arg : crit.apply_args) {
+        const ast::Param* param = nullptr;
+        if (rule) {
+          for (const auto& p : rule->params) {
+            if (p.name.text == arg.name.text) param = &p;
+          }
+          if (!param) {
+            diags.error(arg.name.loc,
+                        "rule '" + rule->name.text + "' has no parameter '" + arg.name.text + "'");
+          }
+        }
+        tc.expect(*arg.value, param ? param->type : Type::Error,
+                  "parameter '" + arg.name.text + "'");
+      }
+      if (rule) {
+        for (const auto& p : rule->params) {
+          bool given = false;
+          for (const auto& arg : crit.apply_args)
+            given = given || arg.name.text == p.name.text;
+          if (!given) {
+            diags
+                .error(crit.apply_loc, "parameter '" + p.name.text + "' of rule '" +
+                                           rule->name.text + "' is not given")
+                .notes.push_back({p.name.loc, "declared here"});
+          }
+        }
+      }
+    }
+  }
+}
+
+}  // namespace rift::check

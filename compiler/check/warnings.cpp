@@ -1,0 +1,36 @@
+#include "check/warnings.hpp"
+
+namespace rift::check {
+
+namespace {
+
+void unused_lets(const std::vector<ast::Let>& lets, diag::Diagnostics& diags) {
+  for (const ast::Let& l : lets) {
+    if (l.uses == 0) {
+      diags.warning("unused-variable", l.name.loc, "'" + l.name.text + "' is never used");
+    }
+  }
+}
+
+}  // namespace
+
+void check_unused(const ast::Program& program, diag::Diagnostics& diags) {
+  for (const ast::File& file : program.files) {
+    for (const ast::Rule& r : file.rules) {
+      unused_lets(r.lets, diags);
+      for (const ast::Param& p : r.params) {
+        if (p.uses == 0) {
+          diags.warning(
+              "unused-parameter", p.name.loc,
+              "parameter '" + p.name.text + "' of rule '" + r.name.text + "' is never used");
+        }
+      }
+    }
+    for (const ast::Interaction& i : file.interactions)
+      unused_lets(i.lets, diags);
+    for (const ast::Criterion& c : file.criteria)
+      unused_lets(c.lets, diags);
+  }
+}
+
+}  // namespace rift::check

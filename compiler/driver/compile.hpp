@@ -1,0 +1,28 @@
+// The pipeline riftc runs: load/parse -> resolve -> types -> topology ->
+// embeddings -> warnings -> (emit). Each stage only adds diagnostics; the
+// driver renders them once at the end.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rift::driver {
+
+struct Options {
+  std::vector<std::string> inputs;
+  std::string out_dir;  // empty: check only
+  std::vector<std::string> disabled_warnings;
+  bool warnings_as_errors = false;
+};
+
+struct Result {
+  int exit_code = 0;        // 0 success, 1 errors
+  std::string diagnostics;  // rendered, sorted
+};
+
+Result compile(const Options& options);
+
+/// Compiles in-memory text as if it were the file `path` (tests, fuzzing).
+Result compile_text(const std::string& path, const std::string& text, const Options& options);
+
+}  // namespace rift::driver

@@ -1,0 +1,30 @@
+// What the Bison actions write into while a file is parsed: the file's AST and
+// the declaration currently open (rule, interaction, criterion), so that body
+// statements can come in any order.
+#pragma once
+
+#include <vector>
+
+#include "ast/decl.hpp"
+#include "diag/diagnostics.hpp"
+
+namespace rift::grammar {
+class Lexer;
+}
+
+namespace rift::parse {
+
+struct ParseContext {
+  grammar::Lexer& lexer;
+  ast::File& file;
+  diag::Diagnostics& diags;
+
+  ast::Rule rule;
+  ast::Interaction interaction;
+  ast::Criterion criterion;
+  ast::Pattern* pattern = nullptr;        // the pattern block being read
+  std::vector<ast::Let>* lets = nullptr;  // where `let` goes in the open body
+  std::vector<ast::ExprPtr>* whens = nullptr;
+};
+
+}  // namespace rift::parse

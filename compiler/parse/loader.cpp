@@ -1,0 +1,104 @@
+#include "parse/loader.hpp"
+
+#include <filesystem>
+
+#include "parse/parse_file.hpp"
+
+namespace rift::parse {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class Loader {
+ public:
+  Loader(diag::SourceManager& sources, diag::Diagnostics& diags, ast::Program& program)
+      : sources_(sources), diags_(diags), program_(program) {}
+
+  void read(int file_id) {
+    in_progress_.push_back(file_id);
+    ast::File file;
+    parse_file(sources_, file_id, diags_, file);
+    check_dimension(file);
+    const std::string base = fs::path(sources_.file(file_id).path).parent_path().string();
+    std::vector<ast::Include> includes = file.includes;
+    program_.files.push_back(std::move(file));
+    for (const ast::Include& inc : includes)
+      include(base, inc);
+    in_progress_.pop_back();
+  }
+
+  void include(const std::string& base, const ast::Include& inc) {
+    const std::string path =
+        (base.empty() ? fs::path(inc.path) : fs::path(base) / inc.path).lexically_normal().string();
+    const int known = sources_.find(path);
+    if (known >= 0) {
+      for (int open : in_progress_) {
+        if (open == known) {
+          diags_.error(inc.loc, "include cycle: '" + path + "' is already being read");
+          return;
+        }
+      }
+      return;  // read once
+    }
+    const int id = sources_.load(path);
+    if (id < 0) {
+      diags_.error(inc.loc, "cannot read included file '" + path + "'");
+      return;
+    }
+    read(id);
+  }
+
+ private:
+  void check_dimension(const ast::File& file) {
+    if (!file.has_header) return;
+    if (!have_dimension_) {
+      have_dimension_ = true;
+      program_.dimension = file.dimension;
+      first_ = file.dimension_loc;
+      return;
+    }
+    if (file.dimension != program_.dimension) {
+      diags_
+          .error(file.dimension_loc, "pack '" + file.pack.text + "' has dimension " +
+                                         std::to_string(file.dimension) + " but the pack is " +
+                                         std::to_string(program_.dimension) + "-dimensional")
+          .notes.push_back({first_, "dimension first given here"});
+    }
+  }
+
+  diag::SourceManager& sources_;
+  diag::Diagnostics& diags_;
+  ast::Program& program_;
+  std::vector<int> in_progress_;
+  bool have_dimension_ = false;
+  diag::Location first_;
+};
+
+}  // namespace
+
+ast::Program load_program(const std::vector<std::string>& paths, diag::SourceManager& sources,
+                          diag::Diagnostics& diags) {
+  ast::Program program;
+  Loader loader(sources, diags, program);
+  for (const std::string& path : paths) {
+    if (sources.find(path) >= 0) continue;
+    const int id = sources.load(path);
+    if (id < 0) {
+      diags.error({}, "cannot read '" + path + "'");
+      continue;
+    }
+    loader.read(id);
+  }
+  return program;
+}
+
+ast::Program load_text(const std::string& path, const std::string& text,
+                       diag::SourceManager& sources, diag::Diagnostics& diags) {
+  ast::Program program;
+  Loader loader(sources, diags, program);
+  loader.read(sources.add(path, text));
+  return program;
+}
+
+}  // namespace rift::parse

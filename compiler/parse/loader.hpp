@@ -1,0 +1,21 @@
+// Reads the files named on the command line and, transitively, their includes.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ast/program.hpp"
+#include "diag/diagnostics.hpp"
+
+namespace rift::parse {
+
+/// Loads and parses every file and include. Unreadable files, include cycles
+/// and dimension mismatches become diagnostics.
+ast::Program load_program(const std::vector<std::string>& paths, diag::SourceManager& sources,
+                          diag::Diagnostics& diags);
+
+/// Parses in-memory text (tests, fuzzing); includes are resolved on disk.
+ast::Program load_text(const std::string& path, const std::string& text,
+                       diag::SourceManager& sources, diag::Diagnostics& diags);
+
+}  // namespace rift::parse

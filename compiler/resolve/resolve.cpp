@@ -1,0 +1,226 @@
+#include "resolve/resolve.hpp"
+
+#include <set>
+
+namespace rift::resolve {
+
+namespace {
+
+using ast::Expr;
+
+/// What an expression may see: which lets (in order), parameters, and which
+/// node names it may read — and names that exist but may not be read here,
+/// so the message can say why.
+struct Scope {
+  const std::vector<ast::Let>* lets = nullptr;
+  std::size_t visible_lets = 0;
+  const std::vector<ast::Param>* params = nullptr;
+  std::set<std::string> nodes;
+  std::set<std::string> hidden_nodes;
+  std::string hidden_reason;
+  bool constant = false;  // embedding defaults and pack parameters: no names at all
+};
+
+class Resolver {
+ public:
+  Resolver(const Symbols& symbols, diag::Diagnostics& diags) : symbols_(symbols), diags_(diags) {}
+
+  void expr(const Expr& e, const Scope& scope) {
+    auto& m = const_cast<Expr&>(e);  // passes annotate the tree in place
+    switch (e.kind) {
+      case Expr::Kind::Name:
+        name(m, scope);
+        break;
+      case Expr::Kind::Read:
+      case Expr::Kind::Collect:
+        if (scope.constant) {
+          diags_.error(e.loc, "a constant expression cannot read embeddings");
+          return;
+        }
+        node(e.node, e.node_loc, scope);
+        m.embedding = embedding(e.name, e.loc);
+        break;
+      default:
+        break;
+    }
+    for (const auto& a : e.args)
+      expr(*a, scope);
+  }
+
+  const ast::Embedding* embedding(const std::string& name, const diag::Location& loc) {
+    const ast::Embedding* emb = symbols_.embedding(name);
+    if (!emb) diags_.error(loc, "unknown embedding '" + name + "'");
+    return emb;
+  }
+
+  /// Checks that `name` is a node readable in `scope`.
+  bool node(const std::string& name, const diag::Location& loc, const Scope& scope) {
+    if (scope.nodes.count(name)) return true;
+    if (scope.hidden_nodes.count(name)) {
+      diags_.error(loc, "node '" + name + "' " + scope.hidden_reason);
+    } else {
+      diags_.error(loc, "unknown node '" + name + "'");
+    }
+    return false;
+  }
+
+  void lets(const std::vector<ast::Let>& lets, Scope scope) {
+    scope.lets = &lets;
+    for (std::size_t k = 0; k < lets.size(); ++k) {
+      scope.visible_lets = k;
+      expr(*lets[k].value, scope);
+    }
+  }
+
+ private:
+  void name(Expr& e, const Scope& scope) {
+    if (scope.lets) {
+      // The latest visible let of that name wins.
+      for (std::size_t k = scope.visible_lets; k-- > 0;) {
+        const ast::Let& let = (*scope.lets)[k];
+        if (let.name.text == e.name) {
+          e.ref = ast::NameRef::Let;
+          e.let = &let;
+          ++let.uses;
+          return;
+        }
+      }
+    }
+    if (scope.params) {
+      for (const ast::Param& p : *scope.params) {
+        if (p.name.text == e.name) {
+          e.ref = ast::NameRef::RuleParam;
+          e.param = &p;
+          ++p.uses;
+          return;
+        }
+      }
+    }
+    if (scope.constant) {
+      diags_.error(e.loc, "'" + e.name + "' is not a constant; default values must be constant");
+      return;
+    }
+    if (const ast::PackParam* p = symbols_.param(e.name)) {
+      e.ref = ast::NameRef::PackParam;
+      e.pack_param = p;
+      return;
+    }
+    if (scope.nodes.count(e.name) || scope.hidden_nodes.count(e.name)) {
+      diags_.error(e.loc, "node '" + e.name +
+                              "' is not a value; read one of its embeddings, as in '" + e.name +
+                              ".position'");
+      return;
+    }
+    if (scope.lets) {
+      for (std::size_t k = scope.visible_lets; k < scope.lets->size(); ++k) {
+        if ((*scope.lets)[k].name.text == e.name) {
+          diags_.error(e.loc, "'" + e.name + "' is used before its 'let'")
+              .notes.push_back({(*scope.lets)[k].name.loc, "defined here"});
+          return;
+        }
+      }
+    }
+    diags_.error(e.loc, "unknown name '" + e.name + "'");
+  }
+
+  const Symbols& symbols_;
+  diag::Diagnostics& diags_;
+};
+
+std::set<std::string> node_names(const ast::Pattern& p) {
+  std::set<std::string> names;
+  for (const auto& n : p.nodes)
+    names.insert(n.name.text);
+  return names;
+}
+
+void resolve_rule(const ast::Rule& rule, Resolver& r) {
+  Scope before;  // expressions evaluated on the match, before the rewrite
+  before.params = &rule.params;
+  before.nodes = node_names(rule.left);
+  for (const auto& n : rule.right.nodes) {
+    if (!before.nodes.count(n.name.text)) before.hidden_nodes.insert(n.name.text);
+  }
+  before.hidden_reason = "is created by the rule and has no value before the rewrite";
+  r.lets(rule.lets, before);
+  before.lets = &rule.lets;
+  before.visible_lets = rule.lets.size();
+  for (const auto& w : rule.whens)
+    r.expr(*w, before);
+  const std::set<std::string> right = node_names(rule.right);
+  for (const auto& a : rule.right.assigns) {
+    const_cast<ast::Assign&>(a).target = r.embedding(a.embedding.text, a.embedding.loc);
+    r.expr(*a.value, before);
+  }
+  Scope after;  // updates read the rewritten map
+  after.params = &rule.params;
+  after.lets = &rule.lets;
+  after.visible_lets = rule.lets.size();
+  after.nodes = right;
+  for (const auto& n : rule.left.nodes) {
+    if (!right.count(n.name.text)) after.hidden_nodes.insert(n.name.text);
+  }
+  after.hidden_reason = "is deleted by the rule; an update reads the map after the rewrite";
+  for (const auto& u : rule.updates) {
+    const_cast<ast::Assign&>(u).target = r.embedding(u.embedding.text, u.embedding.loc);
+    if (!right.count(u.node.text)) {
+      r.node(u.node.text, u.node.loc, after);
+    }
+    r.expr(*u.value, after);
+  }
+}
+
+}  // namespace
+
+void resolve_names(const ast::Program& program, const Symbols& symbols, diag::Diagnostics& diags) {
+  Resolver r(symbols, diags);
+  Scope constant;
+  constant.constant = true;
+  for (const ast::File& file : program.files) {
+    for (const auto& e : file.embeddings) {
+      if (e.default_value) r.expr(*e.default_value, constant);
+    }
+    for (const auto& p : file.params)
+      r.expr(*p.value, constant);
+    for (const auto& init : file.inits) {
+      r.embedding(init.embedding.text, init.embedding.loc);
+      Scope s;
+      s.nodes.insert(init.dart.text);
+      r.expr(*init.value, s);
+    }
+    for (const auto& rule : file.rules)
+      resolve_rule(rule, r);
+    for (const auto& inter : file.interactions) {
+      Scope s;
+      s.nodes = node_names(inter.pattern);
+      r.lets(inter.lets, s);
+      s.lets = &inter.lets;
+      s.visible_lets = inter.lets.size();
+      for (const auto& w : inter.whens)
+        r.expr(*w, s);
+      for (const auto& f : inter.forces) {
+        const_cast<ast::Assign&>(f).target = r.embedding(f.embedding.text, f.embedding.loc);
+        r.node(f.node.text, f.node.loc, s);
+        r.expr(*f.value, s);
+      }
+      if (inter.energy) r.expr(*inter.energy, s);
+    }
+    for (const auto& crit : file.criteria) {
+      Scope s;
+      s.nodes.insert(crit.dart.text);
+      r.lets(crit.lets, s);
+      s.lets = &crit.lets;
+      s.visible_lets = crit.lets.size();
+      if (crit.measure) r.expr(*crit.measure, s);
+      for (const auto& h : crit.apply_hooks)
+        r.node(h.text, h.loc, s);
+      const ast::Rule* rule = crit.has_apply ? symbols.rule(crit.rule.text) : nullptr;
+      if (crit.has_apply && !rule)
+        diags.error(crit.rule.loc, "unknown rule '" + crit.rule.text + "'");
+      for (const auto& a : crit.apply_args)
+        r.expr(*a.value, s);
+    }
+  }
+}
+
+}  // namespace rift::resolve

@@ -1,0 +1,66 @@
+#include "resolve/symbols.hpp"
+
+namespace rift::resolve {
+
+namespace {
+
+template <class Map>
+auto lookup(const Map& map, std::string_view name) -> typename Map::mapped_type {
+  auto it = map.find(name);
+  return it == map.end() ? nullptr : it->second;
+}
+
+class Collector {
+ public:
+  explicit Collector(diag::Diagnostics& diags) : diags_(diags) {}
+
+  template <class Decl>
+  void add(std::map<std::string, const Decl*, std::less<>>& map, const Decl& decl,
+           const char* what) {
+    const ast::Ident& name = decl.name;
+    auto first = first_.find(name.text);
+    if (first != first_.end()) {
+      diags_.error(name.loc, std::string(what) + " '" + name.text + "' is already declared")
+          .notes.push_back({first->second, "first declared here"});
+      return;
+    }
+    first_.emplace(name.text, name.loc);
+    map.emplace(name.text, &decl);
+  }
+
+ private:
+  diag::Diagnostics& diags_;
+  std::map<std::string, diag::Location, std::less<>> first_;
+};
+
+}  // namespace
+
+const ast::Embedding* Symbols::embedding(std::string_view name) const {
+  return lookup(embeddings, name);
+}
+const ast::PackParam* Symbols::param(std::string_view name) const {
+  return lookup(params, name);
+}
+const ast::Rule* Symbols::rule(std::string_view name) const {
+  return lookup(rules, name);
+}
+
+Symbols collect_symbols(const ast::Program& program, diag::Diagnostics& diags) {
+  Symbols symbols;
+  Collector collector(diags);
+  for (const ast::File& file : program.files) {
+    for (const auto& e : file.embeddings)
+      collector.add(symbols.embeddings, e, "embedding");
+    for (const auto& p : file.params)
+      collector.add(symbols.params, p, "parameter");
+    for (const auto& r : file.rules)
+      collector.add(symbols.rules, r, "rule");
+    for (const auto& i : file.interactions)
+      collector.add(symbols.interactions, i, "interaction");
+    for (const auto& c : file.criteria)
+      collector.add(symbols.criteria, c, "criterion");
+  }
+  return symbols;
+}
+
+}  // namespace rift::resolve

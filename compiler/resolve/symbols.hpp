@@ -1,0 +1,29 @@
+// The pack-level names of a program: embeddings, parameters, rules,
+// interactions and criteria share one namespace.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "ast/program.hpp"
+#include "diag/diagnostics.hpp"
+
+namespace rift::resolve {
+
+struct Symbols {
+  std::map<std::string, const ast::Embedding*, std::less<>> embeddings;
+  std::map<std::string, const ast::PackParam*, std::less<>> params;
+  std::map<std::string, const ast::Rule*, std::less<>> rules;
+  std::map<std::string, const ast::Interaction*, std::less<>> interactions;
+  std::map<std::string, const ast::Criterion*, std::less<>> criteria;
+
+  const ast::Embedding* embedding(std::string_view name) const;
+  const ast::PackParam* param(std::string_view name) const;
+  const ast::Rule* rule(std::string_view name) const;
+};
+
+/// Collects every declaration; a name declared twice is an error with a note
+/// at the first declaration.
+Symbols collect_symbols(const ast::Program& program, diag::Diagnostics& diags);
+
+}  // namespace rift::resolve

@@ -1,0 +1,36 @@
+// The re2c lexer of the rule language (implementation in lexer.re). It tracks
+// line and column itself and hands the parser complete symbols.
+#pragma once
+
+#include <string>
+
+#include "diag/diagnostics.hpp"
+#include "parser.hpp"
+
+namespace rift::grammar {
+
+class Lexer {
+ public:
+  /// `text` must outlive the lexer; the lexer relies on its terminating NUL.
+  Lexer(const std::string& text, int file_id, diag::Diagnostics& diags);
+
+  Parser::symbol_type next();
+
+ private:
+  /// Moves the current position over [token_, cursor_).
+  void advance();
+  diag::Location token_location() const;
+  Parser::symbol_type scan_block_comment();
+  Parser::symbol_type lex_error(const std::string& message);
+
+  const char* cursor_;
+  const char* limit_;
+  const char* marker_ = nullptr;
+  const char* token_ = nullptr;
+  int file_id_;
+  diag::Position pos_;        // position of cursor_
+  diag::Position token_pos_;  // position of token_
+  diag::Diagnostics& diags_;
+};
+
+}  // namespace rift::grammar

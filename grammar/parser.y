@@ -1,0 +1,524 @@
+// Bison grammar of the rift rule language (docs/language.md).
+// Body statements of rules, interactions and criteria may come in any order:
+// their actions write into the declaration held open in ParseContext.
+
+%require "3.8"
+%language "c++"
+%skeleton "lalr1.cc"
+%header
+%define api.namespace {rift::grammar}
+%define api.parser.class {Parser}
+%define api.token.constructor
+%define api.value.type variant
+%define api.value.automove
+%define api.location.type {rift::diag::Location}
+%define parse.error detailed
+%define parse.assert
+%locations
+
+%param {rift::parse::ParseContext& ctx}
+
+%code requires {
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ast/decl.hpp"
+#include "diag/location.hpp"
+#include "parse/context.hpp"
+
+// Locations carry their file id, which Bison's default rule would drop.
+#define YYLLOC_DEFAULT(Current, Rhs, N)                              \
+  do {                                                               \
+    if (N) {                                                         \
+      (Current) = YYRHSLOC(Rhs, 1);                                  \
+      (Current).end = YYRHSLOC(Rhs, N).end;                          \
+    } else {                                                         \
+      (Current) = YYRHSLOC(Rhs, 0);                                  \
+      (Current).begin = (Current).end;                               \
+    }                                                                \
+  } while (false)
+}
+
+%code {
+#include "lexer.hpp"
+
+namespace rift::grammar {
+
+static Parser::symbol_type yylex(parse::ParseContext& ctx) { return ctx.lexer.next(); }
+
+}  // namespace rift::grammar
+
+namespace {
+
+using rift::ast::Expr;
+using rift::ast::ExprPtr;
+using rift::ast::make_expr;
+
+ExprPtr binary(std::string op, ExprPtr a, ExprPtr b, const rift::diag::Location& loc) {
+  ExprPtr e = make_expr(Expr::Kind::Binary, loc);
+  e->op = std::move(op);
+  e->args.push_back(std::move(a));
+  e->args.push_back(std::move(b));
+  return e;
+}
+
+ExprPtr unary(std::string op, ExprPtr a, const rift::diag::Location& loc) {
+  ExprPtr e = make_expr(Expr::Kind::Unary, loc);
+  e->op = std::move(op);
+  e->args.push_back(std::move(a));
+  return e;
+}
+
+ExprPtr call(std::string name, std::vector<ExprPtr> args, const rift::diag::Location& loc) {
+  ExprPtr e = make_expr(Expr::Kind::Call, loc);
+  e->name = std::move(name);
+  e->args = std::move(args);
+  return e;
+}
+
+}  // namespace
+}
+
+%token END 0 "end of file"
+%token <std::string> IDENT "identifier"
+%token <std::int64_t> INT "integer"
+%token <double> REAL "real number"
+%token <std::string> STRING "string"
+
+%token PACK "pack" DIMENSION "dimension" INCLUDE "include" EMBEDDING "embedding" ON "on"
+       MERGE "merge" PARAM "param" INIT "init" RULE "rule" HOOK "hook" LEFT "left"
+       RIGHT "right" WHEN "when" LET "let" UPDATE "update" INTERACTION "interaction"
+       PATTERN "pattern" FORCE "force" ENERGY "energy" CRITERION "criterion"
+       MEASURE "measure" APPLY "apply" AT "at" WITH "with" IF "if" THEN "then" ELSE "else"
+       TRUE "true" FALSE "false" OVER "over" SUM "sum" MEAN "mean" COUNT "count" MIN "min"
+       MAX "max" T_REAL "real" T_INT "int" T_BOOL "bool" T_VEC3 "vec3" T_MAT3 "mat3"
+       AND "and" OR "or" NOT "not"
+
+%token SEMI ";" COLON ":" COMMA "," DOT "." AT_SIGN "@" ASSIGN "=" LBRACE "{" RBRACE "}"
+       LPAREN "(" RPAREN ")" LBRACKET "[" RBRACKET "]" LT "<" GT ">" LE "<=" GE ">="
+       EQ "==" NE "!=" PLUS "+" MINUS "-" STAR "*" SLASH "/" UNDERSCORE "_"
+
+%type <rift::ast::ExprPtr> expr primary node_path
+%type <std::vector<rift::ast::ExprPtr>> args args1
+%type <rift::ast::Label> orbit
+%type <std::vector<int>> orbit_entries
+%type <int> orbit_entry
+%type <rift::ast::Ident> ident arc_chain
+%type <std::vector<rift::ast::Ident>> ident_list
+%type <rift::ast::Type> type
+%type <std::string> collect_op type_call
+%type <rift::ast::Param> param_decl
+%type <std::vector<rift::ast::Param>> params params1
+%type <rift::ast::ExprPtr> opt_default
+%type <std::optional<rift::ast::Ident>> opt_merge
+
+%precedence ELSE
+%left OR
+%left AND
+%nonassoc EQ NE
+%nonassoc LT LE GT GE
+%left PLUS MINUS
+%left STAR SLASH
+%precedence NOT UMINUS
+
+%start file
+
+%%
+
+file
+  : header items
+  ;
+
+header
+  : PACK ident DIMENSION INT SEMI {
+      ctx.file.has_header = true;
+      ctx.file.pack = $2;
+      ctx.file.dimension = static_cast<int>($4);
+      ctx.file.dimension_loc = @4;
+    }
+  | error SEMI
+  ;
+
+items
+  : %empty
+  | items item
+  ;
+
+item
+  : INCLUDE STRING SEMI { ctx.file.includes.push_back(rift::ast::Include{$2, @2}); }
+  | EMBEDDING ident COLON type ON orbit opt_default opt_merge SEMI {
+      rift::ast::Embedding e;
+      e.name = $2;
+      e.type = $4;
+      e.type_loc = @4;
+      e.orbit = $6;
+      e.default_value = $7;
+      e.merge = $8;
+      ctx.file.embeddings.push_back(std::move(e));
+    }
+  | PARAM ident COLON type ASSIGN expr SEMI {
+      ctx.file.params.push_back(rift::ast::PackParam{$2, $4, @4, $6});
+    }
+  | INIT ident LPAREN ident RPAREN ASSIGN expr SEMI {
+      ctx.file.inits.push_back(rift::ast::Init{$2, $4, $7, @$});
+    }
+  | rule
+  | interaction
+  | criterion
+  | error SEMI
+  | error RBRACE
+  ;
+
+opt_default
+  : %empty { $$ = nullptr; }
+  | ASSIGN expr { $$ = $2; }
+  ;
+
+opt_merge
+  : %empty { $$ = std::nullopt; }
+  | MERGE ident { $$ = $2; }
+  | MERGE SUM { $$ = rift::ast::Ident{"sum", @2}; }
+  | MERGE MEAN { $$ = rift::ast::Ident{"mean", @2}; }
+  ;
+
+type
+  : T_REAL { $$ = rift::ast::Type::Real; }
+  | T_INT  { $$ = rift::ast::Type::Int; }
+  | T_BOOL { $$ = rift::ast::Type::Bool; }
+  | T_VEC3 { $$ = rift::ast::Type::Vec3; }
+  | T_MAT3 { $$ = rift::ast::Type::Mat3; }
+  ;
+
+ident
+  : IDENT { $$ = rift::ast::Ident{$1, @1}; }
+  ;
+
+ident_list
+  : ident { $$.push_back($1); }
+  | ident_list COMMA ident { $$ = $1; $$.push_back($3); }
+  ;
+
+orbit
+  : LT orbit_entries GT { $$ = rift::ast::Label{$2, @$}; }
+  | LT GT { $$ = rift::ast::Label{{}, @$}; }
+  ;
+
+orbit_entries
+  : orbit_entry { $$.push_back($1); }
+  | orbit_entries COMMA orbit_entry { $$ = $1; $$.push_back($3); }
+  ;
+
+orbit_entry
+  : INT {
+      // Out-of-range values are kept (clamped to stay an int) for the checker to report.
+      const std::int64_t dim = $1;
+      $$ = dim > 1000 ? 1000 : static_cast<int>(dim);
+    }
+  | UNDERSCORE { $$ = -1; }
+  ;
+
+/* ---- rules ------------------------------------------------------------------ */
+
+rule
+  : RULE ident params {
+      ctx.rule = rift::ast::Rule{};
+      ctx.rule.name = $2;
+      ctx.rule.params = $3;
+      ctx.lets = &ctx.rule.lets;
+      ctx.whens = &ctx.rule.whens;
+    }
+    LBRACE rule_stmts RBRACE {
+      ctx.file.rules.push_back(std::move(ctx.rule));
+      ctx.lets = nullptr;
+      ctx.whens = nullptr;
+    }
+  ;
+
+params
+  : %empty { }
+  | LPAREN RPAREN { }
+  | LPAREN params1 RPAREN { $$ = $2; }
+  ;
+
+params1
+  : param_decl { $$.push_back($1); }
+  | params1 COMMA param_decl { $$ = $1; $$.push_back($3); }
+  ;
+
+param_decl
+  : ident COLON type { $$ = rift::ast::Param{$1, $3, @3}; }
+  ;
+
+rule_stmts
+  : %empty
+  | rule_stmts rule_stmt
+  ;
+
+rule_stmt
+  : HOOK ident_list SEMI {
+      std::vector<rift::ast::Ident> hooks = $2;
+      for (auto& h : hooks) ctx.rule.hooks.push_back(h);
+      ctx.rule.hook_loc = @1;
+    }
+  | LEFT { ctx.pattern = &ctx.rule.left; ctx.pattern->present = true; ctx.pattern->loc = @1; }
+    LBRACE pattern_stmts RBRACE
+  | RIGHT { ctx.pattern = &ctx.rule.right; ctx.pattern->present = true; ctx.pattern->loc = @1; }
+    LBRACE pattern_stmts RBRACE
+  | UPDATE ident DOT ident ASSIGN expr SEMI {
+      ctx.rule.updates.push_back(rift::ast::Assign{$2, $4, $6, @$});
+    }
+  | body_stmt
+  | error SEMI
+  ;
+
+/* let and when: shared by rules, interactions and criteria */
+body_stmt
+  : LET ident ASSIGN expr SEMI {
+      if (ctx.lets) ctx.lets->push_back(rift::ast::Let{$2, $4});
+    }
+  | WHEN expr SEMI {
+      if (ctx.whens) {
+        ctx.whens->push_back($2);
+      } else {
+        ctx.diags.error(@1, "'when' is not allowed here; a criterion states its condition with 'measure'");
+      }
+    }
+  ;
+
+pattern_stmts
+  : %empty
+  | pattern_stmts pattern_stmt
+  ;
+
+pattern_stmt
+  : ident COLON orbit SEMI {
+      ctx.pattern->nodes.push_back(rift::ast::NodeDecl{$1, $3});
+    }
+  | arc_chain SEMI
+  | ident DOT ident ASSIGN expr SEMI {
+      ctx.pattern->assigns.push_back(rift::ast::Assign{$1, $3, $5, @$});
+    }
+  | error SEMI
+  ;
+
+arc_chain
+  : ident MINUS INT MINUS ident {
+      const std::int64_t dim = $3;
+      rift::ast::Arc arc{$1, $5, static_cast<int>(dim > 1000 ? 1000 : dim), @3, @$};
+      ctx.pattern->arcs.push_back(arc);
+      $$ = arc.b;
+    }
+  | arc_chain MINUS INT MINUS ident {
+      rift::ast::Ident from = $1;
+      const std::int64_t dim = $3;
+      rift::ast::Arc arc{from, $5, static_cast<int>(dim > 1000 ? 1000 : dim), @3,
+                         rift::diag::span(from.loc, @5)};
+      ctx.pattern->arcs.push_back(arc);
+      $$ = arc.b;
+    }
+  ;
+
+/* ---- interactions ------------------------------------------------------------ */
+
+interaction
+  : INTERACTION ident ON orbit {
+      ctx.interaction = rift::ast::Interaction{};
+      ctx.interaction.name = $2;
+      ctx.interaction.support = $4;
+      ctx.lets = &ctx.interaction.lets;
+      ctx.whens = &ctx.interaction.whens;
+    }
+    LBRACE interaction_stmts RBRACE {
+      ctx.file.interactions.push_back(std::move(ctx.interaction));
+      ctx.lets = nullptr;
+      ctx.whens = nullptr;
+    }
+  ;
+
+interaction_stmts
+  : %empty
+  | interaction_stmts interaction_stmt
+  ;
+
+interaction_stmt
+  : PATTERN {
+      ctx.pattern = &ctx.interaction.pattern;
+      ctx.pattern->present = true;
+      ctx.pattern->loc = @1;
+    }
+    LBRACE pattern_stmts RBRACE
+  | FORCE ident DOT ident ASSIGN expr SEMI {
+      ctx.interaction.forces.push_back(rift::ast::Assign{$2, $4, $6, @$});
+    }
+  | ENERGY expr SEMI {
+      if (ctx.interaction.energy) ctx.diags.error(@1, "the interaction already has an energy");
+      ctx.interaction.energy = $2;
+    }
+  | body_stmt
+  | error SEMI
+  ;
+
+/* ---- criteria ----------------------------------------------------------------- */
+
+criterion
+  : CRITERION ident ON orbit LPAREN ident RPAREN {
+      ctx.criterion = rift::ast::Criterion{};
+      ctx.criterion.name = $2;
+      ctx.criterion.orbit = $4;
+      ctx.criterion.dart = $6;
+      ctx.lets = &ctx.criterion.lets;
+      ctx.whens = nullptr;
+    }
+    LBRACE criterion_stmts RBRACE {
+      ctx.file.criteria.push_back(std::move(ctx.criterion));
+      ctx.lets = nullptr;
+    }
+  ;
+
+criterion_stmts
+  : %empty
+  | criterion_stmts criterion_stmt
+  ;
+
+criterion_stmt
+  : MEASURE expr SEMI {
+      if (ctx.criterion.measure) ctx.diags.error(@1, "the criterion already has a measure");
+      ctx.criterion.measure = $2;
+    }
+  | APPLY ident AT ident_list apply_with SEMI {
+      if (ctx.criterion.has_apply) ctx.diags.error(@1, "the criterion already applies a rule");
+      ctx.criterion.has_apply = true;
+      ctx.criterion.rule = $2;
+      ctx.criterion.apply_hooks = $4;
+      ctx.criterion.apply_loc = @$;
+    }
+  | body_stmt
+  | error SEMI
+  ;
+
+apply_with
+  : %empty
+  | WITH apply_args
+  ;
+
+apply_args
+  : apply_arg
+  | apply_args COMMA apply_arg
+  ;
+
+apply_arg
+  : ident ASSIGN expr { ctx.criterion.apply_args.push_back(rift::ast::ApplyArg{$1, $3}); }
+  ;
+
+/* ---- expressions ----------------------------------------------------------------- */
+
+expr
+  : primary { $$ = $1; }
+  | MINUS expr %prec UMINUS { $$ = unary("-", $2, @$); }
+  | NOT expr { $$ = unary("not", $2, @$); }
+  | expr PLUS expr { $$ = binary("+", $1, $3, @2); }
+  | expr MINUS expr { $$ = binary("-", $1, $3, @2); }
+  | expr STAR expr { $$ = binary("*", $1, $3, @2); }
+  | expr SLASH expr { $$ = binary("/", $1, $3, @2); }
+  | expr LT expr { $$ = binary("<", $1, $3, @2); }
+  | expr LE expr { $$ = binary("<=", $1, $3, @2); }
+  | expr GT expr { $$ = binary(">", $1, $3, @2); }
+  | expr GE expr { $$ = binary(">=", $1, $3, @2); }
+  | expr EQ expr { $$ = binary("==", $1, $3, @2); }
+  | expr NE expr { $$ = binary("!=", $1, $3, @2); }
+  | expr AND expr { $$ = binary("and", $1, $3, @2); }
+  | expr OR expr { $$ = binary("or", $1, $3, @2); }
+  | IF expr THEN expr ELSE expr {
+      ExprPtr e = make_expr(Expr::Kind::Cond, @1);
+      e->args.push_back($2);
+      e->args.push_back($4);
+      e->args.push_back($6);
+      $$ = std::move(e);
+    }
+  ;
+
+primary
+  : INT { $$ = make_expr(Expr::Kind::IntLit, @$); $$->integer = $1; }
+  | REAL { $$ = make_expr(Expr::Kind::RealLit, @$); $$->real = $1; }
+  | TRUE { $$ = make_expr(Expr::Kind::BoolLit, @$); $$->boolean = true; }
+  | FALSE { $$ = make_expr(Expr::Kind::BoolLit, @$); $$->boolean = false; }
+  | IDENT { $$ = make_expr(Expr::Kind::Name, @$); $$->name = $1; }
+  | IDENT LPAREN args RPAREN { $$ = call($1, $3, @1); }
+  | type_call LPAREN args RPAREN { $$ = call($1, $3, @1); }
+  | LPAREN expr RPAREN { $$ = $2; }
+  | node_path DOT IDENT {
+      $$ = $1;
+      $$->name = $3;
+      $$->loc = @$;
+    }
+  | collect_op IDENT OVER orbit LPAREN node_path RPAREN {
+      ExprPtr path = $6;
+      $$ = make_expr(Expr::Kind::Collect, @$);
+      $$->op = $1;
+      $$->name = $2;
+      $$->orbit = $4;
+      $$->node = path->node;
+      $$->node_loc = path->node_loc;
+      $$->hops = path->hops;
+    }
+  | primary LBRACKET expr RBRACKET {
+      $$ = make_expr(Expr::Kind::Index, @2);
+      $$->args.push_back($1);
+      $$->args.push_back($3);
+    }
+  | primary LBRACKET expr COMMA expr RBRACKET {
+      $$ = make_expr(Expr::Kind::Index, @2);
+      $$->args.push_back($1);
+      $$->args.push_back($3);
+      $$->args.push_back($5);
+    }
+  ;
+
+/* `min` / `max` are both functions of two values and orbit collections. */
+type_call
+  : T_REAL { $$ = "real"; }
+  | T_INT { $$ = "int"; }
+  | T_VEC3 { $$ = "vec3"; }
+  | T_MAT3 { $$ = "mat3"; }
+  | MIN { $$ = "min"; }
+  | MAX { $$ = "max"; }
+  ;
+
+collect_op
+  : SUM { $$ = "sum"; }
+  | MEAN { $$ = "mean"; }
+  | COUNT { $$ = "count"; }
+  | MIN { $$ = "min"; }
+  | MAX { $$ = "max"; }
+  ;
+
+node_path
+  : IDENT {
+      $$ = make_expr(Expr::Kind::Read, @$);
+      $$->node = $1;
+      $$->node_loc = @1;
+    }
+  | node_path AT_SIGN INT {
+      $$ = $1;
+      const std::int64_t dim = $3;
+      $$->hops.push_back(static_cast<int>(dim > 1000 ? 1000 : dim));
+    }
+  ;
+
+args
+  : %empty { }
+  | args1 { $$ = $1; }
+  ;
+
+args1
+  : expr { $$.push_back($1); }
+  | args1 COMMA expr { $$ = $1; $$.push_back($3); }
+  ;
+
+%%
+
+void rift::grammar::Parser::error(const location_type& loc, const std::string& message) {
+  ctx.diags.error(loc, message);
+}
