@@ -102,6 +102,8 @@ Token TextCursor::take_line() {
   std::string_view line = text_.substr(start, pos_ - start);
   while (!line.empty() && is_blank(line.back()))
     line.remove_suffix(1);
+  while (!line.empty() && is_blank(line.front()))
+    line.remove_prefix(1);
   last_line_ = line_;
   const Token t{line, line_};
   if (pos_ < text_.size()) {

@@ -1,0 +1,375 @@
+// Gmsh .msh in its three ASCII dialects. v1 and v2.2 share the node layout
+// ("tag x y z" per line) and differ in the element header; v4.1 groups nodes
+// and elements in entity blocks. Node tags are arbitrary ids (sparse, any
+// order), so they are mapped to 0-based indices as they are read.
+#include <array>
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "rift/io/element_collector.hpp"
+#include "rift/io/readers.hpp"
+#include "rift/io/text_cursor.hpp"
+
+namespace rift::io {
+
+namespace {
+
+struct GmshType {
+  int nodes;         // 0: unknown or unsupported
+  bool lower;        // a line or point: ignored
+  ElementType type;  // when !lower
+  const char* name;
+};
+
+GmshType gmsh_type(std::int64_t code) {
+  switch (code) {
+    case 1:
+      return {2, true, ElementType::Polygon, "line"};
+    case 15:
+      return {1, true, ElementType::Polygon, "point"};
+    case 2:
+      return {3, false, ElementType::Polygon, "triangle"};
+    case 3:
+      return {4, false, ElementType::Polygon, "quadrangle"};
+    case 4:
+      return {4, false, ElementType::Tetra, "tetrahedron"};
+    case 5:
+      return {8, false, ElementType::Hexa, "hexahedron"};
+    case 6:
+      return {6, false, ElementType::Wedge, "prism"};
+    case 7:
+      return {5, false, ElementType::Pyramid, "pyramid"};
+    default:
+      return {0, false, ElementType::Polygon, nullptr};
+  }
+}
+
+enum class Dialect { kV1, kV2, kV4 };
+
+class GmshReader {
+ public:
+  GmshReader(const std::string& source, std::string_view text) : in_(source, text) {
+    mesh_.source = source;
+  }
+
+  MeshData read() {
+    const Token first = in_.peek();
+    if (first.text == "$NOD") {
+      dialect_ = Dialect::kV1;
+    } else if (first.text == "$MeshFormat") {
+      read_format(in_.next());
+    } else {
+      in_.fail(first.line,
+               "not a Gmsh file: expected $MeshFormat or $NOD, found " + quoted(first.text));
+    }
+    while (!in_.at_end()) {
+      const Token header = in_.next();
+      if (header.text.empty() || header.text.front() != '$') {
+        in_.fail(header.line,
+                 "expected a section such as $Nodes or $Elements, found " + quoted(header.text));
+      }
+      const bool v1 = dialect_ == Dialect::kV1;
+      if (header.text == (v1 ? "$NOD" : "$Nodes")) {
+        saw_nodes_ = true;
+        dialect_ == Dialect::kV4 ? read_nodes_v4(header) : read_nodes_v12(header);
+      } else if (header.text == (v1 ? "$ELM" : "$Elements")) {
+        dialect_ == Dialect::kV4 ? read_elements_v4(header) : read_elements_v12(header);
+      } else {
+        skip_section(header);
+      }
+    }
+    if (!saw_nodes_)
+      in_.fail(0, "the file has no " + std::string(dialect_ == Dialect::kV1 ? "$NOD" : "$Nodes") +
+                      " section");
+    elements_.finish(mesh_, elements_line_);
+    return std::move(mesh_);
+  }
+
+ private:
+  void read_format(const Token& header) {
+    const Token version = in_.expect("the Gmsh format version");
+    const std::int64_t file_type = in_.integer("the file type (0 for ASCII)");
+    in_.integer("the data size");
+    if (file_type == 1) {
+      in_.fail(version.line, "binary Gmsh files are not supported; save the mesh as ASCII");
+    }
+    if (file_type != 0)
+      in_.fail(version.line, "unknown Gmsh file type " + std::to_string(file_type));
+    const double v = in_.to_real(version, "the Gmsh format version");
+    if (v >= 2.0 && v < 3.0) {
+      dialect_ = Dialect::kV2;
+    } else if (version.text == "4.1") {
+      dialect_ = Dialect::kV4;
+    } else {
+      in_.fail(version.line, "unsupported Gmsh format version " + std::string(version.text) +
+                                 " (rift reads 1, 2.x and 4.1 ASCII)");
+    }
+    const Token end = in_.next();
+    if (end.text != "$EndMeshFormat") {
+      in_.fail(end.line, "expected $EndMeshFormat after the format line (line " +
+                             std::to_string(header.line + 1) + "), found " + quoted(end.text));
+    }
+  }
+
+  std::string end_of(const Token& header) const {
+    const std::string_view name = header.text.substr(1);
+    return (dialect_ == Dialect::kV1 ? "$END" : "$End") + std::string(name);
+  }
+
+  void skip_section(const Token& header) {
+    const std::string end = end_of(header);
+    for (Token t = in_.next(); t.text != end; t = in_.next()) {
+      if (t.empty()) {
+        in_.fail(t.line, "unexpected end of file: section " + std::string(header.text) + " (line " +
+                             std::to_string(header.line) + ") has no " + end);
+      }
+    }
+  }
+
+  // The first token of entry `done` (0-based) of `announced`, with the two ways
+  // a count can lie: the file ends, or the section ends early.
+  Token entry(const Token& header, std::size_t done, std::size_t announced, const char* noun) {
+    const Token t = in_.next();
+    if (t.empty()) {
+      in_.fail(t.line, "unexpected end of file in " + std::string(header.text) + ": " +
+                           std::to_string(done) + " of the " + std::to_string(announced) +
+                           " announced " + noun + " were read");
+    }
+    if (t.text.front() == '$') {
+      in_.fail(t.line, "section " + std::string(header.text) + " announces " +
+                           std::to_string(announced) + " " + noun + " but holds " +
+                           std::to_string(done));
+    }
+    return t;
+  }
+
+  // A further field of the entry that started on `line`: entries are one line each.
+  Token field(int line, const std::string& what) {
+    const Token t = in_.next_on_line();
+    if (t.empty()) in_.fail(line, "line ends early, expected " + what);
+    return t;
+  }
+
+  void end_of_entry(int line) {
+    const Token extra = in_.next_on_line();
+    if (!extra.empty())
+      in_.fail(line, "unexpected " + quoted(extra.text) + " at the end of the line");
+  }
+
+  void expect_end(const Token& header, std::size_t announced, std::size_t done, const char* noun) {
+    const std::string end = end_of(header);
+    const Token t = in_.next();
+    if (t.text == end) return;
+    if (t.empty()) {
+      in_.fail(t.line, "unexpected end of file: section " + std::string(header.text) + " (line " +
+                           std::to_string(header.line) + ") has no " + end);
+    }
+    if (t.text.front() == '$') in_.fail(t.line, "expected " + end + ", found " + quoted(t.text));
+    in_.fail(t.line, "section " + std::string(header.text) + " holds more than the " +
+                         std::to_string(announced) + " " + noun + " it announces (" +
+                         std::to_string(done) + " expected, then " + end + ")");
+  }
+
+  void add_node(const Token& tag_token, const Vec3& p) {
+    const std::int64_t tag = in_.to_integer(tag_token, "a node tag");
+    const auto [it, inserted] =
+        node_index_.emplace(tag, static_cast<std::uint32_t>(mesh_.points.size()));
+    if (!inserted) in_.fail(tag_token.line, "node " + std::to_string(tag) + " is defined twice");
+    mesh_.points.push_back(p);
+  }
+
+  Vec3 coordinates(int line, std::int64_t node) {
+    Vec3 p;
+    static constexpr const char* kAxis[] = {"x", "y", "z"};
+    for (int c = 0; c < 3; ++c) {
+      const std::string what =
+          std::string("the ") + kAxis[c] + " coordinate of node " + std::to_string(node);
+      p[c] = in_.to_real(field(line, what), what);
+    }
+    return p;
+  }
+
+  void read_nodes_v12(const Token& header) {
+    const std::size_t n = in_.count("the number of nodes");
+    mesh_.points.reserve(in_.reserve_limit(n));
+    for (std::size_t k = 0; k < n; ++k) {
+      const Token tag = entry(header, k, n, "nodes");
+      const Vec3 p = coordinates(tag.line, in_.to_integer(tag, "a node tag"));
+      end_of_entry(tag.line);
+      add_node(tag, p);
+    }
+    expect_end(header, n, n, "nodes");
+  }
+
+  void read_nodes_v4(const Token& header) {
+    const std::size_t blocks = in_.count("the number of node blocks");
+    const std::size_t n = in_.count("the number of nodes");
+    in_.integer("the smallest node tag");
+    in_.integer("the largest node tag");
+    mesh_.points.reserve(in_.reserve_limit(n));
+    std::size_t done = 0;
+    std::vector<Token> tags;
+    for (std::size_t b = 0; b < blocks; ++b) {
+      const Token dim_token = entry(header, b, blocks, "node blocks");
+      const std::int64_t entity_dim = in_.to_integer(dim_token, "an entity dimension");
+      in_.to_integer(field(dim_token.line, "an entity tag"), "an entity tag");
+      const std::int64_t parametric =
+          in_.to_integer(field(dim_token.line, "the parametric flag"), "the parametric flag");
+      const std::size_t in_block =
+          in_.to_count(field(dim_token.line, "the number of nodes"), "the number of nodes");
+      end_of_entry(dim_token.line);
+      if (done + in_block > n) {
+        in_.fail(dim_token.line, "section $Nodes announces " + std::to_string(n) +
+                                     " nodes but its blocks hold more");
+      }
+      tags.clear();
+      for (std::size_t k = 0; k < in_block; ++k) {
+        tags.push_back(entry(header, done + k, n, "nodes"));
+        end_of_entry(tags.back().line);
+      }
+      // Parametric nodes carry entity_dim extra coordinates (u, v, w) that a
+      // mesh does not need.
+      const std::int64_t extra = parametric != 0 ? entity_dim : 0;
+      for (const Token& tag : tags) {
+        const Token x = entry(header, done, n, "nodes");
+        const std::int64_t id = in_.to_integer(tag, "a node tag");
+        Vec3 p;
+        p[0] = in_.to_real(x, "the x coordinate of node " + std::to_string(id));
+        for (int c = 1; c < 3; ++c) {
+          const std::string what = std::string("the ") + (c == 1 ? "y" : "z") +
+                                   " coordinate of node " + std::to_string(id);
+          p[c] = in_.to_real(field(x.line, what), what);
+        }
+        for (std::int64_t e = 0; e < extra; ++e)
+          in_.to_real(field(x.line, "a parametric coordinate"), "a parametric coordinate");
+        end_of_entry(x.line);
+        add_node(tag, p);
+        ++done;
+      }
+    }
+    if (done != n) {
+      in_.fail(header.line + 1, "section $Nodes announces " + std::to_string(n) +
+                                    " nodes but its blocks hold " + std::to_string(done));
+    }
+    expect_end(header, blocks, blocks, "node blocks");
+  }
+
+  std::uint32_t node(const Token& t, std::int64_t element) {
+    const std::int64_t tag = in_.to_integer(t, "a node tag");
+    const auto it = node_index_.find(tag);
+    if (it == node_index_.end()) {
+      in_.fail(t.line, "element " + std::to_string(element) + " refers to node " +
+                           std::to_string(tag) + ", which is not defined");
+    }
+    return it->second;
+  }
+
+  GmshType element_type(const Token& t) {
+    const std::int64_t code = in_.to_integer(t, "an element type");
+    const GmshType type = gmsh_type(code);
+    if (type.nodes == 0) {
+      in_.fail(t.line, "unknown or unsupported element type " + std::to_string(code) +
+                           " (rift reads Gmsh types 1, 2, 3, 4, 5, 6, 7 and 15: linear elements)");
+    }
+    return type;
+  }
+
+  // Reads the element's node tags (the rest of its line) and keeps it.
+  void read_element_nodes(const GmshType& type, std::int64_t id, int line) {
+    std::array<std::uint32_t, 8> v{};
+    for (int k = 0; k < type.nodes; ++k) {
+      const std::string what = "node " + std::to_string(k + 1) + " of " + type.name + " " +
+                               std::to_string(id) + " (" + std::to_string(type.nodes) + " nodes)";
+      v[static_cast<std::size_t>(k)] = node(field(line, what), id);
+    }
+    end_of_entry(line);
+    if (type.lower) {
+      elements_.ignore_lower_dimensional();
+      return;
+    }
+    if (type.type == ElementType::Wedge) {
+      // Gmsh's prism has its first triangle's normal pointing into the
+      // element, VTK's wedge (our convention) out of it: reverse both triangles.
+      v = {v[0], v[2], v[1], v[3], v[5], v[4], 0, 0};
+    }
+    elements_.add(type.type, std::span(v.data(), static_cast<std::size_t>(type.nodes)), line);
+  }
+
+  void read_elements_v12(const Token& header) {
+    elements_line_ = header.line;
+    const std::size_t n = in_.count("the number of elements");
+    for (std::size_t k = 0; k < n; ++k) {
+      const Token number = entry(header, k, n, "elements");
+      const std::int64_t id = in_.to_integer(number, "an element number");
+      const GmshType type = element_type(field(number.line, "an element type"));
+      if (dialect_ == Dialect::kV1) {
+        in_.to_integer(field(number.line, "a physical region"), "a physical region");
+        in_.to_integer(field(number.line, "an elementary region"), "an elementary region");
+        const Token count = field(number.line, "the number of nodes");
+        const std::size_t nodes = in_.to_count(count, "the number of nodes");
+        if (nodes != static_cast<std::size_t>(type.nodes)) {
+          in_.fail(count.line, std::string(type.name) + " " + std::to_string(id) + " has " +
+                                   std::to_string(nodes) + " nodes, expected " +
+                                   std::to_string(type.nodes));
+        }
+      } else {
+        const std::size_t tags =
+            in_.to_count(field(number.line, "the number of tags"), "the number of tags");
+        for (std::size_t t = 0; t < tags; ++t)
+          in_.to_integer(field(number.line, "a tag"), "a tag");
+      }
+      read_element_nodes(type, id, number.line);
+    }
+    expect_end(header, n, n, "elements");
+  }
+
+  void read_elements_v4(const Token& header) {
+    elements_line_ = header.line;
+    const std::size_t blocks = in_.count("the number of element blocks");
+    const std::size_t n = in_.count("the number of elements");
+    in_.integer("the smallest element tag");
+    in_.integer("the largest element tag");
+    std::size_t done = 0;
+    for (std::size_t b = 0; b < blocks; ++b) {
+      const Token dim_token = entry(header, b, blocks, "element blocks");
+      in_.to_integer(dim_token, "an entity dimension");
+      in_.to_integer(field(dim_token.line, "an entity tag"), "an entity tag");
+      const GmshType type = element_type(field(dim_token.line, "an element type"));
+      const std::size_t in_block =
+          in_.to_count(field(dim_token.line, "the number of elements"), "the number of elements");
+      end_of_entry(dim_token.line);
+      if (done + in_block > n) {
+        in_.fail(dim_token.line, "section $Elements announces " + std::to_string(n) +
+                                     " elements but its blocks hold more");
+      }
+      for (std::size_t k = 0; k < in_block; ++k) {
+        const Token tag = entry(header, done, n, "elements");
+        read_element_nodes(type, in_.to_integer(tag, "an element tag"), tag.line);
+        ++done;
+      }
+    }
+    if (done != n) {
+      in_.fail(header.line + 1, "section $Elements announces " + std::to_string(n) +
+                                    " elements but its blocks hold " + std::to_string(done));
+    }
+    expect_end(header, blocks, blocks, "element blocks");
+  }
+
+  TextCursor in_;
+  Dialect dialect_ = Dialect::kV2;
+  MeshData mesh_;
+  ElementCollector elements_;
+  std::unordered_map<std::int64_t, std::uint32_t> node_index_;
+  int elements_line_ = 0;
+  bool saw_nodes_ = false;
+};
+
+}  // namespace
+
+MeshData read_gmsh(const std::string& source, std::string_view text) {
+  return GmshReader(source, text).read();
+}
+
+}  // namespace rift::io

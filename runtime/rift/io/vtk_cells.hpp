@@ -1,0 +1,26 @@
+// VTK cell types, shared by the legacy .vtk and the XML .vtu readers: which
+// types make a map, which are ignored, and the reorderings VTK needs.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#include "rift/io/element_collector.hpp"
+#include "rift/io/text_cursor.hpp"
+
+namespace rift::io {
+
+/// A 0-based VTK point id, checked against the number of points. `cell` is
+/// 0-based and only used in the message.
+std::uint32_t vtk_point_id(const TextCursor& in, Token id, std::size_t points, std::size_t cell);
+
+/// Adds cell `cell` (0-based) of VTK type `type` (read from `type_token`) with
+/// the given point ids. Vertices, poly-vertices, lines and poly-lines are
+/// ignored; triangle strips become triangles; pixels and voxels are reordered to
+/// quads and hexahedra. Any other type, or a point count that does not fit the
+/// type, is an error at `line` (the cell's line) or at the type's line.
+void add_vtk_cell(const TextCursor& in, ElementCollector& out, Token type_token,
+                  std::span<const std::uint32_t> ids, int line, std::size_t cell);
+
+}  // namespace rift::io
