@@ -139,6 +139,11 @@ class GMap {
   std::size_t orbit_size(Dart d, Orbit o) const;
   bool in_same_orbit(Dart a, Dart b, Orbit o) const;
 
+  /// Calls f(x) with one dart x of each distinct sub-orbit <sub>(x) inside
+  /// <o>(d), e.g. each corner <1> of the vertex <1,2>(d).
+  template <class F>
+  void for_each_sub_orbit(Dart d, Orbit o, Orbit sub, F&& f) const;
+
   /// Calls f(d) with one dart of each orbit <o> of the map.
   template <class F>
   void for_each_cell(Orbit o, F&& f) const;
@@ -268,6 +273,22 @@ void GMap::for_each_in_orbit(Dart d, Orbit o, F&& f) const {
   for (std::size_t k = 0; k < count; ++k)
     f(visited[k]);
   release_scratch();
+}
+
+template <class F>
+void GMap::for_each_sub_orbit(Dart d, Orbit o, Orbit sub, F&& f) const {
+  const Mark m = reserve_mark();
+  for_each_in_orbit(d, o, [&](Dart x) {
+    if (is_marked(x, m)) return;
+    mark_orbit(x, sub, m);
+    f(x);
+  });
+  // Every dart of a sub-orbit lies in <o>(d) when sub is contained in o;
+  // otherwise marks may spill outside, so clear by sweeping what was marked.
+  if ((sub.mask() & ~o.mask()) == 0) {
+    for_each_in_orbit(d, o, [&](Dart x) { unmark(x, m); });
+  }
+  free_mark(m);
 }
 
 template <class F>

@@ -1,0 +1,42 @@
+// The mass model of §3.3: each element's mass is split among its corners
+// (corner_mass on <1> in 2D, <1,2> in 3D); a vertex's mass is the sum of the
+// corner masses of its vertex orbit and is recomputed only where a rewrite
+// touched the map.
+#pragma once
+
+#include <span>
+
+#include "rift/gmap/gmap.hpp"
+
+namespace rift {
+
+/// <1> in 2D, <1,2> in 3D: the corner of one element at one vertex.
+inline Orbit corner_orbit(int dimension) {
+  return Orbit::all(dimension - 1).without(0);
+}
+/// <0,1> in 2D, <0,1,2> in 3D.
+inline Orbit element_orbit(int dimension) {
+  return Orbit::all(dimension - 1);
+}
+
+/// Area of a polygon (2D map) or volume of a solid (3D map) of the element
+/// containing dart `element`, from the vertex positions. Solids are measured
+/// as a fan of tetrahedra from their centroid (exact for star-shaped elements).
+Real element_measure(const GMap& map, Dart element, const Embedding<Vec3>& position);
+
+/// Sets corner_mass so that each element gets `density * measure`, split
+/// equally among its corners. Returns the total mass.
+Real assign_corner_masses_by_density(GMap& map, Real density, Embedding<Real>& corner_mass,
+                                     const Embedding<Vec3>& position);
+
+/// Same, with the density chosen so that the whole map weighs `total_mass`.
+Real assign_corner_masses_by_total(GMap& map, Real total_mass, Embedding<Real>& corner_mass,
+                                   const Embedding<Vec3>& position);
+
+/// vertex_mass(v) = sum of corner_mass over the distinct corners of v.
+void update_vertex_mass(const GMap& map, Dart vertex, const Embedding<Real>& corner_mass,
+                        Embedding<Real>& vertex_mass);
+void update_all_vertex_masses(const GMap& map, const Embedding<Real>& corner_mass,
+                              Embedding<Real>& vertex_mass);
+
+}  // namespace rift

@@ -1,0 +1,161 @@
+#include "rift/sim/simulation.hpp"
+
+#include <stdexcept>
+
+#include "rift/sim/mass_model.hpp"
+
+namespace rift {
+
+namespace names = embedding_names;
+
+namespace {
+
+template <class T>
+Embedding<T> find_or_add(GMap& map, const char* name, Orbit orbit, MergePolicy policy,
+                         T default_value) {
+  if (Embedding<T> e = map.embedding<T>(name)) {
+    if (e.orbit() != orbit) {
+      throw std::invalid_argument(std::string("embedding '") + name + "' must live on " +
+                                  orbit.str() + ", not " + e.orbit().str());
+    }
+    return e;
+  }
+  return map.add_embedding<T>(name, orbit, policy, default_value);
+}
+
+}  // namespace
+
+Simulation::Simulation(GMap map, SimulationSettings settings)
+    : map_(std::move(map)), settings_(settings), integrator_(settings.integrator) {
+  if (!(settings_.dt > 0)) throw std::invalid_argument("the time step dt must be positive");
+  const int n = map_.dimension();
+  const Orbit vertex = Orbit::cell(0, n);
+  position_ = map_.embedding<Vec3>(names::kPosition);
+  if (!position_) throw std::invalid_argument("the map has no 'position' embedding");
+  velocity_ = find_or_add<Vec3>(map_, names::kVelocity, vertex, MergePolicy::kMean, Vec3::Zero());
+  vertex_mass_ = find_or_add<Real>(map_, names::kVertexMass, vertex, MergePolicy::kSum, 0.0);
+  corner_mass_ =
+      find_or_add<Real>(map_, names::kCornerMass, corner_orbit(n), MergePolicy::kKeepFirst, 0.0);
+  pinned_ = find_or_add<Bool>(map_, names::kPinned, vertex, MergePolicy::kSum, Bool(false));
+}
+
+void Simulation::add_force_model(std::unique_ptr<ForceModel> model) {
+  if (initialised_) throw std::logic_error("add_force_model after initialise");
+  models_.push_back(std::move(model));
+}
+
+void Simulation::set_total_mass(Real total_mass) {
+  if (!(total_mass > 0)) throw std::invalid_argument("the total mass must be positive");
+  assign_corner_masses_by_total(map_, total_mass, corner_mass_, position_);
+}
+
+void Simulation::set_density(Real density) {
+  if (!(density > 0)) throw std::invalid_argument("the density must be positive");
+  assign_corner_masses_by_density(map_, density, corner_mass_, position_);
+}
+
+void Simulation::initialise() {
+  update_all_vertex_masses(map_, corner_mass_, vertex_mass_);
+  for (auto& model : models_)
+    model->initialise(map_);
+  refresh_inverse_masses();
+  initialised_ = true;
+}
+
+void Simulation::refresh_inverse_masses() {
+  const OrbitAttachment& att = position_.attachment();
+  const std::size_t slots = att.slot_capacity();
+  inverse_mass_.assign(slots, 0);
+  const auto& mass = vertex_mass_.values();
+  const auto& pinned = pinned_.values();
+  for (Slot s = 0; s < slots; ++s) {
+    if (att.slot_alive(s) && !pinned[s] && mass[s] > 0) inverse_mass_[s] = 1 / mass[s];
+  }
+  // Pinned vertices never move.
+  auto& v = velocity_.values();
+  for (Slot s = 0; s < slots; ++s) {
+    if (inverse_mass_[s] == 0) v[s] = Vec3::Zero();
+  }
+}
+
+void Simulation::accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                               std::vector<Vec3>& a, bool store) {
+  const std::size_t n = x.size();
+  forces_.assign(n, Vec3::Zero());
+  const ForceInput in{x.data(), v.data()};
+  for (auto& model : models_)
+    model->add_forces(in, forces_.data(), store);
+  a.resize(n);
+  const Vec3 g = settings_.gravity;
+  for (std::size_t s = 0; s < n; ++s) {
+    const Real w = inverse_mass_[s];
+    a[s] = w > 0 ? Vec3(forces_[s] * w + g) : Vec3::Zero();
+  }
+}
+
+void Simulation::step() {
+  if (!initialised_) initialise();
+  std::vector<Vec3>& x = position_.values();
+  std::vector<Vec3>& v = velocity_.values();
+  // Forces at the current state are stored in their orbits (criteria read
+  // them) and reused as the integrator's first stage.
+  accelerations(x, v, a0_, true);
+  start_forces_ = forces_;  // later stages overwrite forces_
+  integrator_.step([this](const std::vector<Vec3>& xs, const std::vector<Vec3>& vs,
+                          std::vector<Vec3>& as) { accelerations(xs, vs, as, false); },
+                   x, v, settings_.dt, &a0_);
+  time_ += settings_.dt;
+  ++steps_;
+}
+
+void Simulation::on_topology_changed(std::span<const Dart> touched) {
+  const Orbit vertex = Orbit::cell(0, map_.dimension());
+  const Mark m = map_.reserve_mark();
+  region_.clear();
+  for (Dart d : touched) {
+    if (!map_.is_alive(d) || map_.is_marked(d, m)) continue;
+    map_.for_each_in_orbit(d, vertex, [&](Dart x) {
+      map_.mark(x, m);
+      region_.push_back(x);
+    });
+    update_vertex_mass(map_, d, corner_mass_, vertex_mass_);
+  }
+  for (Dart d : region_)
+    map_.unmark(d, m);
+  map_.free_mark(m);
+  for (auto& model : models_)
+    model->rematch(map_, region_);
+  refresh_inverse_masses();
+}
+
+Real Simulation::kinetic_energy() const {
+  Real e = 0;
+  map_.for_each_cell(Orbit::cell(0, map_.dimension()),
+                     [&](Dart d) { e += 0.5 * vertex_mass_[d] * velocity_[d].squaredNorm(); });
+  return e;
+}
+
+Real Simulation::potential_energy() const {
+  Real e = 0;
+  map_.for_each_cell(Orbit::cell(0, map_.dimension()),
+                     [&](Dart d) { e -= vertex_mass_[d] * settings_.gravity.dot(position_[d]); });
+  const ForceInput in{position_.values().data(), velocity_.values().data()};
+  for (const auto& model : models_)
+    e += model->potential_energy(in);
+  return e;
+}
+
+Vec3 Simulation::momentum() const {
+  Vec3 p = Vec3::Zero();
+  map_.for_each_cell(Orbit::cell(0, map_.dimension()),
+                     [&](Dart d) { p += vertex_mass_[d] * velocity_[d]; });
+  return p;
+}
+
+Real Simulation::total_mass() const {
+  Real m = 0;
+  map_.for_each_cell(Orbit::cell(0, map_.dimension()), [&](Dart d) { m += vertex_mass_[d]; });
+  return m;
+}
+
+}  // namespace rift

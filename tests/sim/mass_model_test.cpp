@@ -1,0 +1,78 @@
+#include "rift/sim/mass_model.hpp"
+
+#include <gtest/gtest.h>
+
+#include "rift/mesh/assemble.hpp"
+#include "rift/mesh/generators.hpp"
+
+namespace rift {
+namespace {
+
+Real sum_vertex_masses(const GMap& map, const Embedding<Real>& vertex_mass) {
+  Real total = 0;
+  map.for_each_cell(Orbit::cell(0, map.dimension()), [&](Dart v) { total += vertex_mass[v]; });
+  return total;
+}
+
+TEST(MassModel, ElementMeasures) {
+  for (const char* spec : {"grid:quad:4x3", "grid:tri:4x3", "grid:mix:5x5"}) {
+    GMap map = assemble_gmap(make_generated_mesh(spec));
+    auto pos = map.embedding<Vec3>("position");
+    Real area = 0;
+    map.for_each_cell(element_orbit(2), [&](Dart e) { area += element_measure(map, e, pos); });
+    EXPECT_NEAR(area, 1.0, 1e-12) << spec;  // the unit square
+  }
+  for (const char* spec : {"block:hex:2x3x2", "block:tet:2x2x3"}) {
+    GMap map = assemble_gmap(make_generated_mesh(spec));
+    auto pos = map.embedding<Vec3>("position");
+    Real volume = 0;
+    map.for_each_cell(element_orbit(3), [&](Dart e) { volume += element_measure(map, e, pos); });
+    EXPECT_NEAR(volume, 1.0, 1e-12) << spec;  // the unit cube
+  }
+}
+
+TEST(MassModel, TotalMassEqualsSumOfVertexMassesBeforeAndAfterSplits) {
+  for (const char* spec : {"grid:mix:6x4", "block:tet:2x2x2", "block:hex:2x2x1"}) {
+    GMap map = assemble_gmap(make_generated_mesh(spec));
+    const int n = map.dimension();
+    auto pos = map.embedding<Vec3>("position");
+    auto corner = map.add_embedding<Real>("corner_mass", corner_orbit(n));
+    auto vertex = map.add_embedding<Real>("vertex_mass", Orbit::cell(0, n), MergePolicy::kSum);
+    const Real total = assign_corner_masses_by_total(map, 0.1, corner, pos);
+    EXPECT_NEAR(total, 0.1, 1e-15);
+    update_all_vertex_masses(map, corner, vertex);
+    EXPECT_NEAR(sum_vertex_masses(map, vertex), 0.1, 1e-12) << spec;
+    // Cut every inner n-link of the first element: its vertices split, and
+    // the split vertices' masses must be recomputed from their corners.
+    std::vector<Dart> touched;
+    map.for_each_in_orbit(0, element_orbit(n), [&](Dart d) {
+      touched.push_back(d);
+      touched.push_back(map.alpha(d, n));
+    });
+    for (Dart d : touched) {
+      if (!map.is_free(d, n)) map.unsew(d, n);
+    }
+    ASSERT_TRUE(map.is_valid());
+    for (Dart d : touched)
+      update_vertex_mass(map, d, corner, vertex);
+    EXPECT_NEAR(sum_vertex_masses(map, vertex), 0.1, 1e-12) << spec;
+  }
+}
+
+TEST(MassModel, CornerMassesSplitEachElementEqually) {
+  GMap map = assemble_gmap(make_grid(GridKind::Mix, 2, 1));
+  auto pos = map.embedding<Vec3>("position");
+  auto corner = map.add_embedding<Real>("corner_mass", corner_orbit(2));
+  assign_corner_masses_by_density(map, 2.0, corner, pos);
+  // Quad of area 0.5 (4 corners) and two triangles of area 0.25 (3 corners).
+  map.for_each_cell(element_orbit(2), [&](Dart e) {
+    int corners = 0;
+    map.for_each_sub_orbit(e, element_orbit(2), corner_orbit(2), [&](Dart) { ++corners; });
+    const Real expected = corners == 4 ? 2.0 * 0.5 / 4 : 2.0 * 0.25 / 3;
+    map.for_each_in_orbit(e, element_orbit(2),
+                          [&](Dart d) { EXPECT_NEAR(corner[d], expected, 1e-15); });
+  });
+}
+
+}  // namespace
+}  // namespace rift
