@@ -146,7 +146,8 @@ Parser::symbol_type Lexer::next() {
         }
         return Parser::make_INT(value, loc);
       }
-      digit+ "." digit* exp? | "." digit+ exp? | digit+ exp {
+      // "2." is not a real: `a@0.position` must lex as a@ 0 . position.
+      digit+ "." digit+ exp? | "." digit+ exp? | digit+ exp {
         const diag::Location loc = RIFT_TOKEN();
         const double value = std::strtod(std::string(token_, cursor_).c_str(), nullptr);
         return Parser::make_REAL(value, loc);

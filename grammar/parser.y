@@ -56,23 +56,29 @@ using rift::ast::Expr;
 using rift::ast::ExprPtr;
 using rift::ast::make_expr;
 
-ExprPtr binary(std::string op, ExprPtr a, ExprPtr b, const rift::diag::Location& loc) {
+ExprPtr binary(std::string op, ExprPtr a, ExprPtr b, const rift::diag::Location& loc,
+               const rift::diag::Location& op_loc) {
   ExprPtr e = make_expr(Expr::Kind::Binary, loc);
+  e->op_loc = op_loc;
   e->op = std::move(op);
   e->args.push_back(std::move(a));
   e->args.push_back(std::move(b));
   return e;
 }
 
-ExprPtr unary(std::string op, ExprPtr a, const rift::diag::Location& loc) {
+ExprPtr unary(std::string op, ExprPtr a, const rift::diag::Location& loc,
+              const rift::diag::Location& op_loc) {
   ExprPtr e = make_expr(Expr::Kind::Unary, loc);
+  e->op_loc = op_loc;
   e->op = std::move(op);
   e->args.push_back(std::move(a));
   return e;
 }
 
-ExprPtr call(std::string name, std::vector<ExprPtr> args, const rift::diag::Location& loc) {
+ExprPtr call(std::string name, std::vector<ExprPtr> args, const rift::diag::Location& loc,
+             const rift::diag::Location& name_loc) {
   ExprPtr e = make_expr(Expr::Kind::Call, loc);
+  e->op_loc = name_loc;
   e->name = std::move(name);
   e->args = std::move(args);
   return e;
@@ -135,7 +141,8 @@ header
   : PACK ident DIMENSION INT SEMI {
       ctx.file.has_header = true;
       ctx.file.pack = $2;
-      ctx.file.dimension = static_cast<int>($4);
+      const std::int64_t dim = $4;
+      ctx.file.dimension = static_cast<int>(dim > 1000 ? 1000 : dim);
       ctx.file.dimension_loc = @4;
     }
   | error SEMI
@@ -416,22 +423,23 @@ apply_arg
 
 expr
   : primary { $$ = $1; }
-  | MINUS expr %prec UMINUS { $$ = unary("-", $2, @$); }
-  | NOT expr { $$ = unary("not", $2, @$); }
-  | expr PLUS expr { $$ = binary("+", $1, $3, @2); }
-  | expr MINUS expr { $$ = binary("-", $1, $3, @2); }
-  | expr STAR expr { $$ = binary("*", $1, $3, @2); }
-  | expr SLASH expr { $$ = binary("/", $1, $3, @2); }
-  | expr LT expr { $$ = binary("<", $1, $3, @2); }
-  | expr LE expr { $$ = binary("<=", $1, $3, @2); }
-  | expr GT expr { $$ = binary(">", $1, $3, @2); }
-  | expr GE expr { $$ = binary(">=", $1, $3, @2); }
-  | expr EQ expr { $$ = binary("==", $1, $3, @2); }
-  | expr NE expr { $$ = binary("!=", $1, $3, @2); }
-  | expr AND expr { $$ = binary("and", $1, $3, @2); }
-  | expr OR expr { $$ = binary("or", $1, $3, @2); }
+  | MINUS expr %prec UMINUS { $$ = unary("-", $2, @$, @1); }
+  | NOT expr { $$ = unary("not", $2, @$, @1); }
+  | expr PLUS expr { $$ = binary("+", $1, $3, @$, @2); }
+  | expr MINUS expr { $$ = binary("-", $1, $3, @$, @2); }
+  | expr STAR expr { $$ = binary("*", $1, $3, @$, @2); }
+  | expr SLASH expr { $$ = binary("/", $1, $3, @$, @2); }
+  | expr LT expr { $$ = binary("<", $1, $3, @$, @2); }
+  | expr LE expr { $$ = binary("<=", $1, $3, @$, @2); }
+  | expr GT expr { $$ = binary(">", $1, $3, @$, @2); }
+  | expr GE expr { $$ = binary(">=", $1, $3, @$, @2); }
+  | expr EQ expr { $$ = binary("==", $1, $3, @$, @2); }
+  | expr NE expr { $$ = binary("!=", $1, $3, @$, @2); }
+  | expr AND expr { $$ = binary("and", $1, $3, @$, @2); }
+  | expr OR expr { $$ = binary("or", $1, $3, @$, @2); }
   | IF expr THEN expr ELSE expr {
-      ExprPtr e = make_expr(Expr::Kind::Cond, @1);
+      ExprPtr e = make_expr(Expr::Kind::Cond, @$);
+      e->op_loc = @1;
       e->args.push_back($2);
       e->args.push_back($4);
       e->args.push_back($6);
@@ -445,8 +453,8 @@ primary
   | TRUE { $$ = make_expr(Expr::Kind::BoolLit, @$); $$->boolean = true; }
   | FALSE { $$ = make_expr(Expr::Kind::BoolLit, @$); $$->boolean = false; }
   | IDENT { $$ = make_expr(Expr::Kind::Name, @$); $$->name = $1; }
-  | IDENT LPAREN args RPAREN { $$ = call($1, $3, @1); }
-  | type_call LPAREN args RPAREN { $$ = call($1, $3, @1); }
+  | IDENT LPAREN args RPAREN { $$ = call($1, $3, @$, @1); }
+  | type_call LPAREN args RPAREN { $$ = call($1, $3, @$, @1); }
   | LPAREN expr RPAREN { $$ = $2; }
   | node_path DOT IDENT {
       $$ = $1;
@@ -464,12 +472,14 @@ primary
       $$->hops = path->hops;
     }
   | primary LBRACKET expr RBRACKET {
-      $$ = make_expr(Expr::Kind::Index, @2);
+      $$ = make_expr(Expr::Kind::Index, @$);
+      $$->op_loc = @2;
       $$->args.push_back($1);
       $$->args.push_back($3);
     }
   | primary LBRACKET expr COMMA expr RBRACKET {
-      $$ = make_expr(Expr::Kind::Index, @2);
+      $$ = make_expr(Expr::Kind::Index, @$);
+      $$->op_loc = @2;
       $$->args.push_back($1);
       $$->args.push_back($3);
       $$->args.push_back($5);

@@ -46,7 +46,8 @@ struct Expr {
   };
 
   Kind kind = Kind::IntLit;
-  Location loc;
+  Location loc;     // the whole expression
+  Location op_loc;  // the operator, function name, `if` or `[`: where operator errors point
   std::int64_t integer = 0;
   double real = 0.0;
   bool boolean = false;

@@ -120,7 +120,7 @@ class TypeChecker {
     } else if (a != Type::Bool) {
       return a;
     }
-    diags_.error(e.loc, "operator '" + e.op + "' cannot be applied to " + str(a));
+    diags_.error(e.op_loc, "operator '" + e.op + "' cannot be applied to " + str(a));
     return Type::Error;
   }
 
@@ -139,7 +139,7 @@ class TypeChecker {
       if (scalars || a == b) {
         if (a == Type::Real || b == Type::Real) {
           diags_.warning(
-              "float-equality", e.loc,
+              "float-equality", e.op_loc,
               "comparing real numbers with '" + op + "' is fragile; compare with a tolerance");
         }
         return Type::Bool;
@@ -156,7 +156,7 @@ class TypeChecker {
       if (scalars) return scalar;
       if (numeric(b) && (a == Type::Vec3 || a == Type::Mat3)) return a;
     }
-    diags_.error(e.loc, "operator '" + op + "' cannot combine " + str(a) + " and " + str(b));
+    diags_.error(e.op_loc, "operator '" + op + "' cannot combine " + str(a) + " and " + str(b));
     return Type::Error;
   }
 
@@ -167,7 +167,8 @@ class TypeChecker {
     if (a == Type::Error || b == Type::Error) return Type::Error;
     if (a == b) return a;
     if (numeric(a) && numeric(b)) return Type::Real;
-    diags_.error(e.loc, "the branches of 'if' have different types: " + str(a) + " and " + str(b));
+    diags_.error(e.op_loc,
+                 "the branches of 'if' have different types: " + str(a) + " and " + str(b));
     return Type::Error;
   }
 
@@ -178,12 +179,12 @@ class TypeChecker {
     if (base == Type::Error) return base;
     const std::size_t want = base == Type::Vec3 ? 1 : base == Type::Mat3 ? 2 : 0;
     if (want == 0) {
-      diags_.error(e.loc, "only vec3 and mat3 values can be indexed, not " + str(base));
+      diags_.error(e.op_loc, "only vec3 and mat3 values can be indexed, not " + str(base));
       return Type::Error;
     }
     if (e.args.size() - 1 != want) {
-      diags_.error(e.loc, "a " + str(base) + " takes " + std::to_string(want) +
-                              (want == 1 ? " index" : " indices"));
+      diags_.error(e.op_loc, "a " + str(base) + " takes " + std::to_string(want) +
+                                 (want == 1 ? " index" : " indices"));
       return Type::Error;
     }
     for (std::size_t k = 1; k < e.args.size(); ++k) {
@@ -204,7 +205,7 @@ class TypeChecker {
     }
     const std::vector<Signature>* overloads = builtin(e.name);
     if (!overloads) {
-      diags_.error(e.loc, "unknown function '" + e.name + "'");
+      diags_.error(e.op_loc, "unknown function '" + e.name + "'");
       return Type::Error;
     }
     if (bad) return Type::Error;
@@ -213,7 +214,7 @@ class TypeChecker {
     for (const Signature& s : *overloads) {
       expected += (expected.empty() ? "" : " or ") + describe(s.params);
     }
-    diags_.error(e.loc, "'" + e.name + "' expects " + expected + ", got " + describe(args));
+    diags_.error(e.op_loc, "'" + e.name + "' expects " + expected + ", got " + describe(args));
     return Type::Error;
   }
 
