@@ -1,0 +1,83 @@
+// A scene: the mesh, its interactions and criteria with their parameters,
+// the integrator and time step, masses, pins and outputs. Read from TOML by
+// read_scene; docs/scenes.md is the reference of every key.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rift/embed/value.hpp"
+#include "rift/scene/catalog.hpp"
+#include "rift/sim/integrator.hpp"
+
+namespace rift {
+
+struct SceneParam {
+  Value value;
+  int line = 0;
+};
+
+/// One [[interaction]] or [[criterion]] table: a name from the catalog and
+/// every parameter resolved (given, or its default).
+struct ComponentUse {
+  std::string name;
+  int line = 0;
+  std::map<std::string, SceneParam> params;
+
+  Real real(const std::string& param) const;
+  Vec3 vec3(const std::string& param) const;
+  std::int64_t integer(const std::string& param) const;
+  bool boolean(const std::string& param) const;
+};
+
+struct SceneMesh {
+  std::string source;  ///< generator spelling, or a file path resolved against the scene's folder
+  Vec3 scale = Vec3::Ones();
+  Vec3 rotate_degrees = Vec3::Zero();  ///< about x, then y, then z, after scaling
+  Vec3 translate = Vec3::Zero();
+};
+
+struct ScenePins {
+  std::vector<std::string> corners;    ///< "top-left", "top-right", "bottom-left", "bottom-right"
+  std::vector<std::int64_t> vertices;  ///< point indices of the source mesh (0-based)
+  std::vector<std::pair<Vec3, Vec3>> boxes;  ///< every vertex inside [min, max]
+};
+
+struct SceneOutput {
+  std::string dir;  ///< default: "out/<scene name>" next to the working dir
+  int every = 10;   ///< a frame every `every` steps
+  std::vector<std::string> formats{"vtu", "csv"};  ///< among vtu, obj, png, csv
+  int png_every = 0;                               ///< a PNG every k-th frame (0: same as frames)
+  int width = 800, height = 600;
+};
+
+struct SceneTearing {
+  int max_per_step = 0;  ///< 0: no cap
+};
+
+struct Scene {
+  std::string path;  ///< the scene file
+  std::string name;  ///< its stem
+  SceneMesh mesh;
+  IntegratorKind integrator = IntegratorKind::kRK4;
+  Real dt = 1e-3;
+  std::int64_t steps = 1000;
+  Vec3 gravity = Vec3(0, 0, -9.81);
+  std::optional<Real> total_mass;
+  std::optional<Real> density;
+  ScenePins pins;
+  std::vector<ComponentUse> interactions;
+  std::vector<ComponentUse> criteria;
+  SceneTearing tearing;
+  SceneOutput output;
+};
+
+/// Reads and validates a scene. Throws InputError naming the file, the line
+/// and what is expected: unknown keys (with the closest known key), values
+/// of the wrong type or range, unknown interactions or criteria, missing
+/// parameters, a mesh file that does not exist.
+Scene read_scene(const std::string& path, const Catalog& catalog);
+
+}  // namespace rift

@@ -1,0 +1,408 @@
+// Reads a scene from TOML and validates every value before any simulation
+// starts. Every error names the file, the line and what is expected.
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include "rift/core/input_error.hpp"
+#include "rift/mesh/generators.hpp"
+#include "rift/scene/scene.hpp"
+#include "rift/scene/suggest.hpp"
+
+namespace rift {
+
+namespace {
+
+int line_of(const toml::node& node) {
+  return static_cast<int>(node.source().begin.line);
+}
+
+class SceneReader {
+ public:
+  SceneReader(std::string path, const Catalog& catalog)
+      : path_(std::move(path)), catalog_(catalog) {}
+
+  Scene read() {
+    toml::table root;
+    try {
+      root = toml::parse_file(path_);
+    } catch (const toml::parse_error& e) {
+      throw InputError(path_, static_cast<int>(e.source().begin.line),
+                       "not valid TOML: " + std::string(e.description()));
+    }
+    Scene scene;
+    scene.path = path_;
+    scene.name = std::filesystem::path(path_).stem().string();
+    check_keys(
+        root,
+        {"mesh", "simulation", "mass", "pin", "interaction", "criterion", "tearing", "output"},
+        "the scene");
+    read_mesh(require_table(root, "mesh", "the scene"), scene.mesh);
+    if (auto* t = optional_table(root, "simulation")) read_simulation(*t, scene);
+    if (auto* t = optional_table(root, "mass")) read_mass(*t, scene);
+    if (auto* t = optional_table(root, "pin")) read_pins(*t, scene.pins);
+    read_components(root, "interaction", catalog_.interactions, scene.interactions);
+    read_components(root, "criterion", catalog_.criteria, scene.criteria);
+    if (auto* t = optional_table(root, "tearing")) {
+      check_keys(*t, {"max_per_step"}, "[tearing]");
+      if (auto* n = t->get("max_per_step")) {
+        scene.tearing.max_per_step = static_cast<int>(integer(*n, "max_per_step", 0, 1 << 30));
+      }
+    }
+    scene.output.dir = "out/" + scene.name;
+    if (auto* t = optional_table(root, "output")) read_output(*t, scene.output);
+    if (scene.interactions.empty()) {
+      throw InputError(path_, 0,
+                       "the scene has no [[interaction]]: nothing would move but gravity");
+    }
+    return scene;
+  }
+
+ private:
+  [[noreturn]] void fail(int line, const std::string& problem) const {
+    throw InputError(path_, line, problem);
+  }
+  [[noreturn]] void fail(const toml::node& node, const std::string& problem) const {
+    fail(line_of(node), problem);
+  }
+
+  void check_keys(const toml::table& table, const std::vector<std::string>& allowed,
+                  const std::string& where) const {
+    for (auto&& [key, node] : table) {
+      const std::string k(key.str());
+      if (std::find(allowed.begin(), allowed.end(), k) == allowed.end()) {
+        fail(static_cast<int>(key.source().begin.line),
+             "unknown key '" + k + "' in " + where + did_you_mean(k, allowed));
+      }
+    }
+  }
+
+  const toml::table& require_table(const toml::table& parent, const std::string& key,
+                                   const std::string& where) const {
+    const toml::node* node = parent.get(key);
+    if (!node) fail(0, where + " needs a [" + key + "] table");
+    if (!node->is_table()) fail(*node, "'" + key + "' must be a table");
+    return *node->as_table();
+  }
+
+  const toml::table* optional_table(const toml::table& parent, const std::string& key) const {
+    const toml::node* node = parent.get(key);
+    if (!node) return nullptr;
+    if (!node->is_table()) fail(*node, "'" + key + "' must be a table ([" + key + "])");
+    return node->as_table();
+  }
+
+  Real real(const toml::node& node, const std::string& key) const {
+    if (auto v = node.value_exact<double>()) {
+      if (!std::isfinite(*v)) fail(node, "'" + key + "' must be a finite number");
+      return *v;
+    }
+    if (auto i = node.value_exact<std::int64_t>()) return static_cast<Real>(*i);
+    fail(node, "'" + key + "' must be a number, not " + type_name(node));
+  }
+
+  Real positive_real(const toml::node& node, const std::string& key) const {
+    const Real v = real(node, key);
+    if (!(v > 0)) fail(node, "'" + key + "' must be positive, not " + toml_text(node));
+    return v;
+  }
+
+  std::int64_t integer(const toml::node& node, const std::string& key, std::int64_t lo,
+                       std::int64_t hi) const {
+    auto i = node.value_exact<std::int64_t>();
+    if (!i) fail(node, "'" + key + "' must be an integer, not " + type_name(node));
+    if (*i < lo || *i > hi) {
+      fail(node, "'" + key + "' must be between " + std::to_string(lo) + " and " +
+                     std::to_string(hi) + ", not " + std::to_string(*i));
+    }
+    return *i;
+  }
+
+  bool boolean(const toml::node& node, const std::string& key) const {
+    auto b = node.value_exact<bool>();
+    if (!b) fail(node, "'" + key + "' must be true or false, not " + type_name(node));
+    return *b;
+  }
+
+  std::string string(const toml::node& node, const std::string& key) const {
+    auto s = node.value_exact<std::string>();
+    if (!s) fail(node, "'" + key + "' must be a string, not " + type_name(node));
+    return *s;
+  }
+
+  Vec3 vec3(const toml::node& node, const std::string& key) const {
+    const toml::array* a = node.as_array();
+    if (!a || a->size() != 3)
+      fail(node, "'" + key + "' must be an array of 3 numbers, like [0, 0, -9.81]");
+    return Vec3(real(*a->get(0), key), real(*a->get(1), key), real(*a->get(2), key));
+  }
+
+  static std::string type_name(const toml::node& node) {
+    switch (node.type()) {
+      case toml::node_type::string:
+        return "a string";
+      case toml::node_type::integer:
+        return "an integer";
+      case toml::node_type::floating_point:
+        return "a number";
+      case toml::node_type::boolean:
+        return "a boolean";
+      case toml::node_type::array:
+        return "an array";
+      case toml::node_type::table:
+        return "a table";
+      default:
+        return "a date or time";
+    }
+  }
+
+  static std::string toml_text(const toml::node& node) {
+    if (auto v = node.value<double>()) {
+      std::ostringstream out;
+      out << *v;
+      return out.str();
+    }
+    return type_name(node);
+  }
+
+  void read_mesh(const toml::table& t, SceneMesh& mesh) const {
+    check_keys(t, {"source", "scale", "rotate", "translate"}, "[mesh]");
+    const toml::node* source = t.get("source");
+    if (!source)
+      fail(line_of(t),
+           "[mesh] needs 'source': a generator such as \"grid:quad:10x10\" or a mesh file");
+    mesh.source = string(*source, "source");
+    if (is_generator_spec(mesh.source)) {
+      try {
+        make_generated_mesh(mesh.source);  // validates the spelling now, cheaply for small meshes
+      } catch (const std::invalid_argument& e) {
+        fail(*source, e.what());
+      }
+    } else {
+      namespace fs = std::filesystem;
+      fs::path p(mesh.source);
+      if (p.is_relative()) p = fs::path(path_).parent_path() / p;
+      std::error_code ec;
+      if (!fs::is_regular_file(p, ec))
+        fail(*source, "mesh file '" + p.string() + "' does not exist");
+      mesh.source = p.lexically_normal().string();
+    }
+    if (auto* n = t.get("scale")) {
+      if (n->is_array()) {
+        mesh.scale = vec3(*n, "scale");
+      } else {
+        mesh.scale = Vec3::Constant(real(*n, "scale"));
+      }
+      if (!(mesh.scale.array() > 0).all()) fail(*n, "'scale' must be positive");
+    }
+    if (auto* n = t.get("rotate")) mesh.rotate_degrees = vec3(*n, "rotate");
+    if (auto* n = t.get("translate")) mesh.translate = vec3(*n, "translate");
+  }
+
+  void read_simulation(const toml::table& t, Scene& scene) const {
+    check_keys(t, {"integrator", "dt", "steps", "gravity"}, "[simulation]");
+    if (auto* n = t.get("integrator")) {
+      const std::string name = string(*n, "integrator");
+      auto kind = parse_integrator(name);
+      if (!kind) {
+        fail(*n, "unknown integrator '" + name + "': expected euler, symplectic_euler or rk4" +
+                     did_you_mean(name, {"euler", "symplectic_euler", "rk4"}));
+      }
+      scene.integrator = *kind;
+    }
+    if (auto* n = t.get("dt")) scene.dt = positive_real(*n, "dt");
+    if (auto* n = t.get("steps")) scene.steps = integer(*n, "steps", 1, std::int64_t(1) << 40);
+    if (auto* n = t.get("gravity")) scene.gravity = vec3(*n, "gravity");
+  }
+
+  void read_mass(const toml::table& t, Scene& scene) const {
+    check_keys(t, {"total", "density"}, "[mass]");
+    const toml::node* total = t.get("total");
+    const toml::node* density = t.get("density");
+    if (total && density) fail(*density, "[mass] takes 'total' or 'density', not both");
+    if (total) scene.total_mass = positive_real(*total, "total");
+    if (density) scene.density = positive_real(*density, "density");
+  }
+
+  void read_pins(const toml::table& t, ScenePins& pins) const {
+    check_keys(t, {"corners", "vertices", "box"}, "[pin]");
+    static const std::vector<std::string> kCorners = {"top-left", "top-right", "bottom-left",
+                                                      "bottom-right"};
+    if (auto* n = t.get("corners")) {
+      const toml::array* a = n->as_array();
+      if (!a) fail(*n, "'corners' must be an array of names like [\"top-left\", \"top-right\"]");
+      for (const toml::node& c : *a) {
+        const std::string name = string(c, "corners");
+        if (std::find(kCorners.begin(), kCorners.end(), name) == kCorners.end()) {
+          fail(c, "unknown corner '" + name +
+                      "': expected top-left, top-right, bottom-left or bottom-right" +
+                      did_you_mean(name, kCorners));
+        }
+        pins.corners.push_back(name);
+      }
+    }
+    if (auto* n = t.get("vertices")) {
+      const toml::array* a = n->as_array();
+      if (!a) fail(*n, "'vertices' must be an array of point indices");
+      for (const toml::node& v : *a)
+        pins.vertices.push_back(integer(v, "vertices", 0, std::int64_t(1) << 32));
+    }
+    if (auto* n = t.get("box")) {
+      auto read_box = [&](const toml::node& b) {
+        const toml::table* bt = b.as_table();
+        if (!bt) fail(b, "'box' must be a table { min = [x, y, z], max = [x, y, z] }");
+        check_keys(*bt, {"min", "max"}, "a pin box");
+        const toml::node* lo = bt->get("min");
+        const toml::node* hi = bt->get("max");
+        if (!lo || !hi) fail(b, "a pin box needs 'min' and 'max'");
+        pins.boxes.emplace_back(vec3(*lo, "min"), vec3(*hi, "max"));
+      };
+      if (const toml::array* a = n->as_array()) {
+        for (const toml::node& b : *a)
+          read_box(b);
+      } else {
+        read_box(*n);
+      }
+    }
+  }
+
+  void read_components(const toml::table& root, const std::string& key,
+                       const std::vector<ComponentSpec>& known,
+                       std::vector<ComponentUse>& out) const {
+    const toml::node* node = root.get(key);
+    if (!node) return;
+    const toml::array* list = node->as_array();
+    if (!list || !list->is_array_of_tables()) {
+      fail(*node, "'" + key + "' must be written as [[" + key + "]] tables");
+    }
+    std::vector<std::string> names;
+    for (const ComponentSpec& c : known)
+      names.push_back(c.name);
+    for (const toml::node& entry : *list) {
+      const toml::table& t = *entry.as_table();
+      const toml::node* name_node = t.get("name");
+      if (!name_node) fail(entry, "[[" + key + "]] needs a 'name'");
+      ComponentUse use;
+      use.name = string(*name_node, "name");
+      use.line = line_of(*name_node);
+      const ComponentSpec* spec = Catalog::find(known, use.name);
+      if (!spec) {
+        std::string list_text;
+        for (const std::string& n : names)
+          list_text += (list_text.empty() ? "" : ", ") + n;
+        fail(*name_node, "unknown " + key + " '" + use.name + "'" + did_you_mean(use.name, names) +
+                             "; this simulator has: " + (list_text.empty() ? "none" : list_text));
+      }
+      std::vector<std::string> allowed{"name"};
+      for (const ParamSpec& p : spec->params)
+        allowed.push_back(p.name);
+      check_keys(t, allowed, "[[" + key + "]] '" + use.name + "'");
+      for (const ParamSpec& p : spec->params) {
+        const toml::node* v = t.get(p.name);
+        if (!v) {
+          if (!p.default_value)
+            fail(line_of(t), key + " '" + use.name + "' needs parameter '" + p.name + "'" +
+                                 (p.description.empty() ? "" : " (" + p.description + ")"));
+          use.params[p.name] = {*p.default_value, use.line};
+          continue;
+        }
+        use.params[p.name] = {param_value(*v, p, use.name), line_of(*v)};
+      }
+      out.push_back(std::move(use));
+    }
+  }
+
+  Value param_value(const toml::node& node, const ParamSpec& p, const std::string& owner) const {
+    const std::string key = owner + "." + p.name;
+    switch (p.type) {
+      case ValueType::kReal: {
+        const Real v = real(node, p.name);
+        if (p.positive && !(v > 0))
+          fail(node,
+               "'" + p.name + "' of '" + owner + "' must be positive, not " + toml_text(node));
+        if (p.non_negative && v < 0)
+          fail(node,
+               "'" + p.name + "' of '" + owner + "' must not be negative, not " + toml_text(node));
+        return v;
+      }
+      case ValueType::kInt: {
+        const std::int64_t v =
+            integer(node, p.name, p.positive ? 1 : (p.non_negative ? 0 : INT64_MIN), INT64_MAX);
+        return v;
+      }
+      case ValueType::kBool:
+        return Bool(boolean(node, p.name));
+      case ValueType::kVec3:
+        return vec3(node, p.name);
+      case ValueType::kMat3: {
+        const toml::array* a = node.as_array();
+        if (!a || a->size() != 9)
+          fail(node, "'" + p.name + "' must be an array of 9 numbers (row by row)");
+        Mat3 m;
+        for (int i = 0; i < 9; ++i)
+          m(i / 3, i % 3) = real(*a->get(static_cast<std::size_t>(i)), p.name);
+        return m;
+      }
+    }
+    (void)key;
+    fail(node, "unsupported parameter type");
+  }
+
+  void read_output(const toml::table& t, SceneOutput& out) const {
+    check_keys(t, {"dir", "every", "formats", "png_every", "png_size"}, "[output]");
+    if (auto* n = t.get("dir")) out.dir = string(*n, "dir");
+    if (auto* n = t.get("every")) out.every = static_cast<int>(integer(*n, "every", 1, 1 << 30));
+    if (auto* n = t.get("png_every"))
+      out.png_every = static_cast<int>(integer(*n, "png_every", 0, 1 << 30));
+    if (auto* n = t.get("formats")) {
+      static const std::vector<std::string> kFormats = {"vtu", "obj", "png", "csv"};
+      const toml::array* a = n->as_array();
+      if (!a) fail(*n, "'formats' must be an array such as [\"vtu\", \"png\", \"csv\"]");
+      out.formats.clear();
+      for (const toml::node& f : *a) {
+        const std::string name = string(f, "formats");
+        if (std::find(kFormats.begin(), kFormats.end(), name) == kFormats.end()) {
+          fail(f, "unknown output format '" + name + "': expected vtu, obj, png or csv" +
+                      did_you_mean(name, kFormats));
+        }
+        out.formats.push_back(name);
+      }
+    }
+    if (auto* n = t.get("png_size")) {
+      const toml::array* a = n->as_array();
+      if (!a || a->size() != 2) fail(*n, "'png_size' must be [width, height]");
+      out.width = static_cast<int>(integer(*a->get(0), "png_size", 16, 8192));
+      out.height = static_cast<int>(integer(*a->get(1), "png_size", 16, 8192));
+    }
+  }
+
+  std::string path_;
+  const Catalog& catalog_;
+};
+
+}  // namespace
+
+Real ComponentUse::real(const std::string& param) const {
+  const Value& v = params.at(param).value;
+  if (auto* i = std::get_if<std::int64_t>(&v)) return static_cast<Real>(*i);
+  return std::get<Real>(v);
+}
+Vec3 ComponentUse::vec3(const std::string& param) const {
+  return std::get<Vec3>(params.at(param).value);
+}
+std::int64_t ComponentUse::integer(const std::string& param) const {
+  return std::get<std::int64_t>(params.at(param).value);
+}
+bool ComponentUse::boolean(const std::string& param) const {
+  return std::get<Bool>(params.at(param).value);
+}
+
+Scene read_scene(const std::string& path, const Catalog& catalog) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, 0, "no such scene file");
+  return SceneReader(path, catalog).read();
+}
+
+}  // namespace rift

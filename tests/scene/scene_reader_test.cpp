@@ -1,0 +1,164 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "rift/core/input_error.hpp"
+#include "rift/scene/scene.hpp"
+
+namespace rift {
+namespace {
+
+namespace fs = std::filesystem;
+
+Catalog test_catalog() {
+  Catalog c;
+  c.interactions.push_back({"stretch",
+                            "stretch spring",
+                            {{"stiffness", ValueType::kReal, std::nullopt, "N/m", true, false},
+                             {"damping", ValueType::kReal, Value(0.0), "", false, true}}});
+  c.criteria.push_back(
+      {"global_edge", "", {{"threshold", ValueType::kReal, std::nullopt, "N", true, false}}});
+  return c;
+}
+
+class SceneFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("rift_scene_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string write(const std::string& text, const std::string& name = "scene.toml") {
+    const fs::path p = dir_ / name;
+    std::ofstream(p) << text;
+    return p.string();
+  }
+
+  // The message of the InputError read_scene throws, or "no error".
+  std::string error(const std::string& text) {
+    const std::string path = write(text);
+    try {
+      read_scene(path, test_catalog());
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), path);
+      return std::string(e.what()).substr(path.size());
+    }
+    return "no error";
+  }
+
+  fs::path dir_;
+};
+
+const char* kGood = R"(
+[mesh]
+source = "grid:quad:10x10"
+rotate = [90, 0, 0]
+
+[simulation]
+integrator = "rk4"
+dt = 0.002
+steps = 500
+gravity = [0, 0, -9.81]
+
+[mass]
+total = 0.1
+
+[pin]
+corners = ["top-left", "top-right"]
+
+[[interaction]]
+name = "stretch"
+stiffness = 60
+
+[[criterion]]
+name = "global_edge"
+threshold = 0.5
+
+[output]
+every = 5
+formats = ["vtu", "png", "csv"]
+)";
+
+TEST_F(SceneFiles, ReadsEveryValue) {
+  const Scene s = read_scene(write(kGood), test_catalog());
+  EXPECT_EQ(s.name, "scene");
+  EXPECT_EQ(s.mesh.source, "grid:quad:10x10");
+  EXPECT_EQ(s.mesh.rotate_degrees, Vec3(90, 0, 0));
+  EXPECT_EQ(s.integrator, IntegratorKind::kRK4);
+  EXPECT_EQ(s.dt, 0.002);
+  EXPECT_EQ(s.steps, 500);
+  EXPECT_EQ(*s.total_mass, 0.1);
+  EXPECT_EQ(s.pins.corners.size(), 2u);
+  ASSERT_EQ(s.interactions.size(), 1u);
+  EXPECT_EQ(s.interactions[0].real("stiffness"), 60.0);  // an integer read as a real
+  EXPECT_EQ(s.interactions[0].real("damping"), 0.0);     // the default
+  EXPECT_EQ(s.criteria[0].real("threshold"), 0.5);
+  EXPECT_EQ(s.output.every, 5);
+  EXPECT_EQ(s.output.dir, "out/scene");
+}
+
+TEST_F(SceneFiles, UnknownKeysNameTheLineAndTheClosestKey) {
+  std::string text = kGood;
+  text.replace(text.find("steps = 500"), 11, "stpes = 500");
+  EXPECT_EQ(error(text), ":9: error: unknown key 'stpes' in [simulation] (did you mean 'steps'?)");
+}
+
+TEST_F(SceneFiles, WrongValuesAreRejectedWithWhatIsExpected) {
+  auto with = [&](const std::string& from, const std::string& to) {
+    std::string text = kGood;
+    text.replace(text.find(from), from.size(), to);
+    return error(text);
+  };
+  EXPECT_EQ(with("dt = 0.002", "dt = -0.002"), ":8: error: 'dt' must be positive, not -0.002");
+  EXPECT_EQ(with("total = 0.1", "total = 0"), ":13: error: 'total' must be positive, not 0");
+  EXPECT_EQ(with("threshold = 0.5", "threshold = \"high\""),
+            ":24: error: 'threshold' must be a number, not a string");
+  EXPECT_EQ(with("rk4", "rk5"),
+            ":7: error: unknown integrator 'rk5': expected euler, symplectic_euler or rk4 (did "
+            "you mean 'rk4'?)");
+  EXPECT_EQ(with("\"grid:quad:10x10\"", "\"missing.obj\""),
+            ":3: error: mesh file '" + (dir_ / "missing.obj").string() + "' does not exist");
+  EXPECT_EQ(with("\"grid:quad:10x10\"", "\"grid:quad:0x10\""),
+            ":3: error: cell counts must be at least 1");
+  EXPECT_EQ(with("name = \"stretch\"", "name = \"strech\""),
+            ":19: error: unknown interaction 'strech' (did you mean 'stretch'?); this simulator "
+            "has: stretch");
+  EXPECT_EQ(with("stiffness = 60", "stiffness = -60"),
+            ":20: error: 'stiffness' of 'stretch' must be positive, not -60");
+  EXPECT_EQ(with("stiffness = 60", "stifness = 60"),
+            ":20: error: unknown key 'stifness' in [[interaction]] 'stretch' (did you mean "
+            "'stiffness'?)");
+  EXPECT_EQ(with("gravity = [0, 0, -9.81]", "gravity = [0, -9.81]"),
+            ":10: error: 'gravity' must be an array of 3 numbers, like [0, 0, -9.81]");
+  EXPECT_EQ(with("\"top-left\"", "\"top-middle\""),
+            ":16: error: unknown corner 'top-middle': expected top-left, top-right, bottom-left "
+            "or bottom-right");
+  EXPECT_EQ(with("\"png\"", "\"gif\""),
+            ":28: error: unknown output format 'gif': expected vtu, obj, png or csv");
+}
+
+TEST_F(SceneFiles, MissingPiecesAndBrokenToml) {
+  EXPECT_EQ(error("[simulation]\ndt = 0.1\n"), ": error: the scene needs a [mesh] table");
+  EXPECT_EQ(error("[mesh]\nsource = \"grid:quad:2x2\"\n"),
+            ": error: the scene has no [[interaction]]: nothing would move but gravity");
+  EXPECT_EQ(error("[mesh]\nsource = \"grid:quad:2x2\"\n[[interaction]]\nname = \"stretch\"\n"),
+            ":3: error: interaction 'stretch' needs parameter 'stiffness' (N/m)");
+  const std::string broken = error("[mesh]\nsource = \"grid:quad:2x2\n");
+  EXPECT_EQ(broken.rfind(":2: error: not valid TOML: ", 0), 0u) << broken;
+  EXPECT_THROW(read_scene((dir_ / "nope.toml").string(), test_catalog()), InputError);
+}
+
+TEST_F(SceneFiles, MeshPathsAreRelativeToTheScene) {
+  write("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "tri.obj");
+  std::string text = kGood;
+  text.replace(text.find("\"grid:quad:10x10\""), 17, "\"tri.obj\"");
+  const Scene s = read_scene(write(text), test_catalog());
+  EXPECT_EQ(s.mesh.source, (dir_ / "tri.obj").string());
+}
+
+}  // namespace
+}  // namespace rift
