@@ -1,0 +1,72 @@
+// Adapts a generated interaction kernel to the ForceModel interface, with
+// its matches cached in a MatchCache. The kernel supplies:
+//
+//   using Match = ...;                      // trivially copyable: slots and darts
+//   static constexpr Orbit kSupport;        // the orbit carrying the parameters
+//   static constexpr int kRadius;           // links from the support dart to the farthest matched
+//   dart const std::string& name() const; void initialise(GMap&);                 // declare
+//   embeddings, compute rest values bool match(const GMap&, Dart, Match&) const; void
+//   add_forces(const Match&, const ForceInput&, Vec3* f, bool store); void reset_stored(const
+//   Match&);        // zero the stored forces of a lost match Real energy(const Match&, const
+//   ForceInput&) const;
+//
+// The force loop is a flat loop over the cached matches with the kernel
+// inlined: no virtual call and no traversal per element.
+#pragma once
+
+#include <string>
+#include <utility>
+
+#include "rift/sim/force_model.hpp"
+#include "rift/sim/match_cache.hpp"
+
+namespace rift {
+
+template <class Kernel>
+class CachedInteraction final : public ForceModel {
+ public:
+  template <class... Args>
+  explicit CachedInteraction(Args&&... args) : kernel_(std::forward<Args>(args)...) {}
+
+  const std::string& name() const override { return kernel_.name(); }
+  Kernel& kernel() { return kernel_; }
+
+  void initialise(GMap& map) override {
+    kernel_.initialise(map);
+    cache_.build(map, Kernel::kSupport, [&](const GMap& m, Dart d, typename Kernel::Match& out) {
+      return kernel_.match(m, d, out);
+    });
+  }
+
+  void rematch(const GMap& map, std::span<const Dart> region) override {
+    cache_.rematch(
+        map, Kernel::kSupport, Kernel::kRadius, region,
+        [&](const GMap& m, Dart d, typename Kernel::Match& out) {
+          return kernel_.match(m, d, out);
+        },
+        [&](const typename Kernel::Match& lost, bool alive) {
+          if (alive) kernel_.reset_stored(lost);
+        });
+  }
+
+  void add_forces(const ForceInput& in, Vec3* f, bool store) override {
+    for (const auto& m : cache_.matches())
+      kernel_.add_forces(m, in, f, store);
+  }
+
+  Real potential_energy(const ForceInput& in) const override {
+    Real e = 0;
+    for (const auto& m : cache_.matches())
+      e += kernel_.energy(m, in);
+    return e;
+  }
+
+  std::size_t active_matches() const override { return cache_.size(); }
+  const MatchCache<typename Kernel::Match>& cache() const { return cache_; }
+
+ private:
+  Kernel kernel_;
+  MatchCache<typename Kernel::Match> cache_;
+};
+
+}  // namespace rift

@@ -1,0 +1,140 @@
+// Matches of one interaction's pattern, one per support orbit, kept in a
+// dense array so that a force pass is a flat loop. After a rewrite only the
+// support orbits near the touched darts are matched again (§4.1): a match that
+// is lost is dropped (its stored forces reset by the caller), a support orbit
+// that appears (a split) gets a new match.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "rift/gmap/gmap.hpp"
+
+namespace rift {
+
+template <class Match>
+class MatchCache {
+ public:
+  static constexpr std::uint32_t kNone = ~0u;
+
+  std::span<const Match> matches() const { return matches_; }
+  std::span<Match> matches() { return matches_; }
+  std::size_t size() const { return matches_.size(); }
+  /// The support dart each match was found from, parallel to matches().
+  std::span<const Dart> owners() const { return owners_; }
+
+  /// Matches every support orbit of the map. match(map, dart, Match&) -> bool.
+  template <class MatchFn>
+  void build(const GMap& map, Orbit support, MatchFn&& match) {
+    matches_.clear();
+    owners_.clear();
+    entry_of_dart_.assign(map.capacity(), kNone);
+    map.for_each_cell(support, [&](Dart d) {
+      Match m{};
+      if (match(map, d, m)) insert(d, m);
+    });
+  }
+
+  /// Re-matches every support orbit within `radius` links of `region` (the
+  /// darts a rewrite touched, live or deleted). lost(const Match&, bool alive)
+  /// is called for each match that disappears, before it is dropped.
+  template <class MatchFn, class LostFn>
+  void rematch(const GMap& map, Orbit support, int radius, std::span<const Dart> region,
+               MatchFn&& match, LostFn&& lost) {
+    if (entry_of_dart_.size() < map.capacity()) entry_of_dart_.resize(map.capacity(), kNone);
+    // Deleted owners first: their matches are gone for good.
+    for (Dart d : region) {
+      if (d < entry_of_dart_.size() && entry_of_dart_[d] != kNone && !map.is_alive(d)) {
+        lost(matches_[entry_of_dart_[d]], false);
+        erase(entry_of_dart_[d]);
+      }
+    }
+    // Every live dart within `radius` links of the region, each once.
+    const Mark near = map.reserve_mark();
+    frontier_.clear();
+    for (Dart d : region) {
+      if (map.is_alive(d) && !map.is_marked(d, near)) {
+        map.mark(d, near);
+        frontier_.push_back(d);
+      }
+    }
+    std::size_t begin = 0;
+    for (int step = 0; step < radius; ++step) {
+      const std::size_t end = frontier_.size();
+      for (std::size_t k = begin; k < end; ++k) {
+        for (int i = 0; i <= map.dimension(); ++i) {
+          const Dart y = map.alpha(frontier_[k], i);
+          if (!map.is_marked(y, near)) {
+            map.mark(y, near);
+            frontier_.push_back(y);
+          }
+        }
+      }
+      begin = end;
+    }
+    // Each support orbit meeting that neighbourhood: keep one owner, match again.
+    const Mark seen = map.reserve_mark();
+    for (Dart d : frontier_) {
+      if (map.is_marked(d, seen)) continue;
+      Dart owner = kNoDart;
+      map.for_each_in_orbit(d, support, [&](Dart x) {
+        map.mark(x, seen);
+        const std::uint32_t e = entry_of_dart_[x];
+        if (e == kNone) return;
+        if (owner == kNoDart) {
+          owner = x;
+        } else {
+          // Two orbits merged (a sew): one match is enough.
+          lost(matches_[e], true);
+          erase(e);
+        }
+      });
+      Match m{};
+      const bool matched = match(map, owner == kNoDart ? d : owner, m);
+      if (owner != kNoDart) {
+        const std::uint32_t e = entry_of_dart_[owner];
+        if (matched) {
+          matches_[e] = m;
+        } else {
+          lost(matches_[e], true);
+          erase(e);
+        }
+      } else if (matched) {
+        insert(d, m);
+      }
+    }
+    for (Dart d : frontier_) {
+      map.unmark(d, near);
+      map.for_each_in_orbit(d, support, [&](Dart x) { map.unmark(x, seen); });
+    }
+    map.free_mark(seen);
+    map.free_mark(near);
+  }
+
+ private:
+  void insert(Dart owner, const Match& m) {
+    if (entry_of_dart_.size() <= owner) entry_of_dart_.resize(owner + 1, kNone);
+    entry_of_dart_[owner] = static_cast<std::uint32_t>(matches_.size());
+    matches_.push_back(m);
+    owners_.push_back(owner);
+  }
+  // Swap-and-pop keeps the array dense.
+  void erase(std::uint32_t e) {
+    const std::uint32_t last = static_cast<std::uint32_t>(matches_.size() - 1);
+    entry_of_dart_[owners_[e]] = kNone;
+    if (e != last) {
+      matches_[e] = matches_[last];
+      owners_[e] = owners_[last];
+      entry_of_dart_[owners_[e]] = e;
+    }
+    matches_.pop_back();
+    owners_.pop_back();
+  }
+
+  std::vector<Match> matches_;
+  std::vector<Dart> owners_;
+  std::vector<std::uint32_t> entry_of_dart_;
+  std::vector<Dart> frontier_;
+};
+
+}  // namespace rift
