@@ -1,9 +1,14 @@
 #include "driver/compile.hpp"
 
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
 #include "check/embeddings.hpp"
 #include "check/topology.hpp"
 #include "check/types.hpp"
 #include "check/warnings.hpp"
+#include "emit/pack_emit.hpp"
 #include "parse/loader.hpp"
 #include "resolve/resolve.hpp"
 
@@ -11,7 +16,13 @@ namespace rift::driver {
 
 namespace {
 
-void run_checks(const ast::Program& program, diag::Diagnostics& diags) {
+struct Checked {
+  resolve::Symbols symbols;
+  std::vector<check::CheckedRule> rules;
+  std::vector<check::CheckedInteraction> interactions;
+};
+
+void run_checks(const ast::Program& program, diag::Diagnostics& diags, Checked& out) {
   // Semantic checks on a partly parsed pack would mostly report the holes
   // that syntax errors left: report the syntax errors alone.
   if (diags.has_errors()) return;
@@ -25,14 +36,49 @@ void run_checks(const ast::Program& program, diag::Diagnostics& diags) {
       }
     }
   }
-  const resolve::Symbols symbols = resolve::collect_symbols(program, diags);
-  resolve::resolve_names(program, symbols, diags);
-  check::check_types(program, symbols, diags);
-  const auto rules = check::check_rules(program, diags);
-  check::check_interactions(program, diags);
-  check::check_applies(program, rules, diags);
-  check::check_embeddings(rules, symbols, diags);
+  out.symbols = resolve::collect_symbols(program, diags);
+  resolve::resolve_names(program, out.symbols, diags);
+  check::check_types(program, out.symbols, diags);
+  out.rules = check::check_rules(program, diags);
+  out.interactions = check::check_interactions(program, diags);
+  check::check_applies(program, out.rules, diags);
+  check::check_embeddings(out.rules, out.symbols, diags);
   check::check_unused(program, diags);
+}
+
+/// Writes `text` unless the file already holds it, so that an unchanged
+/// output does not make the build system recompile its dependents.
+bool write_if_changed(const std::filesystem::path& path, const std::string& text) {
+  {
+    std::ifstream in(path, std::ios::binary);
+    if (in) {
+      std::ostringstream old;
+      old << in.rdbuf();
+      if (old.str() == text) return true;
+    }
+  }
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  return static_cast<bool>(out);
+}
+
+void generate(const ast::Program& program, const Checked& checked,
+              const diag::SourceManager& sources, const std::string& out_dir,
+              diag::Diagnostics& diags) {
+  emit::PackModel model;
+  model.program = &program;
+  model.symbols = &checked.symbols;
+  model.rules = &checked.rules;
+  model.interactions = &checked.interactions;
+  model.pack = program.files.empty() ? "pack" : program.files.front().pack.text;
+  const emit::GeneratedPack pack = emit::generate_pack(model, sources);
+  std::error_code ec;
+  std::filesystem::create_directories(out_dir, ec);
+  const std::filesystem::path dir(out_dir);
+  if (ec || !write_if_changed(dir / pack.header_name, pack.header) ||
+      !write_if_changed(dir / pack.source_name, pack.source)) {
+    diags.error({}, "cannot write the generated files into '" + out_dir + "'");
+  }
 }
 
 Result finish(diag::Diagnostics& diags) {
@@ -55,7 +101,11 @@ Result compile(const Options& options) {
   diag::Diagnostics diags(sources);
   configure(diags, options);
   const ast::Program program = parse::load_program(options.inputs, sources, diags);
-  run_checks(program, diags);
+  Checked checked;
+  run_checks(program, diags, checked);
+  if (!diags.has_errors() && !options.out_dir.empty()) {
+    generate(program, checked, sources, options.out_dir, diags);
+  }
   return finish(diags);
 }
 
@@ -64,7 +114,8 @@ Result compile_text(const std::string& path, const std::string& text, const Opti
   diag::Diagnostics diags(sources);
   configure(diags, options);
   const ast::Program program = parse::load_text(path, text, sources, diags);
-  run_checks(program, diags);
+  Checked checked;
+  run_checks(program, diags, checked);
   return finish(diags);
 }
 

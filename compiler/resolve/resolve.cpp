@@ -152,10 +152,8 @@ void resolve_rule(const ast::Rule& rule, Resolver& r) {
     const_cast<ast::Assign&>(a).target = r.embedding(a.embedding.text, a.embedding.loc);
     r.expr(*a.value, before);
   }
-  Scope after;  // updates read the rewritten map
+  Scope after;  // updates read the rewritten map; lets describe the match, so they are not visible
   after.params = &rule.params;
-  after.lets = &rule.lets;
-  after.visible_lets = rule.lets.size();
   after.nodes = right;
   for (const auto& n : rule.left.nodes) {
     if (!right.count(n.name.text)) after.hidden_nodes.insert(n.name.text);

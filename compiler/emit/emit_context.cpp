@@ -1,0 +1,36 @@
+#include "emit/emit_context.hpp"
+
+#include "emit/names.hpp"
+
+namespace rift::emit {
+
+void embeddings_read(const ast::Expr& e, std::set<std::string>& out) {
+  if (e.kind == ast::Expr::Kind::Read || e.kind == ast::Expr::Kind::Collect) out.insert(e.name);
+  for (const auto& a : e.args)
+    embeddings_read(*a, out);
+}
+
+void fetch_embeddings(Writer& w, const std::set<std::string>& names,
+                      const resolve::Symbols& symbols, const std::string& user) {
+  for (const std::string& name : names) {
+    const ast::Embedding* emb = symbols.embedding(name);
+    w.line("auto " + embedding_var(name) + " = require_embedding<" + cpp_type(emb->type) + ">(g, " +
+           quote(name) + ", " + quote(user) + ");");
+  }
+}
+
+void write_sourced(Writer& w, const diag::Location& loc, const std::string& statement) {
+  w.from_source(loc);
+  w.line(statement);
+  w.resume();
+}
+
+void write_lets(Writer& w, const std::vector<ast::Let>& lets, const ExprContext& ctx) {
+  for (const ast::Let& l : lets) {
+    write_sourced(w, l.value->loc,
+                  "[[maybe_unused]] const " + cpp_type(l.value->type) + " " +
+                      let_name(l.name.text) + " = " + emit_expr(*l.value, ctx) + ";");
+  }
+}
+
+}  // namespace rift::emit

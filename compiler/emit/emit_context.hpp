@@ -1,0 +1,50 @@
+// Shared by the emitters of rules, interactions, criteria and initialisers:
+// the checked program, the writer, and helpers to write expressions with
+// #line directives pointing at the .rules file.
+#pragma once
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "ast/program.hpp"
+#include "check/topology.hpp"
+#include "emit/expr_emit.hpp"
+#include "emit/writer.hpp"
+#include "lower/rule_plan.hpp"
+#include "resolve/symbols.hpp"
+
+namespace rift::emit {
+
+struct PackModel {
+  const ast::Program* program = nullptr;
+  const resolve::Symbols* symbols = nullptr;
+  const std::vector<check::CheckedRule>* rules = nullptr;
+  const std::vector<check::CheckedInteraction>* interactions = nullptr;
+  std::string pack;  // C++ namespace name of the pack
+};
+
+/// Names of the embeddings an expression reads.
+void embeddings_read(const ast::Expr& e, std::set<std::string>& out);
+
+/// `auto e_x = require_embedding<T>(g, "x", user);` for every name.
+void fetch_embeddings(Writer& w, const std::set<std::string>& names,
+                      const resolve::Symbols& symbols, const std::string& user);
+
+/// `const T l_x = ...;` for each let, each with its #line.
+void write_lets(Writer& w, const std::vector<ast::Let>& lets, const ExprContext& ctx);
+
+/// One statement whose expression comes from `loc` in a .rules file.
+void write_sourced(Writer& w, const diag::Location& loc, const std::string& statement);
+
+/// The matching code shared by rules and interactions: fills left_<v> for every
+/// left node from the rows already built; `fail` is the statement run on a mismatch.
+void emit_match(Writer& w, const check::RuleGraph& g, const lower::MatchPlan& match,
+                const std::string& fail);
+
+void emit_rule(Writer& w, const check::CheckedRule& rule, const PackModel& model);
+void emit_interaction(Writer& w, const check::CheckedInteraction& inter, const PackModel& model);
+void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& model);
+void emit_initialisers(Writer& w, const PackModel& model);
+
+}  // namespace rift::emit

@@ -1,0 +1,171 @@
+#include "emit/expr_emit.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "check/builtins.hpp"
+#include "emit/names.hpp"
+
+namespace rift::emit {
+
+namespace {
+
+using ast::Expr;
+using ast::Type;
+
+bool scalar(Type t) {
+  return t == Type::Int || t == Type::Real;
+}
+
+std::string real_literal(double v) {
+  if (std::isinf(v)) return "std::numeric_limits<rift::Real>::infinity()";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  std::string s = buf;
+  if (s.find_first_of(".en") == std::string::npos) s += ".0";
+  return "rift::Real(" + s + ")";
+}
+
+std::string dart_path(const Expr& e, const ExprContext& ctx) {
+  std::string d = ctx.dart(e.node);
+  for (int h : e.hops)
+    d = ctx.map + ".alpha(" + d + ", " + std::to_string(h) + ")";
+  return d;
+}
+
+class Emitter {
+ public:
+  explicit Emitter(const ExprContext& ctx) : ctx_(ctx) {}
+
+  std::string expr(const Expr& e) {
+    switch (e.kind) {
+      case Expr::Kind::IntLit:
+        return "std::int64_t{" + std::to_string(e.integer) + "}";
+      case Expr::Kind::RealLit:
+        return real_literal(e.real);
+      case Expr::Kind::BoolLit:
+        return e.boolean ? "true" : "false";
+      case Expr::Kind::Name:
+        if (e.let) return let_name(e.name);
+        if (e.param) return ctx_.args + "." + member_name(e.name);
+        return ctx_.params + "." + member_name(e.name);
+      case Expr::Kind::Read:
+        return embedding_var(e.name) + "[" + dart_path(e, ctx_) + "]";
+      case Expr::Kind::Collect:
+        return "collect_" + e.op + "(" + ctx_.map + ", " + embedding_var(e.name) + ", " +
+               dart_path(e, ctx_) + ", " + orbit_code(e.orbit.dims) + ")";
+      case Expr::Kind::Unary:
+        return unary(e);
+      case Expr::Kind::Binary:
+        return binary(e);
+      case Expr::Kind::Cond: {
+        const std::string t = cpp_type(e.type);
+        return "(" + expr(*e.args[0]) + " ? " + t + "(" + as(*e.args[1], e.type) + ") : " + t +
+               "(" + as(*e.args[2], e.type) + "))";
+      }
+      case Expr::Kind::Index: {
+        std::string out = "(" + expr(*e.args[0]) + ")(";
+        for (std::size_t k = 1; k < e.args.size(); ++k) {
+          if (k > 1) out += ", ";
+          out += "static_cast<Eigen::Index>(" + expr(*e.args[k]) + ")";
+        }
+        return out + ")";
+      }
+      case Expr::Kind::Call:
+        return call(e);
+    }
+    return "0";
+  }
+
+ private:
+  std::string as(const Expr& e, Type to) { return convert(expr(e), e.type, to); }
+
+  std::string unary(const Expr& e) {
+    if (e.op == "not") return "(!" + expr(*e.args[0]) + ")";
+    if (scalar(e.type)) return "(-" + expr(*e.args[0]) + ")";
+    return cpp_type(e.type) + "(-" + expr(*e.args[0]) + ")";
+  }
+
+  std::string binary(const Expr& e) {
+    const Expr& a = *e.args[0];
+    const Expr& b = *e.args[1];
+    const std::string& op = e.op;
+    if (op == "and" || op == "or") {
+      return "(" + expr(a) + (op == "and" ? " && " : " || ") + expr(b) + ")";
+    }
+    // Scalars meet in a common type; next to a vector or matrix they are reals.
+    Type ta = a.type, tb = b.type;
+    if (scalar(ta) && scalar(tb)) {
+      const Type common = ta == Type::Real || tb == Type::Real ? Type::Real : Type::Int;
+      return "(" + as(a, common) + " " + op + " " + as(b, common) + ")";
+    }
+    const std::string lhs = scalar(ta) ? as(a, Type::Real) : expr(a);
+    const std::string rhs = scalar(tb) ? as(b, Type::Real) : expr(b);
+    if (op == "==" || op == "!=") return "(" + lhs + " " + op + " " + rhs + ")";
+    return cpp_type(e.type) + "(" + lhs + " " + op + " " + rhs + ")";
+  }
+
+  std::string call(const Expr& e) {
+    std::vector<Type> types;
+    for (const auto& a : e.args)
+      types.push_back(a->type);
+    const check::Signature* sig = check::select_overload(*check::builtin(e.name), types);
+    std::vector<std::string> x;
+    for (std::size_t k = 0; k < e.args.size(); ++k)
+      x.push_back(as(*e.args[k], sig->params[k]));
+    const std::string& f = e.name;
+    auto join = [&] {
+      std::string out;
+      for (std::size_t k = 0; k < x.size(); ++k)
+        out += (k ? ", " : "") + x[k];
+      return out;
+    };
+    if (f == "vec3") return "rift::Vec3(" + join() + ")";
+    if (f == "mat3") return "(rift::Mat3() << " + join() + ").finished()";
+    if (f == "identity") return "rift::Mat3(rift::Mat3::Identity())";
+    if (f == "real") return "static_cast<rift::Real>(" + x[0] + ")";
+    if (f == "int") return "static_cast<std::int64_t>(" + x[0] + ")";
+    if (f == "min" || f == "max" || f == "clamp") {
+      return "std::" + f + "<" + cpp_type(sig->result) + ">(" + join() + ")";
+    }
+    if (f == "abs" && sig->result == Type::Int) return "std::abs(" + x[0] + ")";
+    if (f == "dot") return "(" + x[0] + ").dot(" + x[1] + ")";
+    if (f == "cross") return "rift::Vec3((" + x[0] + ").cross(" + x[1] + "))";
+    if (f == "norm") return "(" + x[0] + ").norm()";
+    if (f == "normalize") return "rift::Vec3((" + x[0] + ").normalized())";
+    if (f == "outer") return "rift::Mat3((" + x[0] + ") * (" + x[1] + ").transpose())";
+    if (f == "transpose") return "rift::Mat3((" + x[0] + ").transpose())";
+    if (f == "inverse") return "rift::Mat3((" + x[0] + ").inverse())";
+    if (f == "det") return "(" + x[0] + ").determinant()";
+    if (f == "trace") return "(" + x[0] + ").trace()";
+    if (f == "rotation") return "polar_rotation(" + x[0] + ")";
+    if (f == "max_eigenvalue") return "symmetric_max_eigenvalue(" + x[0] + ")";
+    if (f == "max_eigenvector") return "symmetric_max_eigenvector(" + x[0] + ")";
+    if (f == "eigenvalues") return "symmetric_eigenvalues(" + x[0] + ")";
+    return "std::" + f + "(" + join() +
+           ")";  // abs sqrt exp log sin cos tan acos asin atan atan2 pow
+  }
+
+  const ExprContext& ctx_;
+};
+
+}  // namespace
+
+std::string convert(const std::string& code, Type from, Type to) {
+  if (from == Type::Int && to == Type::Real) return "static_cast<rift::Real>(" + code + ")";
+  return code;
+}
+
+std::string orbit_code(const std::vector<int>& dims) {
+  unsigned mask = 0;
+  for (int d : dims) {
+    if (d >= 0 && d < 8) mask |= 1u << d;
+  }
+  return "rift::Orbit::from_mask(" + std::to_string(mask) + ")";
+}
+
+std::string emit_expr(const ast::Expr& e, const ExprContext& ctx) {
+  return Emitter(ctx).expr(e);
+}
+
+}  // namespace rift::emit

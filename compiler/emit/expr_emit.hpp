@@ -1,0 +1,27 @@
+// Expressions of the rule language as C++ expressions over Eigen fixed-size
+// types. Every non-scalar intermediate is materialised in its concrete type,
+// so no Eigen expression template outlives its operands.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "ast/expr.hpp"
+
+namespace rift::emit {
+
+struct ExprContext {
+  /// The C++ expression of the dart a node (or dart variable) stands for.
+  std::function<std::string(const std::string& node)> dart;
+  std::string args = "args";      // the rule's parameters
+  std::string params = "params";  // the pack's parameters
+  std::string map = "g";          // the rift::GMap
+};
+
+std::string emit_expr(const ast::Expr& e, const ExprContext& ctx);
+/// `code` (of type `from`) converted to `to` (only int -> real converts).
+std::string convert(const std::string& code, ast::Type from, ast::Type to);
+/// rift::Orbit::from_mask(...) for a list of dimensions.
+std::string orbit_code(const std::vector<int>& dims);
+
+}  // namespace rift::emit

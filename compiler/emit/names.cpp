@@ -1,0 +1,78 @@
+#include "emit/names.hpp"
+
+#include <set>
+
+namespace rift::emit {
+
+std::string cpp_type(ast::Type t) {
+  switch (t) {
+    case ast::Type::Real:
+      return "rift::Real";
+    case ast::Type::Int:
+      return "std::int64_t";
+    case ast::Type::Bool:
+      return "bool";
+    case ast::Type::Vec3:
+      return "rift::Vec3";
+    case ast::Type::Mat3:
+      return "rift::Mat3";
+    case ast::Type::Error:
+      break;
+  }
+  return "void";
+}
+
+std::string value_type_enum(ast::Type t) {
+  switch (t) {
+    case ast::Type::Real:
+      return "rift::ValueType::kReal";
+    case ast::Type::Int:
+      return "rift::ValueType::kInt";
+    case ast::Type::Bool:
+      return "rift::ValueType::kBool";
+    case ast::Type::Vec3:
+      return "rift::ValueType::kVec3";
+    case ast::Type::Mat3:
+      return "rift::ValueType::kMat3";
+    case ast::Type::Error:
+      break;
+  }
+  return "rift::ValueType::kReal";
+}
+
+// Rule-language identifiers are [A-Za-z_][A-Za-z0-9_]*; a prefix keeps them
+// apart from C++ keywords and from the generator's own locals.
+std::string let_name(std::string_view name) {
+  return "l_" + std::string(name);
+}
+std::string dart_name(std::string_view node) {
+  return "d_" + std::string(node);
+}
+std::string embedding_var(std::string_view name) {
+  return "e_" + std::string(name);
+}
+std::string rule_function(std::string_view rule) {
+  return "apply_" + std::string(rule);
+}
+std::string member_name(std::string_view name) {
+  // Fields are part of the generated API, so they keep the rule's spelling;
+  // only C++ keywords get a trailing underscore.
+  static const std::set<std::string, std::less<>> keywords = {
+      "alignas",   "alignof",   "and",       "asm",       "auto",      "bitand",   "bitor",
+      "bool",      "break",     "case",      "catch",     "char",      "class",    "compl",
+      "concept",   "const",     "consteval", "constexpr", "constinit", "continue", "co_await",
+      "co_return", "co_yield",  "decltype",  "default",   "delete",    "do",       "double",
+      "else",      "enum",      "explicit",  "export",    "extern",    "false",    "float",
+      "for",       "friend",    "goto",      "if",        "inline",    "int",      "long",
+      "mutable",   "namespace", "new",       "noexcept",  "not",       "nullptr",  "operator",
+      "or",        "private",   "protected", "public",    "register",  "requires", "return",
+      "short",     "signed",    "sizeof",    "static",    "struct",    "switch",   "template",
+      "this",      "throw",     "true",      "try",       "typedef",   "typeid",   "typename",
+      "union",     "unsigned",  "using",     "virtual",   "void",      "volatile", "while",
+      "xor"};
+  std::string out(name);
+  if (keywords.count(name)) out += '_';
+  return out;
+}
+
+}  // namespace rift::emit

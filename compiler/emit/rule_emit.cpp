@@ -1,0 +1,203 @@
+// A rule becomes one function: build the rows of the hook orbit, reach every
+// left node by its explicit arcs, verify links and injectivity, evaluate the
+// precondition and the right-node expressions on the match, then delete,
+// create, relink, fix embedding slots, write values and run the updates.
+#include "emit/emit_context.hpp"
+#include "emit/names.hpp"
+#include "lower/rule_plan.hpp"
+
+namespace rift::emit {
+
+namespace {
+
+std::string L(int v) {
+  return "left_" + std::to_string(v);
+}
+std::string R(int v) {
+  return "right_" + std::to_string(v);
+}
+
+std::string int_list(const std::vector<int>& v) {
+  std::string out;
+  for (std::size_t k = 0; k < v.size(); ++k)
+    out += (k ? ", " : "") + std::to_string(v[k]);
+  return out;
+}
+
+/// Opens the per-row loop and binds `d_<node>` for every node of a side.
+void open_row_loop(Writer& w, const check::PatternSide& side, bool right) {
+  w.open("for (std::size_t r = 0; r < rows; ++r) {");
+  for (std::size_t v = 0; v < side.nodes.size(); ++v) {
+    const int i = static_cast<int>(v);
+    w.line("[[maybe_unused]] const rift::Dart " + dart_name(side.nodes[v].name()) + " = " +
+           (right ? R(i) : L(i)) + "[r];");
+  }
+}
+
+}  // namespace
+
+void emit_match(Writer& w, const check::RuleGraph& g, const lower::MatchPlan& match,
+                const std::string& fail) {
+  const std::size_t nl = g.left.nodes.size();
+  w.line("s.left.resize(" + std::to_string(nl) + " * rows);");
+  for (std::size_t v = 0; v < nl; ++v) {
+    w.line("[[maybe_unused]] rift::Dart* const " + L(static_cast<int>(v)) + " = s.left.data() + " +
+           std::to_string(v) + " * rows;  // " + g.left.nodes[v].name());
+  }
+  for (std::size_t j = 0; j < match.hooks.size(); ++j) {
+    w.line("std::copy_n(s.rows.data() + " + std::to_string(j) + " * rows, rows, " +
+           L(match.hooks[j]) + ");");
+  }
+  for (const lower::Follow& f : match.follows) {
+    w.line("for (std::size_t r = 0; r < rows; ++r) " + L(f.to) + "[r] = g.alpha(" + L(f.from) +
+           "[r], " + std::to_string(f.dim) + ");");
+  }
+  for (const lower::ArcCheck& a : match.arc_checks) {
+    w.open("for (std::size_t r = 0; r < rows; ++r) {");
+    w.line("if (g.alpha(" + L(a.a) + "[r], " + std::to_string(a.dim) + ") != " + L(a.b) + "[r]) " +
+           fail);
+    w.close();
+  }
+  for (const lower::LabelLink& c : match.label_checks) {
+    w.open("for (std::size_t r = 0; r < rows; ++r) {");
+    w.line("if (g.alpha(" + L(c.node) + "[r], " + std::to_string(c.dim) + ") != " + L(c.node) +
+           "[s.nbr[r * label + " + std::to_string(c.pos) + "]]) " + fail);
+    w.close();
+  }
+  if (nl > 0) w.line("if (!distinct_darts(g, s.left.data(), s.left.size())) " + fail);
+}
+
+void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) {
+  const ast::Rule& rule = *cr.rule;
+  const check::RuleGraph& g = cr.graph;
+  const lower::MatchPlan match = lower::plan_match(g);
+  const lower::RewritePlan rewrite = lower::plan_rewrite(g);
+  const std::string user = "rule '" + rule.name.text + "'";
+  ExprContext ctx;
+  ctx.dart = [](const std::string& node) { return dart_name(node); };
+
+  std::set<std::string> used;
+  for (const auto& l : rule.lets)
+    embeddings_read(*l.value, used);
+  for (const auto& e : rule.whens)
+    embeddings_read(*e, used);
+  for (const auto& a : rule.right.assigns) {
+    embeddings_read(*a.value, used);
+    used.insert(a.embedding.text);
+  }
+  for (const auto& u : rule.updates) {
+    embeddings_read(*u.value, used);
+    used.insert(u.embedding.text);
+  }
+
+  w.line("// " + user + " (" + std::to_string(g.hooks.size()) + " hook(s))");
+  w.open("bool " + rule_function(rule.name.text) +
+         "(rift::GMap& g, std::span<const rift::Dart> hooks, const " + rule.name.text +
+         "_args& args, const Params& params) {");
+  w.line("(void)args;");
+  w.line("(void)params;");
+  w.line("if (g.dimension() != " + std::to_string(g.dimension) + ") throw std::invalid_argument(" +
+         quote(user + " needs a G-map of dimension " + std::to_string(g.dimension)) + ");");
+  w.line("if (hooks.size() != " + std::to_string(g.hooks.size()) + ") return false;");
+  w.open("for (rift::Dart h : hooks) {");
+  w.line("if (!g.is_alive(h)) return false;");
+  w.close();
+  w.line("Scratch& s = scratch();");
+  if (match.hook_dims.empty()) {
+    w.line("const int* const hook_dims = nullptr;");
+  } else {
+    w.line("static constexpr int hook_dims[] = {" + int_list(match.hook_dims) + "};");
+  }
+  w.line("std::size_t rows = 1;");
+  w.line("if (!build_rows(g, hooks.data(), hooks.size(), hook_dims, " +
+         std::to_string(match.hook_dims.size()) + ", s, rows)) return false;");
+  w.line("[[maybe_unused]] const std::size_t label = " + std::to_string(match.hook_dims.size()) +
+         ";");
+  fetch_embeddings(w, used, *model.symbols, user);
+
+  emit_match(w, g, match, "return false;");
+
+  // ---- precondition and values, on the match
+  if (!rule.whens.empty()) {
+    open_row_loop(w, g.left, false);
+    write_lets(w, rule.lets, ctx);
+    for (const auto& cond : rule.whens) {
+      write_sourced(w, cond->loc, "if (!(" + emit_expr(*cond, ctx) + ")) return false;");
+    }
+    w.close();
+  }
+  for (std::size_t k = 0; k < rule.right.assigns.size(); ++k) {
+    const ast::Assign& a = rule.right.assigns[k];
+    w.line("std::vector<" + cpp_type(a.target->type) + "> value_" + std::to_string(k) + "(rows);");
+  }
+  if (!rule.right.assigns.empty()) {
+    open_row_loop(w, g.left, false);
+    write_lets(w, rule.lets, ctx);
+    for (std::size_t k = 0; k < rule.right.assigns.size(); ++k) {
+      const ast::Assign& a = rule.right.assigns[k];
+      write_sourced(w, a.value->loc,
+                    "value_" + std::to_string(k) + "[r] = " +
+                        convert(emit_expr(*a.value, ctx), a.value->type, a.target->type) + ";");
+    }
+    w.close();
+  }
+
+  // ---- rewrite
+  for (int v : rewrite.deleted) {
+    w.line("for (std::size_t r = 0; r < rows; ++r) g.delete_dart(" + L(v) + "[r]);");
+  }
+  const std::size_t nr = g.right.nodes.size();
+  w.line("s.right.resize(" + std::to_string(nr) + " * rows);");
+  for (std::size_t v = 0; v < nr; ++v) {
+    const int l = rewrite.right_from_left[v];
+    const std::string rv = R(static_cast<int>(v));
+    w.line("[[maybe_unused]] rift::Dart* const " + rv + " = s.right.data() + " + std::to_string(v) +
+           " * rows;  // " + g.right.nodes[v].name() + (l < 0 ? " (created)" : ""));
+    if (l >= 0) {
+      w.line("std::copy_n(" + L(l) + ", rows, " + rv + ");");
+    } else {
+      w.line("for (std::size_t r = 0; r < rows; ++r) " + rv + "[r] = g.create_dart();");
+    }
+  }
+  for (const lower::ArcCheck& u : rewrite.unlinks) {
+    w.line("for (std::size_t r = 0; r < rows; ++r) g.unlink(" + R(u.a) + "[r], " +
+           std::to_string(u.dim) + ");");
+  }
+  auto link = [&](const std::string& x, const std::string& y, int dim) {
+    const std::string d = std::to_string(dim);
+    w.open("for (std::size_t r = 0; r < rows; ++r) {");
+    w.line("const rift::Dart x = " + x + ";");
+    w.line("const rift::Dart y = " + y + ";");
+    w.line("if (x != y && g.is_free(x, " + d + ") && g.is_free(y, " + d + ")) g.link(x, y, " + d +
+           ");");
+    w.close();
+  };
+  for (const lower::ArcCheck& a : rewrite.arcs) {
+    if (a.a != a.b) link(R(a.a) + "[r]", R(a.b) + "[r]", a.dim);
+  }
+  for (const lower::LabelLink& l : rewrite.label_links) {
+    link(R(l.node) + "[r]", R(l.node) + "[s.nbr[r * label + " + std::to_string(l.pos) + "]]",
+         l.dim);
+  }
+  if (nr > 0) w.line("update_embedding_slots(g, s.right.data(), s.right.size(), s);");
+  for (std::size_t k = 0; k < rule.right.assigns.size(); ++k) {
+    const ast::Assign& a = rule.right.assigns[k];
+    const int v = g.right.find(a.node.text);
+    w.line("for (std::size_t r = 0; r < rows; ++r) " + embedding_var(a.embedding.text) + "[" +
+           R(v) + "[r]] = value_" + std::to_string(k) + "[r];");
+  }
+  if (!rule.updates.empty()) {
+    open_row_loop(w, g.right, true);
+    for (const ast::Assign& u : rule.updates) {
+      write_sourced(w, u.value->loc,
+                    embedding_var(u.embedding.text) + "[" + dart_name(u.node.text) + "] = " +
+                        convert(emit_expr(*u.value, ctx), u.value->type, u.target->type) + ";");
+    }
+    w.close();
+  }
+  w.line("return true;");
+  w.close();
+  w.line();
+}
+
+}  // namespace rift::emit
