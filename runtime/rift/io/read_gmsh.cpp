@@ -62,13 +62,13 @@ class GmshReader {
       read_format(in_.next());
     } else {
       in_.fail(first.line,
-               "not a Gmsh file: expected $MeshFormat or $NOD, found " + quoted(first.text));
+               "not a Gmsh file: expected $MeshFormat or $NOD, found " + quote_text(first.text));
     }
     while (!in_.at_end()) {
       const Token header = in_.next();
       if (header.text.empty() || header.text.front() != '$') {
-        in_.fail(header.line,
-                 "expected a section such as $Nodes or $Elements, found " + quoted(header.text));
+        in_.fail(header.line, "expected a section such as $Nodes or $Elements, found " +
+                                  quote_text(header.text));
       }
       const bool v1 = dialect_ == Dialect::kV1;
       if (header.text == (v1 ? "$NOD" : "$Nodes")) {
@@ -109,7 +109,7 @@ class GmshReader {
     const Token end = in_.next();
     if (end.text != "$EndMeshFormat") {
       in_.fail(end.line, "expected $EndMeshFormat after the format line (line " +
-                             std::to_string(header.line + 1) + "), found " + quoted(end.text));
+                             std::to_string(header.line + 1) + "), found " + quote_text(end.text));
     }
   }
 
@@ -155,7 +155,7 @@ class GmshReader {
   void end_of_entry(int line) {
     const Token extra = in_.next_on_line();
     if (!extra.empty())
-      in_.fail(line, "unexpected " + quoted(extra.text) + " at the end of the line");
+      in_.fail(line, "unexpected " + quote_text(extra.text) + " at the end of the line");
   }
 
   void expect_end(const Token& header, std::size_t announced, std::size_t done, const char* noun) {
@@ -166,7 +166,8 @@ class GmshReader {
       in_.fail(t.line, "unexpected end of file: section " + std::string(header.text) + " (line " +
                            std::to_string(header.line) + ") has no " + end);
     }
-    if (t.text.front() == '$') in_.fail(t.line, "expected " + end + ", found " + quoted(t.text));
+    if (t.text.front() == '$')
+      in_.fail(t.line, "expected " + end + ", found " + quote_text(t.text));
     in_.fail(t.line, "section " + std::string(header.text) + " holds more than the " +
                          std::to_string(announced) + " " + noun + " it announces (" +
                          std::to_string(done) + " expected, then " + end + ")");

@@ -2,6 +2,7 @@
 // followed by a count and that many records. The format is free (a keyword and
 // its value may be on separate lines: "Dimension\n3"), so it is read as tokens.
 #include <array>
+#include <cctype>
 #include <span>
 #include <string>
 #include <string_view>
@@ -68,11 +69,11 @@ class MeditReader {
     const Token first = in_.next();
     if (first.text != "MeshVersionFormatted") {
       in_.fail(first.line,
-               "not a Medit mesh: expected MeshVersionFormatted, found " + quoted(first.text));
+               "not a Medit mesh: expected MeshVersionFormatted, found " + quote_text(first.text));
     }
     const Token version = in_.expect("the Medit format version");
     if (version.text != "1" && version.text != "2") {
-      in_.fail(version.line, "unsupported Medit format version " + quoted(version.text) +
+      in_.fail(version.line, "unsupported Medit format version " + quote_text(version.text) +
                                  " (rift reads versions 1 and 2 in ASCII)");
     }
     bool ended = false;
@@ -84,19 +85,22 @@ class MeditReader {
       } else if (key.text == "Dimension") {
         const Token d = in_.expect("the dimension");
         const std::int64_t dim = in_.to_integer(d, "the dimension");
-        if (dim != 2 && dim != 3) in_.fail(d.line, "unsupported dimension " + quoted(d.text));
+        if (dim != 2 && dim != 3) in_.fail(d.line, "unsupported dimension " + quote_text(d.text));
         dimension_ = static_cast<int>(dim);
       } else if (key.text == "Vertices") {
         read_vertices(key);
       } else if (const MeditKeyword* k = find_keyword(key.text)) {
         read_records(key, *k);
+      } else if (std::isalpha(static_cast<unsigned char>(key.text.front()))) {
+        in_.fail(key.line, "unknown Medit keyword " + quote_text(key.text));
       } else {
-        in_.fail(key.line, "unknown Medit keyword " + quoted(key.text));
+        in_.fail(key.line, "expected a Medit keyword, found " + quote_text(key.text) +
+                               " (does a section hold more entries than its count announces?)");
       }
     }
     if (!in_.at_end()) {
       const Token t = in_.next();
-      in_.fail(t.line, "unexpected " + quoted(t.text) + " after End");
+      in_.fail(t.line, "unexpected " + quote_text(t.text) + " after End");
     }
     elements_.finish(mesh_, 0);
     return std::move(mesh_);

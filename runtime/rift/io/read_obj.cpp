@@ -57,7 +57,8 @@ MeshData read_obj(const std::string& source, std::string_view text) {
       for (Token t = in.next_on_line(); !t.empty(); t = in.next_on_line()) {
         // v, v/vt, v//vn or v/vt/vn: the vertex is what precedes the first '/'.
         const Token v{t.text.substr(0, t.text.find('/')), t.line};
-        if (v.empty()) in.fail(t.line, "face corner " + quoted(t.text) + " has no vertex index");
+        if (v.empty())
+          in.fail(t.line, "face corner " + quote_text(t.text) + " has no vertex index");
         const std::int64_t index = in.to_integer(v, "a vertex index");
         if (index == 0) in.fail(t.line, "vertex index 0 is invalid (OBJ indices start at 1)");
         std::int64_t resolved = index - 1;
@@ -84,7 +85,7 @@ MeshData read_obj(const std::string& source, std::string_view text) {
     } else if (is_ignored(key.text)) {
       in.skip_line();
     } else {
-      in.fail(key.line, "unknown OBJ statement " + quoted(key.text));
+      in.fail(key.line, "unknown OBJ statement " + quote_text(key.text));
     }
   }
 

@@ -43,13 +43,13 @@ class VtkLegacyReader {
     bool grid = false;
     const Token dataset = in_.expect("DATASET");
     if (!same_word(dataset.text, "DATASET")) {
-      in_.fail(dataset.line, "expected DATASET, found " + quoted(dataset.text));
+      in_.fail(dataset.line, "expected DATASET, found " + quote_text(dataset.text));
     }
     const Token kind = in_.expect("the dataset type");
     if (same_word(kind.text, "UNSTRUCTURED_GRID")) {
       grid = true;
     } else if (!same_word(kind.text, "POLYDATA")) {
-      in_.fail(kind.line, "unsupported VTK dataset type " + quoted(kind.text) +
+      in_.fail(kind.line, "unsupported VTK dataset type " + quote_text(kind.text) +
                               " (rift reads UNSTRUCTURED_GRID and POLYDATA)");
     }
     CellLists cells;
@@ -73,7 +73,7 @@ class VtkLegacyReader {
                  same_word(key.text, "FIELD")) {
         break;
       } else {
-        in_.fail(key.line, "unexpected keyword " + quoted(key.text) + " in a VTK " +
+        in_.fail(key.line, "unexpected keyword " + quote_text(key.text) + " in a VTK " +
                                std::string(grid ? "UNSTRUCTURED_GRID" : "POLYDATA"));
       }
     }
@@ -99,7 +99,7 @@ class VtkLegacyReader {
     const Token version{version_line.text.substr(prefix.size()), version_line.line};
     const double v = in_.to_real(version, "the VTK file version");
     if (v < 1.0 || v >= 6.0) {
-      in_.fail(version.line, "unsupported VTK file version " + quoted(version.text) +
+      in_.fail(version.line, "unsupported VTK file version " + quote_text(version.text) +
                                  " (rift reads versions 1.0 to 5.1)");
     }
     in_.take_line();  // the title, free text, possibly empty
@@ -109,7 +109,7 @@ class VtkLegacyReader {
     }
     if (!same_word(format.text, "ASCII")) {
       in_.fail(format.line,
-               "expected ASCII or BINARY on the third line, found " + quoted(format.text));
+               "expected ASCII or BINARY on the third line, found " + quote_text(format.text));
     }
   }
 
@@ -126,7 +126,7 @@ class VtkLegacyReader {
         !same_word(t.text, "inf")) {
       in_.fail(t.line, std::string(key.text) + " (line " + std::to_string(key.line) +
                            ") announces " + std::to_string(announced) + " values, but " +
-                           quoted(t.text) + " comes after " + std::to_string(done));
+                           quote_text(t.text) + " comes after " + std::to_string(done));
     }
     return t;
   }
@@ -206,7 +206,7 @@ class VtkLegacyReader {
     }
     const Token conn = in_.expect("CONNECTIVITY");
     if (!same_word(conn.text, "CONNECTIVITY")) {
-      in_.fail(conn.line, "expected CONNECTIVITY, found " + quoted(conn.text));
+      in_.fail(conn.line, "expected CONNECTIVITY, found " + quote_text(conn.text));
     }
     in_.expect("the data type of the connectivity");
     cells.connectivity.reserve(in_.reserve_limit(size));

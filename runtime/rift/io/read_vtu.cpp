@@ -58,7 +58,9 @@ class VtuReader {
     if (offset < 0) return 0;  // pugixml could not tell
     const auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(),
                                      static_cast<std::size_t>(offset));
-    return static_cast<int>(it - line_starts_.begin()) + 1;
+    // line_starts_ holds the offset where each line begins; the number of
+    // line starts at or before `offset` is its 1-based line.
+    return static_cast<int>(it - line_starts_.begin());
   }
   int line_of(const pugi::xml_node node) const { return line_at(node.offset_debug()); }
 

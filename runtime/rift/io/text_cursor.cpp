@@ -22,7 +22,7 @@ std::string_view without_plus(std::string_view text) {
 
 }  // namespace
 
-std::string quoted(std::string_view text) {
+std::string quote_text(std::string_view text) {
   constexpr std::size_t kMax = 40;
   std::string out = "'";
   for (std::size_t i = 0; i < std::min(text.size(), kMax); ++i) {
@@ -141,13 +141,14 @@ double TextCursor::to_real(Token token, std::string_view what) const {
   double value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (ec == std::errc::result_out_of_range) {
-    fail(token.line, std::string(what) + " " + quoted(token.text) + " is out of range");
+    fail(token.line, std::string(what) + " " + quote_text(token.text) + " is out of range");
   }
   if (ec != std::errc() || end != text.data() + text.size()) {
-    fail(token.line, "expected " + std::string(what) + " (a number), found " + quoted(token.text));
+    fail(token.line,
+         "expected " + std::string(what) + " (a number), found " + quote_text(token.text));
   }
   if (!std::isfinite(value)) {
-    fail(token.line, std::string(what) + " " + quoted(token.text) + " is not a finite number");
+    fail(token.line, std::string(what) + " " + quote_text(token.text) + " is not a finite number");
   }
   return value;
 }
@@ -157,11 +158,11 @@ std::int64_t TextCursor::to_integer(Token token, std::string_view what) const {
   std::int64_t value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (ec == std::errc::result_out_of_range) {
-    fail(token.line, std::string(what) + " " + quoted(token.text) + " is out of range");
+    fail(token.line, std::string(what) + " " + quote_text(token.text) + " is out of range");
   }
   if (ec != std::errc() || end != text.data() + text.size()) {
     fail(token.line,
-         "expected " + std::string(what) + " (an integer), found " + quoted(token.text));
+         "expected " + std::string(what) + " (an integer), found " + quote_text(token.text));
   }
   return value;
 }
@@ -170,9 +171,10 @@ std::size_t TextCursor::to_count(Token token, std::string_view what) const {
   const std::int64_t value = to_integer(token, what);
   // Dart indices are 32-bit, so no importable mesh has more entries than this.
   constexpr std::int64_t kMaxCount = std::numeric_limits<std::int32_t>::max();
-  if (value < 0) fail(token.line, std::string(what) + " is negative (" + quoted(token.text) + ")");
+  if (value < 0)
+    fail(token.line, std::string(what) + " is negative (" + quote_text(token.text) + ")");
   if (value > kMaxCount) {
-    fail(token.line, std::string(what) + " " + quoted(token.text) + " is too large");
+    fail(token.line, std::string(what) + " " + quote_text(token.text) + " is too large");
   }
   return static_cast<std::size_t>(value);
 }

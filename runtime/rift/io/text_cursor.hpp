@@ -76,6 +76,6 @@ class TextCursor {
 };
 
 /// Quotes a token for a message, shortened if it is long (binary garbage).
-std::string quoted(std::string_view text);
+std::string quote_text(std::string_view text);
 
 }  // namespace rift::io
