@@ -1,0 +1,32 @@
+// The one error type of the output writers: names the path and the OS error.
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+namespace rift {
+
+/// An output file or folder could not be created, written or renamed.
+/// what(): "cannot write 'out/frame_000003.vtu': No space left on device".
+class OutputError : public std::runtime_error {
+ public:
+  OutputError(const std::string& action, std::filesystem::path path, std::error_code error)
+      : std::runtime_error(format(action, path, error)), path_(std::move(path)), error_(error) {}
+
+  const std::filesystem::path& path() const { return path_; }
+  std::error_code error() const { return error_; }
+
+ private:
+  static std::string format(const std::string& action, const std::filesystem::path& path,
+                            std::error_code error) {
+    std::string text = "cannot " + action + " '" + path.string() + "'";
+    if (error) text += ": " + error.message();
+    return text;
+  }
+  std::filesystem::path path_;
+  std::error_code error_;
+};
+
+}  // namespace rift
