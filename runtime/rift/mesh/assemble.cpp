@@ -253,6 +253,16 @@ GMap assemble_gmap(const MeshData& mesh, AssemblyReport* report) {
       map.add_embedding<Vec3>("position", vertex_orbit(n), MergePolicy::kMean, Vec3::Zero());
   Embedding<std::int64_t> point_index =
       map.add_embedding<std::int64_t>("point_index", vertex_orbit(n), MergePolicy::kKeepFirst, -1);
+  Embedding<std::int64_t> element_index = map.add_embedding<std::int64_t>(
+      "element_index", Orbit::all(n - 1), MergePolicy::kKeepFirst, -1);
+  {
+    Dart d = first;
+    for (std::size_t k = 0; k < mesh.elements.size(); ++k) {
+      element_index[d] = static_cast<std::int64_t>(k);
+      const MeshElement& e = mesh.elements[k];
+      d += static_cast<Dart>(n == 2 ? 2 * e.count : layout_of(e.type).dart_vertex.size());
+    }
+  }
   std::vector<std::uint8_t> referenced(mesh.points.size(), 0);
   for (std::size_t k = 0; k < dart_count; ++k) {
     const Dart d = first + static_cast<Dart>(k);

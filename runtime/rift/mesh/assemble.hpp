@@ -1,7 +1,8 @@
 // Turns element lists into a G-map: each element becomes its darts (0-, 1- and,
 // in 3D, 2-links inside it), then elements sharing an edge (2D) or a face (3D)
 // are sewn. Embeddings created: `position` (vec3) and `point_index` (int, the
-// index of the source point) on vertex orbits.
+// index of the source point) on vertex orbits, and `element_index` (int, the
+// index of the source element) on element orbits (<0,1> in 2D, <0,1,2> in 3D).
 #pragma once
 
 #include <cstddef>

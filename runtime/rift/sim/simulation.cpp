@@ -1,5 +1,6 @@
 #include "rift/sim/simulation.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "rift/sim/mass_model.hpp"
@@ -44,6 +45,11 @@ void Simulation::add_force_model(std::unique_ptr<ForceModel> model) {
   models_.push_back(std::move(model));
 }
 
+void Simulation::add_criterion(std::unique_ptr<Criterion> criterion) {
+  if (initialised_) throw std::logic_error("add_criterion after initialise");
+  criteria_.push_back(std::move(criterion));
+}
+
 void Simulation::set_total_mass(Real total_mass) {
   if (!(total_mass > 0)) throw std::invalid_argument("the total mass must be positive");
   assign_corner_masses_by_total(map_, total_mass, corner_mass_, position_);
@@ -58,6 +64,8 @@ void Simulation::initialise() {
   update_all_vertex_masses(map_, corner_mass_, vertex_mass_);
   for (auto& model : models_)
     model->initialise(map_);
+  for (auto& criterion : criteria_)
+    criterion->initialise(map_);
   refresh_inverse_masses();
   initialised_ = true;
 }
@@ -100,12 +108,80 @@ void Simulation::step() {
   // Forces at the current state are stored in their orbits (criteria read
   // them) and reused as the integrator's first stage.
   accelerations(x, v, a0_, true);
+  tears_last_step_ = criteria_.empty() ? 0 : apply_criteria();
+  if (tears_last_step_ > 0) accelerations(x, v, a0_, true);
   start_forces_ = forces_;  // later stages overwrite forces_
   integrator_.step([this](const std::vector<Vec3>& xs, const std::vector<Vec3>& vs,
                           std::vector<Vec3>& as) { accelerations(xs, vs, as, false); },
                    x, v, settings_.dt, &a0_);
   time_ += settings_.dt;
   ++steps_;
+  check_finite();
+}
+
+std::size_t Simulation::apply_criteria() {
+  candidates_.clear();
+  for (std::uint32_t c = 0; c < criteria_.size(); ++c) {
+    const std::size_t first = candidates_.size();
+    criteria_[c]->collect(map_, candidates_);
+    for (std::size_t k = first; k < candidates_.size(); ++k)
+      candidates_[k].criterion = c;
+  }
+  if (candidates_.empty()) return 0;
+  std::sort(candidates_.begin(), candidates_.end(),
+            [](const TearCandidate& a, const TearCandidate& b) {
+              if (a.criterion != b.criterion) return a.criterion < b.criterion;
+              if (a.measure != b.measure) return a.measure > b.measure;
+              return a.at < b.at;
+            });
+  touched_.clear();
+  std::size_t applied = 0;
+  for (const TearCandidate& c : candidates_) {
+    if (settings_.max_tears_per_step > 0 &&
+        applied >= static_cast<std::size_t>(settings_.max_tears_per_step)) {
+      break;
+    }
+    if (!map_.is_alive(c.at)) continue;  // removed by an earlier rewrite this step
+    if (!criteria_[c.criterion]->apply(map_, c, touched_)) continue;
+    ++applied;
+    if (settings_.check_each_rewrite) {
+      const auto problems = map_.check_validity(5);
+      if (!problems.empty()) {
+        std::string msg = "step " + std::to_string(steps_ + 1) + ": the G-map is invalid after " +
+                          "criterion '" + criteria_[c.criterion]->name() + "' applied at dart " +
+                          std::to_string(c.at) + ":";
+        for (const auto& p : problems)
+          msg += "\n  " + p;
+        throw SimulationError(msg);
+      }
+    }
+  }
+  if (applied > 0) {
+    on_topology_changed(touched_);
+    tears_ += applied;
+  }
+  return applied;
+}
+
+void Simulation::check_finite() const {
+  const OrbitAttachment& att = position_.attachment();
+  const auto& x = position_.values();
+  const auto& v = velocity_.values();
+  for (Slot s = 0; s < x.size(); ++s) {
+    if (!att.slot_alive(s) || (x[s].allFinite() && v[s].allFinite())) continue;
+    // Name the first element around the exploded vertex for the message.
+    std::string where = "vertex slot " + std::to_string(s);
+    const Embedding<std::int64_t> element = map_.embedding<std::int64_t>("element_index");
+    const Embedding<std::int64_t> point = map_.embedding<std::int64_t>("point_index");
+    map_.for_each_dart([&](Dart d) {
+      if (position_.slot(d) != s || where.find("element") != std::string::npos) return;
+      where = "vertex " + (point ? std::to_string(point[d]) : std::to_string(d));
+      if (element) where += " of element " + std::to_string(element[d]);
+    });
+    throw SimulationError("the simulation exploded at step " + std::to_string(steps_) +
+                          " (t = " + std::to_string(time_) + "): non-finite position at " + where +
+                          "; try a smaller dt or a stiffer integrator");
+  }
 }
 
 void Simulation::on_topology_changed(std::span<const Dart> touched) {

@@ -6,9 +6,11 @@
 
 #include <memory>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
 #include "rift/gmap/gmap.hpp"
+#include "rift/pack/criterion.hpp"
 #include "rift/sim/force_model.hpp"
 #include "rift/sim/integrator.hpp"
 
@@ -18,6 +20,16 @@ struct SimulationSettings {
   IntegratorKind integrator = IntegratorKind::kRK4;
   Real dt = 1e-3;
   Vec3 gravity = Vec3(0, 0, -9.81);
+  /// At most this many rewrites per step (0: no cap).
+  int max_tears_per_step = 0;
+  /// Check the G-map's validity after every rewrite (rift run --check).
+  bool check_each_rewrite = false;
+};
+
+/// A simulation that cannot go on: exploded state or an invalid map.
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 /// Names of the embeddings the loop itself uses. `position` comes from the
@@ -39,6 +51,8 @@ class Simulation {
   const SimulationSettings& settings() const { return settings_; }
 
   void add_force_model(std::unique_ptr<ForceModel> model);
+  void add_criterion(std::unique_ptr<Criterion> criterion);
+  const std::vector<std::unique_ptr<Criterion>>& criteria() const { return criteria_; }
   const std::vector<std::unique_ptr<ForceModel>>& force_models() const { return models_; }
 
   /// Corner masses from a total mass (spread by area or volume) or a density.
@@ -52,8 +66,17 @@ class Simulation {
   /// after masses and pins are set and models added.
   void initialise();
 
-  /// One step: forces at the current state (stored in their orbits), then
-  /// the integrator advances positions and velocities by dt.
+  /// One step (§3.3, Fig. 3, starting from the forces):
+  ///  1. every interaction computes its forces at the current state and
+  ///     stores them in its orbits; they are gathered per vertex;
+  ///  2. every criterion is evaluated on those forces; the candidates are
+  ///     applied in a deterministic order (criterion order, then larger
+  ///     measure first, then smaller dart), each matched again just before it
+  ///     applies, up to max_tears_per_step;
+  ///  3. if the map changed: masses of touched vertices and matches around
+  ///     them are updated, and forces recomputed;
+  ///  4. the integrator advances positions and velocities by dt, and a
+  ///     non-finite position stops the simulation with a SimulationError.
   void step();
 
   /// After rewrites: recompute the masses of the vertices of `touched`
@@ -61,6 +84,9 @@ class Simulation {
   void on_topology_changed(std::span<const Dart> touched);
 
   Real time() const { return time_; }
+  /// Rewrites applied since the start, and in the last step.
+  std::size_t tears() const { return tears_; }
+  std::size_t tears_last_step() const { return tears_last_step_; }
   std::size_t steps_done() const { return steps_; }
 
   Embedding<Vec3>& position() { return position_; }
@@ -83,6 +109,8 @@ class Simulation {
   void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& a,
                      bool store);
   void refresh_inverse_masses();
+  std::size_t apply_criteria();
+  void check_finite() const;
 
   GMap map_;
   SimulationSettings settings_;
@@ -94,6 +122,10 @@ class Simulation {
   std::vector<Vec3> forces_, start_forces_, a0_;
   std::vector<Real> inverse_mass_;  // 0 for pinned vertices and free slots
   std::vector<Dart> region_;
+  std::vector<std::unique_ptr<Criterion>> criteria_;
+  std::vector<TearCandidate> candidates_;
+  std::vector<Dart> touched_;
+  std::size_t tears_ = 0, tears_last_step_ = 0;
   Real time_ = 0;
   std::size_t steps_ = 0;
   bool initialised_ = false;

@@ -1,0 +1,37 @@
+// A compiled tearing criterion (§5): evaluated on every orbit of its type
+// after forces are known; where it holds, it proposes to apply its rule.
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "rift/gmap/gmap.hpp"
+
+namespace rift {
+
+/// One place where a criterion holds, with what its rule needs to apply.
+struct TearCandidate {
+  std::uint32_t criterion = 0;  ///< index of the criterion in the simulation
+  Dart at = kNoDart;            ///< the dart the criterion was evaluated at
+  Real measure = 0;             ///< the measure that passed the threshold
+  Vec3 normal = Vec3::Zero();   ///< rule arguments, when the rule takes a plane
+  Vec3 point = Vec3::Zero();
+};
+
+class Criterion {
+ public:
+  virtual ~Criterion() = default;
+  virtual const std::string& name() const = 0;
+  /// Binds embeddings; called once on the initial map.
+  virtual void initialise(GMap& map) = 0;
+  /// Appends a candidate (with `criterion` left to the caller) for every
+  /// orbit where the criterion holds.
+  virtual void collect(const GMap& map, std::vector<TearCandidate>& out) const = 0;
+  /// Applies the criterion's rule at the candidate. The neighbourhood may
+  /// have changed since collect(): the rule is matched again, and the call
+  /// returns false when it no longer applies. Appends touched darts.
+  virtual bool apply(GMap& map, const TearCandidate& candidate, std::vector<Dart>& touched) = 0;
+};
+
+}  // namespace rift
