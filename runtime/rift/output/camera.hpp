@@ -2,6 +2,8 @@
 // kept across frames so that the view does not jump as the body moves.
 #pragma once
 
+#include <span>
+
 #include "rift/core/types.hpp"
 
 namespace rift {
@@ -12,8 +14,8 @@ struct CameraView {
   Vec3 direction{0.45, 0.35, 1.0};
   Vec3 up{0.0, 1.0, 0.0};
   Real fov_y_degrees = 30.0;
-  Real margin = 0.08;  ///< fraction of the half-width left free at each side
-  Real expand = 1.0;   ///< grows the box around its centre (room for motion)
+  Real margin = 0.1;  ///< fraction of the half-width left free at each side
+  Real expand = 1.0;  ///< grows the box around its centre (room for motion)
 };
 
 struct ScreenPoint {
@@ -29,6 +31,9 @@ class Camera {
 
   /// A camera that shows all of [lo, hi] in an image of aspect width/height.
   static Camera framing(const Vec3& lo, const Vec3& hi, Real aspect, const CameraView& view = {});
+  /// A camera that shows every point, centred on their projection: a tighter
+  /// fit than the bounding box's for curved or thin bodies.
+  static Camera framing(std::span<const Vec3> points, Real aspect, const CameraView& view = {});
 
   /// Projects a world point onto an image of the given size.
   ScreenPoint project(const Vec3& p, int width, int height) const {

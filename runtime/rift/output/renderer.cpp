@@ -42,10 +42,7 @@ Renderer::Renderer(RenderOptions options) : options_(std::move(options)) {
 }
 
 Camera Renderer::frame_camera(const FrameMesh& frame, const CameraView& view) const {
-  Vec3 lo = Vec3::Zero();
-  Vec3 hi = Vec3::Ones();
-  frame.bounding_box(lo, hi);
-  return Camera::framing(lo, hi, static_cast<Real>(options_.width) / options_.height, view);
+  return Camera::framing(frame.points, static_cast<Real>(options_.width) / options_.height, view);
 }
 
 const Image& Renderer::render(const FrameMesh& frame, const Camera& camera) {
@@ -60,8 +57,10 @@ const Image& Renderer::render(const FrameMesh& frame, const Camera& camera) {
   projected_.resize(frame.points.size());
   for (std::size_t p = 0; p < frame.points.size(); ++p)
     projected_[p] = camera.project(frame.points[p], w_, h_);
-  // Key light from above left of the camera; faces are lit on both sides.
+  // Key light from above left of the camera, fill light from the right;
+  // faces are lit on both sides.
   light_ = (-camera.forward() + 0.55 * camera.up() - 0.35 * camera.right()).normalized();
+  fill_ = (-0.6 * camera.forward() - 0.2 * camera.up() + camera.right()).normalized();
   for (std::size_t f = 0; f < frame.face_count(); ++f)
     draw_face(frame, f, camera);
   resolve();
@@ -96,7 +95,8 @@ void Renderer::draw_face(const FrameMesh& frame, std::size_t f, const Camera& ca
   } else if (element != FrameMesh::kNoElement && frame.torn[element]) {
     base = mix(base, options_.torn, 0.45f);
   }
-  const float light = 0.38f + 0.62f * static_cast<float>(std::max(Real(0), normal.dot(light_)));
+  const float light = 0.42f + 0.5f * static_cast<float>(std::max(Real(0), normal.dot(light_))) +
+                      0.18f * static_cast<float>(std::max(Real(0), normal.dot(fill_)));
   const Colour shaded = scale(base, light);
 
   strokes_.clear();

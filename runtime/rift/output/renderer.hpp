@@ -23,7 +23,7 @@ struct RenderOptions {
   Real edge_width = 1.0;  ///< pixels of an element edge
   Real tear_width = 3.0;  ///< pixels of an edge made by tearing
   Colour background{1.0f, 1.0f, 1.0f};
-  Colour front{0.58f, 0.72f, 0.90f};  ///< faces seen from their front (2D) or outside (3D)
+  Colour front{0.62f, 0.76f, 0.93f};  ///< faces seen from their front (2D) or outside (3D)
   Colour back{0.80f, 0.80f, 0.74f};   ///< back faces of a surface
   Colour torn{0.88f, 0.16f, 0.12f};   ///< torn elements (2D), crack faces (3D)
   Colour tear_edge{0.18f, 0.0f, 0.0f};
@@ -76,6 +76,7 @@ class Renderer {
   std::vector<ScreenPoint> projected_;
   std::vector<EdgeStroke> strokes_;
   Vec3 light_ = Vec3::Zero();
+  Vec3 fill_ = Vec3::Zero();
   Image image_;
 };
 
