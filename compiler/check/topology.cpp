@@ -323,8 +323,10 @@ std::vector<CheckedInteraction> check_interactions(const ast::Program& program,
       rc.hooks({}, "interaction");
       if (rc.ok()) rc.unique_dims(ci.graph.left);
       std::string vertex = "<";
-      for (int d = 1; d <= program.dimension; ++d)
-        vertex += (d > 1 ? "," : "") + dim_str(d);
+      for (int d = 1; d <= program.dimension; ++d) {
+        if (d > 1) vertex += ',';
+        vertex += dim_str(d);
+      }
       vertex += ">";
       for (const ast::Assign& f : inter.forces) {
         if (!f.target) continue;

@@ -62,9 +62,31 @@ bool write_if_changed(const std::filesystem::path& path, const std::string& text
   return static_cast<bool>(out);
 }
 
+/// "out.hpp: a.rules b.rules": every file read, includes too, so that editing an
+/// included pack regenerates its includers.
+std::string depfile_text(const std::filesystem::path& target, const diag::SourceManager& sources) {
+  auto escape = [](const std::string& path) {
+    std::string out;
+    for (char c : path) {
+      if (c == ' ' || c == '#' || c == '$') out += '\\';
+      out += c;
+    }
+    return out;
+  };
+  std::string text = escape(target.string()) + ":";
+  for (std::size_t k = 0; k < sources.size(); ++k) {
+    const std::string& path = sources.file(static_cast<int>(k)).path;
+    std::error_code ec;
+    const auto abs = std::filesystem::absolute(path, ec);
+    text += ' ';
+    text += escape(ec ? path : abs.lexically_normal().string());
+  }
+  return text + "\n";
+}
+
 void generate(const ast::Program& program, const Checked& checked,
               const diag::SourceManager& sources, const std::string& out_dir,
-              diag::Diagnostics& diags) {
+              const std::string& depfile, diag::Diagnostics& diags) {
   emit::PackModel model;
   model.program = &program;
   model.symbols = &checked.symbols;
@@ -78,6 +100,11 @@ void generate(const ast::Program& program, const Checked& checked,
   if (ec || !write_if_changed(dir / pack.header_name, pack.header) ||
       !write_if_changed(dir / pack.source_name, pack.source)) {
     diags.error({}, "cannot write the generated files into '" + out_dir + "'");
+    return;
+  }
+  if (!depfile.empty() &&
+      !write_if_changed(depfile, depfile_text(dir / pack.header_name, sources))) {
+    diags.error({}, "cannot write the dependency file '" + depfile + "'");
   }
 }
 
@@ -104,7 +131,7 @@ Result compile(const Options& options) {
   Checked checked;
   run_checks(program, diags, checked);
   if (!diags.has_errors() && !options.out_dir.empty()) {
-    generate(program, checked, sources, options.out_dir, diags);
+    generate(program, checked, sources, options.out_dir, options.depfile, diags);
   }
   return finish(diags);
 }

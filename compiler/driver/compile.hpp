@@ -11,6 +11,7 @@ namespace rift::driver {
 struct Options {
   std::vector<std::string> inputs;
   std::string out_dir;  // empty: check only
+  std::string depfile;  // Make-style dependencies of the generated files (with out_dir)
   std::vector<std::string> disabled_warnings;
   bool warnings_as_errors = false;
 };

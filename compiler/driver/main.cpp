@@ -14,7 +14,10 @@ Checks rift rule packs (docs/language.md) and, with -o, writes the C++ that
 implements their rules, interactions and criteria into OUTDIR.
 
 options:
-  -o OUTDIR       write generated C++ into OUTDIR (without it riftc only checks)
+  -o OUTDIR       write generated C++ into OUTDIR (without it riftc only checks):
+                  OUTDIR/PACK.hpp and OUTDIR/PACK.cpp, PACK being the first file's pack
+  --depfile FILE  with -o, also write the files read (includes too) as a
+                  Make-style dependency file, for build systems
   -Wno-NAME       disable warning NAME
   -Werror         treat warnings as errors
   --list-warnings print the names of all warnings
@@ -51,6 +54,9 @@ int main(int argc, char** argv) {
     if (arg == "-o") {
       if (k + 1 >= argc) return usage_error("-o needs a directory");
       options.out_dir = argv[++k];
+    } else if (arg == "--depfile") {
+      if (k + 1 >= argc) return usage_error("--depfile needs a file name");
+      options.depfile = argv[++k];
     } else if (arg == "-Werror") {
       options.warnings_as_errors = true;
     } else if (arg.rfind("-Wno-", 0) == 0) {

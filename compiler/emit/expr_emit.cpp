@@ -60,11 +60,11 @@ class Emitter {
         return binary(e);
       case Expr::Kind::Cond: {
         const std::string t = cpp_type(e.type);
-        return "(" + expr(*e.args[0]) + " ? " + t + "(" + as(*e.args[1], e.type) + ") : " + t +
-               "(" + as(*e.args[2], e.type) + "))";
+        return std::string("(") + expr(*e.args[0]) + " ? " + t + "(" + as(*e.args[1], e.type) +
+               ") : " + t + "(" + as(*e.args[2], e.type) + "))";
       }
       case Expr::Kind::Index: {
-        std::string out = "(" + expr(*e.args[0]) + ")(";
+        std::string out = std::string("(") + expr(*e.args[0]) + ")(";
         for (std::size_t k = 1; k < e.args.size(); ++k) {
           if (k > 1) out += ", ";
           out += "static_cast<Eigen::Index>(" + expr(*e.args[k]) + ")";
@@ -91,13 +91,13 @@ class Emitter {
     const Expr& b = *e.args[1];
     const std::string& op = e.op;
     if (op == "and" || op == "or") {
-      return "(" + expr(a) + (op == "and" ? " && " : " || ") + expr(b) + ")";
+      return std::string("(") + expr(a) + (op == "and" ? " && " : " || ") + expr(b) + ")";
     }
     // Scalars meet in a common type; next to a vector or matrix they are reals.
     Type ta = a.type, tb = b.type;
     if (scalar(ta) && scalar(tb)) {
       const Type common = ta == Type::Real || tb == Type::Real ? Type::Real : Type::Int;
-      return "(" + as(a, common) + " " + op + " " + as(b, common) + ")";
+      return std::string("(") + as(a, common) + " " + op + " " + as(b, common) + ")";
     }
     const std::string lhs = scalar(ta) ? as(a, Type::Real) : expr(a);
     const std::string rhs = scalar(tb) ? as(b, Type::Real) : expr(b);

@@ -34,7 +34,7 @@ std::string policy_of(const ast::Embedding& e) {
 std::string orbit_text(const std::vector<int>& dims) {
   std::string out = "<";
   for (std::size_t k = 0; k < dims.size(); ++k)
-    out += (k ? "," : "") + std::to_string(dims[k]);
+    out += std::string(k ? "," : "") + std::to_string(dims[k]);
   return out + ">";
 }
 
@@ -149,7 +149,8 @@ void write_declare(Writer& w, const PackModel& m) {
                " || !(g.attachment_of(" + name + ")->orbit() == " + orbit + ")) {");
       w.line("throw std::invalid_argument(" +
              quote("the map's embedding '" + e.name.text + "' is not the pack's " +
-                   std::string(ast::to_string(e.type)) + " on " + orbit_text(e.orbit.dims)) +
+                   std::string(ast::to_string(e.type)) + std::string(" on ") +
+                   orbit_text(e.orbit.dims)) +
              ");");
       w.close();
     }
@@ -202,7 +203,7 @@ GeneratedPack generate_pack(const PackModel& m, const diag::SourceManager& sourc
   for (const check::CheckedRule& cr : *m.rules) {
     const std::string& n = cr.rule->name.text;
     w.line(
-        "{" + quote(n) + ", " + std::to_string(cr.graph.hooks.size()) +
+        std::string("{") + quote(n) + ", " + std::to_string(cr.graph.hooks.size()) +
         ", [](rift::GMap& g, std::span<const rift::Dart> hooks, const Params& params) { return " +
         rule_function(n) + "(g, hooks, " + n + "_args{}, params); }},");
   }
@@ -213,8 +214,8 @@ GeneratedPack generate_pack(const PackModel& m, const diag::SourceManager& sourc
   w.open("std::span<const InteractionEntry> interactions() {");
   w.open("static const InteractionEntry entries[] = {");
   for (const check::CheckedInteraction& ci : *m.interactions) {
-    w.line("{" + quote(ci.interaction->name.text) + ", &interaction_" + ci.interaction->name.text +
-           "},");
+    w.line(std::string("{") + quote(ci.interaction->name.text) + ", &interaction_" +
+           ci.interaction->name.text + "},");
   }
   w.line("{nullptr, nullptr},");
   w.close("};");
@@ -224,7 +225,7 @@ GeneratedPack generate_pack(const PackModel& m, const diag::SourceManager& sourc
   w.open("static const CriterionEntry entries[] = {");
   for (const ast::File& f : m.program->files) {
     for (const ast::Criterion& c : f.criteria) {
-      w.line("{" + quote(c.name.text) + ", &criterion_" + c.name.text + "},");
+      w.line(std::string("{") + quote(c.name.text) + ", &criterion_" + c.name.text + "},");
     }
   }
   w.line("{nullptr, nullptr},");
