@@ -19,6 +19,7 @@ struct Scope {
   std::set<std::string> hidden_nodes;
   std::string hidden_reason;
   bool constant = false;  // embedding defaults and pack parameters: no names at all
+  const std::vector<ast::Let>* match_lets = nullptr;  // lets an update may not read
 };
 
 class Resolver {
@@ -120,6 +121,18 @@ class Resolver {
         }
       }
     }
+    if (scope.match_lets) {
+      for (const ast::Let& let : *scope.match_lets) {
+        if (let.name.text != e.name) continue;
+        ++let.uses;  // reported here; no second report as unused
+        diags_
+            .error(e.loc, "'" + e.name +
+                              "' is a value of the match; an update runs after the rewrite and "
+                              "cannot read it")
+            .notes.push_back({let.name.loc, "defined here"});
+        return;
+      }
+    }
     diags_.error(e.loc, "unknown name '" + e.name + "'");
   }
 
@@ -154,6 +167,7 @@ void resolve_rule(const ast::Rule& rule, Resolver& r) {
   }
   Scope after;  // updates read the rewritten map; lets describe the match, so they are not visible
   after.params = &rule.params;
+  after.match_lets = &rule.lets;
   after.nodes = right;
   for (const auto& n : rule.left.nodes) {
     if (!right.count(n.name.text)) after.hidden_nodes.insert(n.name.text);
