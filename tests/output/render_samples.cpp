@@ -49,12 +49,12 @@ void tear_cloth(GMap& map, Real length) {
 }
 
 void render(GMap& map, const std::vector<std::uint8_t>& boundary, const std::filesystem::path& path,
-            const CameraView& view = {}) {
+            const RenderOptions& look = {}) {
   FrameOptions options;
   options.original_boundary = boundary;
   const FrameMesh frame = extract_frame_mesh(map, options);
-  Renderer renderer;
-  write_png(renderer.render(frame, renderer.frame_camera(frame, view)), path);
+  Renderer renderer(look);
+  write_png(renderer.render(frame, renderer.frame_camera(frame)), path);
   std::printf("%s: %zu points, %zu elements, %zu torn\n", path.c_str(), frame.point_count(),
               frame.element_count(), frame.torn_count());
 }
@@ -81,6 +81,9 @@ int main(int argc, char** argv) {
       tear_cloth(map, 0.6);
       bend(map);
       render(map, boundary, dir / "cloth_torn.png");
+      // The small picture of docs/outputs.md.
+      render(map, boundary, dir / "outputs_torn_cloth.png",
+             RenderOptions{.width = 480, .height = 360});
     }
     {
       GMap map = assemble_gmap(make_block(BlockKind::Tet, 3, 3, 3));

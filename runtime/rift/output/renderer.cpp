@@ -15,18 +15,6 @@ Colour mix(const Colour& a, const Colour& b, float t) {
   return {a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t};
 }
 
-// Distance from (px, py) to the segment (ax, ay)-(bx, by).
-Real segment_distance(Real px, Real py, Real ax, Real ay, Real bx, Real by) {
-  const Real dx = bx - ax;
-  const Real dy = by - ay;
-  const Real len2 = dx * dx + dy * dy;
-  Real t = len2 > 0 ? ((px - ax) * dx + (py - ay) * dy) / len2 : 0;
-  t = std::clamp(t, Real(0), Real(1));
-  const Real ex = ax + t * dx - px;
-  const Real ey = ay + t * dy - py;
-  return std::sqrt(ex * ex + ey * ey);
-}
-
 }  // namespace
 
 Renderer::Renderer(RenderOptions options) : options_(std::move(options)) {
@@ -106,7 +94,16 @@ void Renderer::draw_face(const FrameMesh& frame, std::size_t f, const Camera& ca
       const ScreenPoint& a = projected_[ids[k]];
       const ScreenPoint& b = projected_[ids[k + 1 < end ? k + 1 : begin]];
       const EdgeKind kind = frame.face_edge_kind[k];
-      EdgeStroke s{a.x, a.y, b.x, b.y, 0.5 * options_.edge_width * ss, scale(shaded, 0.45f), 0.85f};
+      const Real span = std::hypot(b.x - a.x, b.y - a.y);
+      if (span <= 0) continue;
+      EdgeStroke s{a.x,
+                   a.y,
+                   (b.x - a.x) / span,
+                   (b.y - a.y) / span,
+                   span,
+                   0.5 * options_.edge_width * ss,
+                   scale(shaded, 0.45f),
+                   0.85f};
       if (kind == EdgeKind::kBoundary) {
         s.colour = scale(shaded, 0.3f);
         s.half_width *= 1.3;
@@ -140,14 +137,23 @@ void Renderer::fill_triangle(const ScreenPoint& a, const ScreenPoint& b, const S
   const Real za = 1.0 / a.depth;
   const Real zb = 1.0 / b.depth;
   const Real zc = 1.0 / c.depth;
+  // Barycentric weights are affine in the sample position: step them along x.
+  const Real dwa = (b.y - c.y) * inv_area;
+  const Real dwb = (c.y - a.y) * inv_area;
   for (int y = y0; y <= y1; ++y) {
     const Real py = y + 0.5;
-    for (int x = x0; x <= x1; ++x) {
+    const Real px0 = x0 + 0.5;
+    Real wa = ((b.x - px0) * (c.y - py) - (b.y - py) * (c.x - px0)) * inv_area;
+    Real wb = ((c.x - px0) * (a.y - py) - (c.y - py) * (a.x - px0)) * inv_area;
+    bool entered = false;
+    for (int x = x0; x <= x1; ++x, wa += dwa, wb += dwb) {
       const Real px = x + 0.5;
-      const Real wa = ((b.x - px) * (c.y - py) - (b.y - py) * (c.x - px)) * inv_area;
-      const Real wb = ((c.x - px) * (a.y - py) - (c.y - py) * (a.x - px)) * inv_area;
       const Real wc = 1.0 - wa - wb;
-      if (wa < 0 || wb < 0 || wc < 0) continue;
+      if (wa < 0 || wb < 0 || wc < 0) {
+        if (entered) break;  // the samples of a triangle's row are one run
+        continue;
+      }
+      entered = true;
       const std::size_t k =
           static_cast<std::size_t>(y) * static_cast<std::size_t>(w_) + static_cast<std::size_t>(x);
       const auto inv_depth = static_cast<float>(wa * za + wb * zb + wc * zc);
@@ -155,8 +161,20 @@ void Renderer::fill_triangle(const ScreenPoint& a, const ScreenPoint& b, const S
       depth_[k] = inv_depth;
       Colour c2 = colour;
       for (const EdgeStroke& s : strokes_) {
-        const Real d = segment_distance(px, py, s.ax, s.ay, s.bx, s.by);
-        const Real cover = std::clamp(s.half_width + 0.5 - d, Real(0), Real(1));
+        // Distance to the segment: across the line first, which rejects most
+        // samples without a square root.
+        const Real rx = px - s.ax;
+        const Real ry = py - s.ay;
+        const Real across = std::abs(rx * s.uy - ry * s.ux);
+        const Real reach = s.half_width + 0.5;
+        if (across >= reach) continue;
+        const Real along = rx * s.ux + ry * s.uy;
+        Real d = across;
+        if (along < 0 || along > s.length) {
+          const Real beyond = along < 0 ? -along : along - s.length;
+          d = std::sqrt(across * across + beyond * beyond);
+        }
+        const Real cover = std::min(reach - d, Real(1));
         if (cover > 0) c2 = mix(c2, s.colour, static_cast<float>(cover) * s.strength);
       }
       colour_[3 * k] = c2[0];

@@ -58,8 +58,10 @@ class Renderer {
 
  private:
   struct EdgeStroke {
-    Real ax, ay, bx, by;  // supersampled pixels
-    Real half_width;
+    Real ax, ay;      // start, supersampled pixels
+    Real ux, uy;      // unit direction
+    Real length;      // in supersampled pixels
+    Real half_width;  // plus half a sample of antialiasing
     Colour colour;
     float strength;  // 1: replaces the face colour, < 1: blends
   };
