@@ -19,6 +19,7 @@
 %param {rift::parse::ParseContext& ctx}
 
 %code requires {
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -55,6 +56,19 @@ namespace {
 using rift::ast::Expr;
 using rift::ast::ExprPtr;
 using rift::ast::make_expr;
+
+/// Records the depth of a new node; past kMaxExprDepth the tree is replaced by
+/// a literal and the error is reported (once per file).
+ExprPtr deepen(ExprPtr e, rift::parse::ParseContext& ctx) {
+  for (const auto& a : e->args) e->depth = std::max(e->depth, a->depth + 1);
+  if (e->depth <= rift::parse::kMaxExprDepth) return e;
+  if (!ctx.reported_depth) {
+    ctx.reported_depth = true;
+    ctx.diags.error(e->loc, "expression is nested too deeply (more than " +
+                                std::to_string(rift::parse::kMaxExprDepth) + " levels)");
+  }
+  return make_expr(Expr::Kind::IntLit, e->loc);
+}
 
 ExprPtr binary(std::string op, ExprPtr a, ExprPtr b, const rift::diag::Location& loc,
                const rift::diag::Location& op_loc) {
@@ -423,27 +437,27 @@ apply_arg
 
 expr
   : primary { $$ = $1; }
-  | MINUS expr %prec UMINUS { $$ = unary("-", $2, @$, @1); }
-  | NOT expr { $$ = unary("not", $2, @$, @1); }
-  | expr PLUS expr { $$ = binary("+", $1, $3, @$, @2); }
-  | expr MINUS expr { $$ = binary("-", $1, $3, @$, @2); }
-  | expr STAR expr { $$ = binary("*", $1, $3, @$, @2); }
-  | expr SLASH expr { $$ = binary("/", $1, $3, @$, @2); }
-  | expr LT expr { $$ = binary("<", $1, $3, @$, @2); }
-  | expr LE expr { $$ = binary("<=", $1, $3, @$, @2); }
-  | expr GT expr { $$ = binary(">", $1, $3, @$, @2); }
-  | expr GE expr { $$ = binary(">=", $1, $3, @$, @2); }
-  | expr EQ expr { $$ = binary("==", $1, $3, @$, @2); }
-  | expr NE expr { $$ = binary("!=", $1, $3, @$, @2); }
-  | expr AND expr { $$ = binary("and", $1, $3, @$, @2); }
-  | expr OR expr { $$ = binary("or", $1, $3, @$, @2); }
+  | MINUS expr %prec UMINUS { $$ = deepen(unary("-", $2, @$, @1), ctx); }
+  | NOT expr { $$ = deepen(unary("not", $2, @$, @1), ctx); }
+  | expr PLUS expr { $$ = deepen(binary("+", $1, $3, @$, @2), ctx); }
+  | expr MINUS expr { $$ = deepen(binary("-", $1, $3, @$, @2), ctx); }
+  | expr STAR expr { $$ = deepen(binary("*", $1, $3, @$, @2), ctx); }
+  | expr SLASH expr { $$ = deepen(binary("/", $1, $3, @$, @2), ctx); }
+  | expr LT expr { $$ = deepen(binary("<", $1, $3, @$, @2), ctx); }
+  | expr LE expr { $$ = deepen(binary("<=", $1, $3, @$, @2), ctx); }
+  | expr GT expr { $$ = deepen(binary(">", $1, $3, @$, @2), ctx); }
+  | expr GE expr { $$ = deepen(binary(">=", $1, $3, @$, @2), ctx); }
+  | expr EQ expr { $$ = deepen(binary("==", $1, $3, @$, @2), ctx); }
+  | expr NE expr { $$ = deepen(binary("!=", $1, $3, @$, @2), ctx); }
+  | expr AND expr { $$ = deepen(binary("and", $1, $3, @$, @2), ctx); }
+  | expr OR expr { $$ = deepen(binary("or", $1, $3, @$, @2), ctx); }
   | IF expr THEN expr ELSE expr {
       ExprPtr e = make_expr(Expr::Kind::Cond, @$);
       e->op_loc = @1;
       e->args.push_back($2);
       e->args.push_back($4);
       e->args.push_back($6);
-      $$ = std::move(e);
+      $$ = deepen(std::move(e), ctx);
     }
   ;
 
@@ -453,8 +467,8 @@ primary
   | TRUE { $$ = make_expr(Expr::Kind::BoolLit, @$); $$->boolean = true; }
   | FALSE { $$ = make_expr(Expr::Kind::BoolLit, @$); $$->boolean = false; }
   | IDENT { $$ = make_expr(Expr::Kind::Name, @$); $$->name = $1; }
-  | IDENT LPAREN args RPAREN { $$ = call($1, $3, @$, @1); }
-  | type_call LPAREN args RPAREN { $$ = call($1, $3, @$, @1); }
+  | IDENT LPAREN args RPAREN { $$ = deepen(call($1, $3, @$, @1), ctx); }
+  | type_call LPAREN args RPAREN { $$ = deepen(call($1, $3, @$, @1), ctx); }
   | LPAREN expr RPAREN { $$ = $2; }
   | node_path DOT IDENT {
       $$ = $1;
@@ -476,6 +490,7 @@ primary
       $$->op_loc = @2;
       $$->args.push_back($1);
       $$->args.push_back($3);
+      $$ = deepen(std::move($$), ctx);
     }
   | primary LBRACKET expr COMMA expr RBRACKET {
       $$ = make_expr(Expr::Kind::Index, @$);
@@ -483,6 +498,7 @@ primary
       $$->args.push_back($1);
       $$->args.push_back($3);
       $$->args.push_back($5);
+      $$ = deepen(std::move($$), ctx);
     }
   ;
 

@@ -58,6 +58,7 @@ struct Expr {
   std::vector<int> hops;
   Label orbit;
   std::vector<ExprPtr> args;
+  int depth = 1;  // of the tree below; the parser caps it so passes may recurse safely
 
   // Filled by the passes: resolve/ binds names, check/ computes types.
   Type type = Type::Error;

@@ -1,5 +1,6 @@
 #include "check/topology.hpp"
 
+#include <algorithm>
 #include <set>
 
 #include "check/types.hpp"
@@ -322,6 +323,20 @@ std::vector<CheckedInteraction> check_interactions(const ast::Program& program,
       rc.label_lengths();
       rc.hooks({}, "interaction");
       if (rc.ok()) rc.unique_dims(ci.graph.left);
+      // The pattern is matched once per support orbit, from one of its darts:
+      // a hook orbit larger than the support would be counted several times.
+      for (int h : ci.graph.hooks) {
+        const GraphNode& hook = ci.graph.left.nodes[static_cast<std::size_t>(h)];
+        for (int d : hook.label()) {
+          if (d < 0 || std::count(inter.support.dims.begin(), inter.support.dims.end(), d))
+            continue;
+          diags
+              .error(hook.decl->label.loc, "the hook '" + hook.name() + "' follows " + dim_str(d) +
+                                               "-links, which leave the support orbit")
+              .notes.push_back({inter.support.loc, "the support orbit"});
+          break;
+        }
+      }
       std::string vertex = "<";
       for (int d = 1; d <= program.dimension; ++d) {
         if (d > 1) vertex += ',';

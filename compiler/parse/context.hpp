@@ -25,6 +25,11 @@ struct ParseContext {
   ast::Pattern* pattern = nullptr;        // the pattern block being read
   std::vector<ast::Let>* lets = nullptr;  // where `let` goes in the open body
   std::vector<ast::ExprPtr>* whens = nullptr;
+  bool reported_depth = false;  // "nested too deeply" is said once per file
 };
+
+/// Deepest expression tree the parser builds: every later pass recurses over
+/// expressions, and this keeps their stack use bounded on hostile input.
+inline constexpr int kMaxExprDepth = 256;
 
 }  // namespace rift::parse

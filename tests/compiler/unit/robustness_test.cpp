@@ -111,6 +111,20 @@ TEST(Robustness, DeepNestingDoesNotCrash) {
   EXPECT_EQ(r.exit_code, 0) << r.diagnostics;
 }
 
+TEST(Robustness, HostileNestingIsRejectedWithoutExhaustingTheStack) {
+  const std::string deep = std::string(100000, '-') + "1";
+  const auto r = rift::driver::compile_text(
+      "t.rules", "pack t dimension 2;\nparam x : int = " + deep + ";\n", {});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.diagnostics.find("t.rules:2:"), std::string::npos);
+  EXPECT_NE(r.diagnostics.find("nested too deeply"), std::string::npos);
+  const std::string fine = std::string(200, '-') + "1";
+  EXPECT_EQ(rift::driver::compile_text("t.rules",
+                                       "pack t dimension 2;\nparam x : int = " + fine + ";\n", {})
+                .exit_code,
+            0);
+}
+
 TEST(RulePacks, EveryPackInRulesCompiles) {
   const auto packs = rule_files(RIFT_RULES_DIR, "");
   ASSERT_FALSE(packs.empty());
