@@ -321,6 +321,20 @@ TEST(FrameMesh, OtherVolumesArePolyhedraOrSkipped) {
   EXPECT_EQ(skipped.face_count(), 8u);  // still rendered
 }
 
+TEST(FrameMesh, FacesWithoutPositionsAreSkippedNotRead) {
+  GMap map = quad_cloth(2, 2);
+  // A triangle built by hand after the embeddings: its darts have no slot yet.
+  const Dart first = map.create_darts(6);
+  for (Dart i = 0; i < 3; ++i) {
+    map.link(first + 2 * i, first + 2 * i + 1, 0);
+    map.link(first + 2 * i + 1, first + 2 * ((i + 1) % 3), 1);
+  }
+  const FrameMesh f = extract_frame_mesh(map);
+  EXPECT_EQ(f.element_count(), 4u);
+  EXPECT_EQ(f.skipped_elements, 1u);
+  EXPECT_EQ(f.point_count(), 9u);
+}
+
 TEST(FrameMesh, RemappedFlagsFollowCompaction) {
   const std::vector<std::uint8_t> flags = {1, 0, 1, 1};
   const std::vector<Dart> new_index = {0, kNoDart, 1, 2};

@@ -190,6 +190,21 @@ TEST(Png, CrackInABlockIsVisible) {
   EXPECT_GT(changed, 200u);  // the crack's rim is drawn on the surface
 }
 
+TEST(Png, BlownUpPositionsDoNotBreakTheRenderer) {
+  Cloth cloth;
+  Renderer renderer;
+  const Camera camera = renderer.frame_camera(cloth.frame());
+  auto position = cloth.map.embedding<Vec3>("position");
+  position.values()[7] = Vec3(std::nan(""), 0, 0);
+  position.values()[8] = Vec3(1e300, -1e300, 1e300);
+  const FrameMesh frame = cloth.frame();
+  EXPECT_GT(count_pixels(renderer.render(frame, camera), non_background), 800u * 600u / 10u);
+  // A camera framed on a frame with a NaN still frames the finite points.
+  position.values()[8] = Vec3(0.5, 0.5, 0);
+  const Camera fresh = renderer.frame_camera(cloth.frame());
+  EXPECT_TRUE(fresh.eye().allFinite());
+}
+
 TEST(Png, UnwritablePathIsAnOutputError) {
   Image image;
   image.width = 2;

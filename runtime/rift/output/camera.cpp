@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace rift {
 
@@ -27,6 +28,13 @@ Camera Camera::framing(const Vec3& lo, const Vec3& hi, Real aspect, const Camera
 }
 
 Camera Camera::framing(std::span<const Vec3> points, Real aspect, const CameraView& view) {
+  // Non-finite points (a blown-up frame) are left out of the framing.
+  std::vector<Vec3> finite;
+  finite.reserve(points.size());
+  for (const Vec3& p : points) {
+    if (p.allFinite()) finite.push_back(p);
+  }
+  points = finite;
   Vec3 lo = Vec3::Zero();
   Vec3 hi = Vec3::Zero();
   if (!points.empty()) lo = hi = points.front();

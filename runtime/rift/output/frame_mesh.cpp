@@ -263,7 +263,9 @@ void FrameExtractor::extract_faces_2d(const GMap& map) {
       f.face_edge_kind.push_back(kind);
     });
     const std::size_t count = f.face_vertices.size() - first;
-    if (!closed || count < 3) {
+    const bool positioned = std::find(f.face_vertices.begin() + static_cast<std::ptrdiff_t>(first),
+                                      f.face_vertices.end(), kNoPoint) == f.face_vertices.end();
+    if (!closed || count < 3 || !positioned) {
       f.face_vertices.resize(first);
       f.face_edge_kind.resize(first);
       ++f.skipped_elements;
@@ -286,7 +288,7 @@ void FrameExtractor::extract_volumes_3d(const GMap& map) {
   FrameMesh& f = frame_;
   const std::size_t limit = map.capacity() + 1;
   const Mark seen = map.reserve_mark();
-  const PointLookup lookup{position_attachment_, slot_point_.data()};
+  const PointLookup lookup{position_attachment_, slot_point_.data(), slot_point_.size()};
   VolumeCell cell;
   map.for_each_cell(element_orbit_of(3), [&](Dart start) {
     volume_darts_.clear();
@@ -309,6 +311,9 @@ void FrameExtractor::extract_volumes_3d(const GMap& map) {
     }
     for (Dart d : volume_darts_)
       map.unmark(d, seen);
+    // A dart without a position cannot be drawn: treat its volume as open.
+    open = open ||
+           std::find(local_points_.begin(), local_points_.end(), kNoPoint) != local_points_.end();
 
     const VolumeFaces faces{local_points_, local_darts_, local_offsets_};
     std::uint32_t element = FrameMesh::kNoElement;

@@ -66,8 +66,9 @@ struct FrameMesh {
   /// polyhedron_face_offsets[c] is the end of cell c's stream, -1 for others.
   std::vector<std::int64_t> polyhedron_faces;
   std::vector<std::int64_t> polyhedron_face_offsets;
-  /// Elements not written: open cells (a free alpha_0 or alpha_1), and in 3D
-  /// unrecognised volumes when polyhedra are turned off.
+  /// Elements not written: open cells (a free alpha_0 or alpha_1), cells with
+  /// a dart that has no position, and in 3D unrecognised volumes when
+  /// polyhedra are turned off.
   std::size_t skipped_elements = 0;
 
   /// The surface to render: 2D every face, 3D every face with a 3-free dart.
@@ -150,7 +151,12 @@ class FrameExtractor {
   void extract_volumes_3d(const GMap& map);
   void gather_arrays(const GMap& map);
   bool is_tear_dart(const GMap& map, Dart d) const;
-  std::uint32_t point_of(Dart d) const { return slot_point_[position_attachment_->slot(d)]; }
+  /// The point of a dart, or ~0u for a dart without a position (a dart a
+  /// rewrite created and has not embedded yet).
+  std::uint32_t point_of(Dart d) const {
+    const Slot s = position_attachment_->slot(d);
+    return s < slot_point_.size() ? slot_point_[s] : ~0u;
+  }
 
   FrameOptions options_;
   FrameMesh frame_;

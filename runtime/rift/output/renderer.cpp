@@ -63,7 +63,9 @@ void Renderer::draw_face(const FrameMesh& frame, std::size_t f, const Camera& ca
   Vec3 normal = Vec3::Zero();
   Vec3 centre = Vec3::Zero();
   for (std::uint32_t k = begin; k < end; ++k) {
-    if (projected_[ids[k]].depth <= near) return;  // behind the camera: not drawn
+    const ScreenPoint& s = projected_[ids[k]];
+    // Behind the camera or not a number (a blown-up simulation): not drawn.
+    if (!(s.depth > near) || !std::isfinite(s.x) || !std::isfinite(s.y)) return;
     const Vec3& a = frame.points[ids[k]];
     const Vec3& b = frame.points[ids[k + 1 < end ? k + 1 : begin]];
     normal += a.cross(b);
@@ -128,10 +130,20 @@ void Renderer::fill_triangle(const ScreenPoint& a, const ScreenPoint& b, const S
                              const Colour& colour) {
   const Real area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
   if (std::abs(area) < 1e-12) return;
-  const int x0 = std::max(0, static_cast<int>(std::floor(std::min({a.x, b.x, c.x}))));
-  const int x1 = std::min(w_ - 1, static_cast<int>(std::ceil(std::max({a.x, b.x, c.x}))));
-  const int y0 = std::max(0, static_cast<int>(std::floor(std::min({a.y, b.y, c.y}))));
-  const int y1 = std::min(h_ - 1, static_cast<int>(std::ceil(std::max({a.y, b.y, c.y}))));
+  // Clamp in floating point first: far-off or non-finite corners must not
+  // overflow the integer conversion.
+  const auto clamp_to = [](Real v, int hi) {
+    return static_cast<int>(std::clamp(v, Real(0), static_cast<Real>(hi)));
+  };
+  const Real min_x = std::floor(std::min({a.x, b.x, c.x}));
+  const Real max_x = std::ceil(std::max({a.x, b.x, c.x}));
+  const Real min_y = std::floor(std::min({a.y, b.y, c.y}));
+  const Real max_y = std::ceil(std::max({a.y, b.y, c.y}));
+  if (!(max_x >= 0 && max_y >= 0 && min_x < w_ && min_y < h_)) return;  // also NaN
+  const int x0 = clamp_to(min_x, w_ - 1);
+  const int x1 = clamp_to(max_x, w_ - 1);
+  const int y0 = clamp_to(min_y, h_ - 1);
+  const int y1 = clamp_to(max_y, h_ - 1);
   const Real inv_area = 1.0 / area;
   // 1/depth is linear in screen space under perspective.
   const Real za = 1.0 / a.depth;

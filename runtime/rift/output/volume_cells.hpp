@@ -17,7 +17,11 @@ namespace rift {
 struct PointLookup {
   const OrbitAttachment* attachment;
   const std::uint32_t* slot_point;
-  std::uint32_t operator()(Dart d) const { return slot_point[attachment->slot(d)]; }
+  std::size_t slots;
+  std::uint32_t operator()(Dart d) const {
+    const Slot s = attachment->slot(d);
+    return s < slots ? slot_point[s] : ~0u;
+  }
 };
 
 /// The faces of one volume: face f has points[offsets[f] .. offsets[f+1]),
