@@ -249,6 +249,10 @@ GMap assemble_gmap(const MeshData& mesh, AssemblyReport* report) {
         }
       });
 
+  // The side records are the largest temporary: free them before the
+  // embeddings allocate their slot arrays, to keep the peak memory low.
+  std::vector<Side>().swap(sides);
+
   Embedding<Vec3> position =
       map.add_embedding<Vec3>("position", vertex_orbit(n), MergePolicy::kMean, Vec3::Zero());
   Embedding<std::int64_t> point_index =

@@ -3,8 +3,9 @@
 namespace rift {
 
 namespace {
-// Face orientation does not matter to a G-map (it is not oriented); these
-// follow VTK's outward convention so that they read naturally.
+// Face orientation does not matter to a G-map (it is not oriented), and the
+// faces below are not consistently outward: only their vertex sets and edge
+// cycles are used.
 constexpr LocalFace kTetraFaces[] = {
     {3, {0, 2, 1, 0}}, {3, {0, 1, 3, 0}}, {3, {1, 2, 3, 0}}, {3, {0, 3, 2, 0}}};
 constexpr LocalFace kHexaFaces[] = {{4, {0, 3, 2, 1}}, {4, {4, 5, 6, 7}}, {4, {0, 1, 5, 4}},
