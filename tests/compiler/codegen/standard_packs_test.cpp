@@ -1,0 +1,75 @@
+// The packs of rules/ as a simulator would use them: declared, initialised,
+// forces computed, a criterion evaluated and its rule applied, on a cloth
+// grid — the map stays valid and the cloth tears where it is stretched.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "criteria2d.hpp"
+#include "rift/mesh/load_map.hpp"
+#include "rift/mesh/map_statistics.hpp"
+
+namespace {
+
+namespace cloth = rift::packs::criteria2d;
+using rift::Vec3;
+
+TEST(StandardPacks, InitialisersGiveMassesAndRestLengths) {
+  rift::GMap g = rift::load_map("grid:quad:4x4");
+  cloth::declare_embeddings(g);
+  cloth::run_initialisers(g);
+  auto corner = g.embedding<rift::Real>("corner_mass");
+  auto vertex = g.embedding<rift::Real>("vertex_mass");
+  auto rest = g.embedding<rift::Real>("stretch_rest");
+  rift::Real total_corner = 0;
+  g.for_each_cell(rift::Orbit{1}, [&](rift::Dart c) { total_corner += corner[c]; });
+  // Each quad (area 1/16, density 1) spreads its mass over its corners.
+  EXPECT_NEAR(total_corner, 1.0, 1e-12);
+  rift::Real total_vertex = 0;
+  g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart v) { total_vertex += vertex[v]; });
+  EXPECT_NEAR(total_vertex, 1.0, 1e-12);
+  g.for_each_dart([&](rift::Dart d) { EXPECT_NEAR(rest[d], 0.25, 1e-12); });
+}
+
+TEST(StandardPacks, StretchedClothTearsAndStaysValid) {
+  rift::GMap g = rift::load_map("grid:quad:4x4");
+  cloth::declare_embeddings(g);
+  cloth::run_initialisers(g);
+  const auto before = rift::compute_statistics(g);
+  auto position = g.embedding<Vec3>("position");
+  // Pull the upper half of the cloth up: the springs across y = 0.5 stretch.
+  for (auto& p : position.values()) {
+    if (p.y() > 0.49) p.y() += 0.5;
+  }
+  EXPECT_GT(cloth::interaction_stretch(g).energy, 0.0);
+  cloth::interaction_shear(g);
+  cloth::Params params;
+  params.edge_threshold = 1.0;
+  const auto result = cloth::criterion_global_edge(g, params);
+  EXPECT_GT(result.triggered, 0u);
+  EXPECT_GT(result.applied, 0u);
+  const auto problems = g.check_validity();
+  EXPECT_TRUE(problems.empty()) << problems.front();
+  const auto after = rift::compute_statistics(g);
+  EXPECT_EQ(after.darts, before.darts);
+  EXPECT_GT(after.boundary, before.boundary);
+  EXPECT_GT(after.vertices, before.vertices);
+  // Split vertices recomputed their mass from the corners they kept (§4.1).
+  auto vertex = g.embedding<rift::Real>("vertex_mass");
+  auto corner = g.embedding<rift::Real>("corner_mass");
+  g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart v) {
+    rift::Real sum = 0;
+    std::vector<rift::Slot> seen;  // each corner once
+    g.for_each_in_orbit(v, rift::Orbit{1, 2}, [&](rift::Dart x) {
+      const rift::Slot s = corner.slot(x);
+      if (std::find(seen.begin(), seen.end(), s) == seen.end()) {
+        seen.push_back(s);
+        sum += corner[x];
+      }
+    });
+    EXPECT_NEAR(vertex[v], sum, 1e-12);
+  });
+}
+
+}  // namespace
