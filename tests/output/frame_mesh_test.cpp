@@ -123,6 +123,23 @@ TEST(FrameMesh, TornDartsTakePrecedence) {
   EXPECT_EQ(f.torn_count(), 1u);  // only the corner face
 }
 
+TEST(FrameMesh, PerElementTornFlagsComeFromAnEmbedding) {
+  GMap map = quad_cloth(3, 1);
+  auto flag = map.add_embedding<Bool>("was_torn", Orbit::cell(2, 2));
+  bool first = true;
+  map.for_each_cell(Orbit::cell(2, 2), [&](Dart d) {
+    flag[d] = first;
+    first = false;
+  });
+  FrameOptions options;
+  options.torn_element = "was_torn";
+  const FrameMesh f = extract_frame_mesh(map, options);
+  EXPECT_EQ(f.torn, (std::vector<std::uint8_t>{1, 0, 0}));
+  EXPECT_EQ(f.face_torn, f.torn);  // what the renderer tints
+  options.torn_element = "position";
+  EXPECT_THROW(extract_frame_mesh(map, options), std::invalid_argument);
+}
+
 TEST(FrameMesh, TriangleAndMixedGridsGiveTrianglesAndQuads) {
   const FrameMesh tri = extract_frame_mesh(assemble_gmap(make_grid(GridKind::Tri, 3, 2)));
   EXPECT_EQ(count_type(tri, VtkCell::kTriangle), 12u);

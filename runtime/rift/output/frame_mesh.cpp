@@ -388,6 +388,26 @@ void FrameExtractor::gather_arrays(const GMap& map) {
     for (std::size_t k = 0; k < f.element_dart.size(); ++k)
       f.element_ids[k] = static_cast<std::int64_t>(k);
   }
+  if (!options_.torn_element.empty() && map.find_column(options_.torn_element)) {
+    const ColumnBase* column = map.find_column(options_.torn_element);
+    const bool integral = column->type() == ValueType::kInt;
+    if ((!integral && column->type() != ValueType::kBool) ||
+        map.attachment_of(options_.torn_element)->orbit() != element_orbit_of(n)) {
+      throw std::invalid_argument("torn flag embedding '" + options_.torn_element +
+                                  "' must hold int or bool values on the element orbit " +
+                                  element_orbit_of(n).str());
+    }
+    for (std::size_t k = 0; k < f.element_dart.size(); ++k) {
+      const Dart d = f.element_dart[k];
+      const bool torn = integral ? map.embedding<std::int64_t>(options_.torn_element)[d] != 0
+                                 : static_cast<bool>(map.embedding<Bool>(options_.torn_element)[d]);
+      f.torn[k] = torn ? 1 : 0;
+    }
+    if (n == 2) {
+      for (std::size_t k = 0; k < f.face_element.size(); ++k)
+        f.face_torn[k] = f.torn[f.face_element[k]];
+    }
+  }
   gather_named(map, options_.point_arrays, vertex_orbit_of(n), f.point_dart, f.point_data,
                f.unsupported_arrays);
   gather_named(map, options_.cell_arrays, element_orbit_of(n), f.element_dart, f.cell_data,

@@ -112,6 +112,10 @@ struct FrameOptions {
   /// precedence over original_boundary. With neither, every free dart counts
   /// as torn (has_free_link()).
   std::span<const std::uint8_t> torn_darts;
+  /// Int or bool embedding on the element orbit, non-zero for a torn element:
+  /// per-element flags kept by the rules themselves. When it exists it decides
+  /// FrameMesh::torn (the darts above still decide the edges and crack faces).
+  std::string torn_element;
   /// 3D volumes that are no tetra, hexahedron, wedge or pyramid: written as
   /// VTK polyhedra (true) or skipped and counted.
   bool polyhedra = true;
