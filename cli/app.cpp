@@ -6,7 +6,10 @@
 #include <cstdio>
 #include <exception>
 
+#include "cli/commands.hpp"
 #include "cli/info_command.hpp"
+#include "rift/core/input_error.hpp"
+#include "rift/pack/pack.hpp"
 
 #ifndef RIFT_VERSION
 #define RIFT_VERSION "0.1.0"
@@ -14,13 +17,19 @@
 
 namespace rift::cli {
 
-int run(int argc, char** argv) {
+int run(int argc, char** argv, const PackRegistry& packs) {
   CLI::App app{"rift: simulate deformable bodies that tear and fracture, with G-maps and rules"};
   app.set_version_flag("--version", std::string("rift ") + RIFT_VERSION);
   app.require_subcommand(1);
+  app.footer("Run 'rift COMMAND --help' for the options of a command. Documentation: docs/.");
 
-  InfoOptions info;
-  CLI::App* info_cmd = add_info_command(app, info);
+  RunOptions run_options;
+  BenchOptions bench_options;
+  InfoOptions info_options;
+  CLI::App* run_cmd = add_run_command(app, run_options);
+  CLI::App* bench_cmd = add_bench_command(app, bench_options);
+  CLI::App* info_cmd = add_info_command(app, info_options);
+  CLI::App* list_cmd = add_list_command(app);
 
   try {
     app.parse(argc, argv);
@@ -28,15 +37,15 @@ int run(int argc, char** argv) {
     return app.exit(e);
   }
   try {
-    if (info_cmd->parsed()) return run_info(info);
+    if (run_cmd->parsed()) return run_run(run_options, packs);
+    if (bench_cmd->parsed()) return run_bench(bench_options, packs);
+    if (info_cmd->parsed()) return run_info(info_options);
+    if (list_cmd->parsed()) return run_list(packs);
+  } catch (const InputError& e) {
+    fmt::print(stderr, "{}\n", e.what());  // already "file:line: error: ..."
+    return 1;
   } catch (const std::exception& e) {
-    const std::string msg = e.what();
-    // MeshError messages already read "file:line: error: ...".
-    if (msg.find(": error: ") != std::string::npos) {
-      fmt::print(stderr, "{}\n", msg);
-    } else {
-      fmt::print(stderr, "rift: error: {}\n", msg);
-    }
+    fmt::print(stderr, "rift: error: {}\n", e.what());
     return 1;
   }
   return 0;

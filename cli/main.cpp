@@ -1,5 +1,10 @@
+// The `rift` executable: the command line with the standard rule packs.
 #include "cli/app.hpp"
+#include "cli/register_packs.hpp"
+#include "rift/pack/pack.hpp"
 
 int main(int argc, char** argv) {
-  return rift::cli::run(argc, argv);
+  rift::PackRegistry packs;
+  rift_register_packs(packs);
+  return rift::cli::run(argc, argv, packs);
 }

@@ -40,6 +40,7 @@ struct SceneMesh {
 };
 
 struct ScenePins {
+  int line = 0;                        ///< line of the [pin] table, for messages
   std::vector<std::string> corners;    ///< "top-left", "top-right", "bottom-left", "bottom-right"
   std::vector<std::int64_t> vertices;  ///< point indices of the source mesh (0-based)
   std::vector<std::pair<Vec3, Vec3>> boxes;  ///< every vertex inside [min, max]

@@ -228,6 +228,7 @@ class SceneReader {
 
   void read_pins(const toml::table& t, ScenePins& pins) const {
     check_keys(t, {"corners", "vertices", "box"}, "[pin]");
+    pins.line = line_of(t);
     static const std::vector<std::string> kCorners = {"top-left", "top-right", "bottom-left",
                                                       "bottom-right"};
     if (auto* n = t.get("corners")) {
