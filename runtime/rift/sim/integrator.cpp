@@ -45,34 +45,43 @@ void Integrator::step(const AccelerationFn& accel, std::vector<Vec3>& x, std::ve
       break;
   }
 
-  // Classical RK4 on y = (x, v), y' = (v, a(x, v)):
-  //   k1 = (v, a(x, v))
-  //   k2 = (v + dt/2 k1v, a(x + dt/2 k1x, v + dt/2 k1v)), and so on.
-  k2x_.resize(n), k2v_.resize(n), k3x_.resize(n), k3v_.resize(n);
-  k4x_.resize(n), k4v_.resize(n), xs_.resize(n), vs_.resize(n);
+  // Classical RK4 on y = (x, v), y' = (v, a(x, v)), accumulated on the fly
+  // so that a step touches five arrays and copies none:
+  //   k1 = (v, a)             at (x, v)
+  //   k2 = (v2, a2)           at (x + h k1x, v + h k1v), h = dt/2, v2 = v + h a
+  //   k3 = (v3, a3)           at (x + h k2x, v + h k2v)
+  //   k4 = (v4, a4)           at (x + dt k3x, v + dt k3v)
+  //   y += dt/6 (k1 + 2 k2 + 2 k3 + k4)
+  xs_.resize(n), vs_.resize(n), k2x_.resize(n), k2v_.resize(n), k4v_.resize(n);
+  std::vector<Vec3>& x_sum = k2x_;  // running dt/6 (k1x + 2 k2x + 2 k3x + k4x)
+  std::vector<Vec3>& v_sum = k2v_;
+  std::vector<Vec3>& stage_a = k4v_;
   const Real h = dt / 2;
+  const Real w1 = dt / 6, w2 = dt / 3;
   for (std::size_t i = 0; i < n; ++i) {
+    x_sum[i] = w1 * v[i];
+    v_sum[i] = w1 * a[i];
     xs_[i] = x[i] + h * v[i];
     vs_[i] = v[i] + h * a[i];
   }
-  k2x_ = vs_;
-  accel(xs_, vs_, k2v_);
+  accel(xs_, vs_, stage_a);  // a2 at stage 2; vs_ holds v2
   for (std::size_t i = 0; i < n; ++i) {
-    xs_[i] = x[i] + h * k2x_[i];
-    vs_[i] = v[i] + h * k2v_[i];
+    x_sum[i] += w2 * vs_[i];
+    v_sum[i] += w2 * stage_a[i];
+    xs_[i] = x[i] + h * vs_[i];
+    vs_[i] = v[i] + h * stage_a[i];
   }
-  k3x_ = vs_;
-  accel(xs_, vs_, k3v_);
+  accel(xs_, vs_, stage_a);  // a3; vs_ holds v3
   for (std::size_t i = 0; i < n; ++i) {
-    xs_[i] = x[i] + dt * k3x_[i];
-    vs_[i] = v[i] + dt * k3v_[i];
+    x_sum[i] += w2 * vs_[i];
+    v_sum[i] += w2 * stage_a[i];
+    xs_[i] = x[i] + dt * vs_[i];
+    vs_[i] = v[i] + dt * stage_a[i];
   }
-  k4x_ = vs_;
-  accel(xs_, vs_, k4v_);
-  const Real s = dt / 6;
+  accel(xs_, vs_, stage_a);  // a4; vs_ holds v4
   for (std::size_t i = 0; i < n; ++i) {
-    x[i] += s * (v[i] + 2 * k2x_[i] + 2 * k3x_[i] + k4x_[i]);
-    v[i] += s * (a[i] + 2 * k2v_[i] + 2 * k3v_[i] + k4v_[i]);
+    x[i] += x_sum[i] + w1 * vs_[i];
+    v[i] += v_sum[i] + w1 * stage_a[i];
   }
 }
 

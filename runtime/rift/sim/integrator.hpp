@@ -41,7 +41,7 @@ class Integrator {
 
  private:
   IntegratorKind kind_;
-  std::vector<Vec3> a_, k2x_, k2v_, k3x_, k3v_, k4x_, k4v_, xs_, vs_;
+  std::vector<Vec3> a_, k2x_, k2v_, k4v_, xs_, vs_;
 };
 
 }  // namespace rift
