@@ -117,8 +117,10 @@ class ReferenceCloth {
       const Vec3 d = x[s.b] - x[s.a];
       const Real l = d.norm();
       if (!(l > 0)) continue;  // direction undefined: no force
-      const Vec3 u = d / l;
-      const Vec3 fa = (s.k * (l - s.rest) + s.c * (v[s.b] - v[s.a]).dot(u)) * u;
+      // f_a = (k (l - l0) + c dv.u) u with u = d / l, using one division.
+      const Real inv = 1 / l;
+      const Real tension = s.k * (l - s.rest) + s.c * (v[s.b] - v[s.a]).dot(d) * inv;
+      const Vec3 fa = (tension * inv) * d;
       f[s.a] += fa;
       f[s.b] -= fa;
     }
