@@ -103,6 +103,7 @@ Parser::symbol_type Lexer::next() {
       "update"      { return Parser::make_UPDATE(RIFT_TOKEN()); }
       "interaction" { return Parser::make_INTERACTION(RIFT_TOKEN()); }
       "pattern"     { return Parser::make_PATTERN(RIFT_TOKEN()); }
+      "tagged"      { return Parser::make_TAGGED(RIFT_TOKEN()); }
       "force"       { return Parser::make_FORCE(RIFT_TOKEN()); }
       "energy"      { return Parser::make_ENERGY(RIFT_TOKEN()); }
       "criterion"   { return Parser::make_CRITERION(RIFT_TOKEN()); }

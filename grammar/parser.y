@@ -114,7 +114,7 @@ ExprPtr call(std::string name, std::vector<ExprPtr> args, const rift::diag::Loca
        MEASURE "measure" APPLY "apply" AT "at" WITH "with" IF "if" THEN "then" ELSE "else"
        TRUE "true" FALSE "false" OVER "over" SUM "sum" MEAN "mean" COUNT "count" MIN "min"
        MAX "max" T_REAL "real" T_INT "int" T_BOOL "bool" T_VEC3 "vec3" T_MAT3 "mat3"
-       AND "and" OR "or" NOT "not"
+       AND "and" OR "or" NOT "not" TAGGED "tagged"
 
 %token SEMI ";" COLON ":" COMMA "," DOT "." AT_SIGN "@" ASSIGN "=" LBRACE "{" RBRACE "}"
        LPAREN "(" RPAREN ")" LBRACKET "[" RBRACKET "]" LT "<" GT ">" LE "<=" GE ">="
@@ -130,7 +130,11 @@ ExprPtr call(std::string name, std::vector<ExprPtr> args, const rift::diag::Loca
 %type <rift::ast::Type> type
 %type <std::string> collect_op type_call
 %type <rift::ast::Param> param_decl
-%type <std::vector<rift::ast::Param>> params params1
+%type <std::vector<rift::ast::Param>> params params1 component_params component_params1
+%type <rift::ast::Param> component_param
+%type <rift::ast::Param::Bound> opt_bound
+%type <std::string> opt_description
+%type <bool> opt_tagged
 %type <rift::ast::ExprPtr> opt_default
 %type <std::optional<rift::ast::Ident>> opt_merge
 
@@ -269,7 +273,11 @@ params1
   ;
 
 param_decl
-  : ident COLON type { $$ = rift::ast::Param{$1, $3, @3}; }
+  : ident COLON type {
+      $$.name = $1;
+      $$.type = $3;
+      $$.type_loc = @3;
+    }
   ;
 
 rule_stmts
@@ -344,10 +352,13 @@ arc_chain
 /* ---- interactions ------------------------------------------------------------ */
 
 interaction
-  : INTERACTION ident ON orbit {
+  : INTERACTION ident ON orbit opt_tagged component_params {
       ctx.interaction = rift::ast::Interaction{};
       ctx.interaction.name = $2;
       ctx.interaction.support = $4;
+      ctx.interaction.tagged = $5;
+      ctx.interaction.tagged_loc = @5;
+      ctx.interaction.params = $6;
       ctx.lets = &ctx.interaction.lets;
       ctx.whens = &ctx.interaction.whens;
     }
@@ -370,6 +381,9 @@ interaction_stmt
       ctx.pattern->loc = @1;
     }
     LBRACE pattern_stmts RBRACE
+  | INIT ident LPAREN ident RPAREN ASSIGN expr SEMI {
+      ctx.interaction.inits.push_back(rift::ast::Init{$2, $4, $7, @$});
+    }
   | FORCE ident DOT ident ASSIGN expr SEMI {
       ctx.interaction.forces.push_back(rift::ast::Assign{$2, $4, $6, @$});
     }
@@ -381,14 +395,74 @@ interaction_stmt
   | error SEMI
   ;
 
+/* ---- parameters given by the scene ------------------------------------------- */
+
+opt_tagged
+  : %empty { $$ = false; }
+  | TAGGED { $$ = true; }
+  ;
+
+component_params
+  : %empty { }
+  | LPAREN RPAREN { }
+  | LPAREN component_params1 RPAREN { $$ = $2; }
+  ;
+
+component_params1
+  : component_param { $$.push_back($1); }
+  | component_params1 COMMA component_param { $$ = $1; $$.push_back($3); }
+  ;
+
+/* stiffness : real > 0 = 60.0 "N/m" */
+component_param
+  : ident COLON type opt_bound opt_default opt_description {
+      $$.name = $1;
+      $$.type = $3;
+      $$.type_loc = @3;
+      $$.bound = $4;
+      $$.bound_loc = @4;
+      $$.default_value = $5;
+      $$.description = $6;
+    }
+  ;
+
+opt_bound
+  : %empty { $$ = rift::ast::Param::Bound::None; }
+  | GT bound_zero { $$ = rift::ast::Param::Bound::Positive; }
+  | GE bound_zero { $$ = rift::ast::Param::Bound::NonNegative; }
+  | LT bound_zero {
+      ctx.diags.error(@1, "a parameter bound is '> 0' or '>= 0'");
+      $$ = rift::ast::Param::Bound::None;
+    }
+  | LE bound_zero {
+      ctx.diags.error(@1, "a parameter bound is '> 0' or '>= 0'");
+      $$ = rift::ast::Param::Bound::None;
+    }
+  ;
+
+bound_zero
+  : INT {
+      if ($1 != 0) ctx.diags.error(@1, "a parameter bound is '> 0' or '>= 0'; other limits are not supported");
+    }
+  | REAL {
+      if ($1 != 0.0) ctx.diags.error(@1, "a parameter bound is '> 0' or '>= 0'; other limits are not supported");
+    }
+  ;
+
+opt_description
+  : %empty { }
+  | STRING { $$ = $1; }
+  ;
+
 /* ---- criteria ----------------------------------------------------------------- */
 
 criterion
-  : CRITERION ident ON orbit LPAREN ident RPAREN {
+  : CRITERION ident ON orbit LPAREN ident RPAREN component_params {
       ctx.criterion = rift::ast::Criterion{};
       ctx.criterion.name = $2;
       ctx.criterion.orbit = $4;
       ctx.criterion.dart = $6;
+      ctx.criterion.params = $8;
       ctx.lets = &ctx.criterion.lets;
       ctx.whens = nullptr;
     }

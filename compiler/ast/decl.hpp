@@ -51,10 +51,17 @@ struct Let {
   mutable int uses = 0;  // counted by resolve/ for -Wunused-variable
 };
 
+/// A parameter of a rule (given by its caller) or of an interaction or a
+/// criterion (given by the scene: default, bound and description allowed).
 struct Param {
+  enum class Bound { None, Positive, NonNegative };
   Ident name;
   Type type = Type::Error;
   Location type_loc;
+  ExprPtr default_value;  // interaction and criterion parameters only
+  Bound bound = Bound::None;
+  Location bound_loc;
+  std::string description;
   mutable int uses = 0;  // counted by resolve/ for -Wunused-parameter
 };
 
@@ -70,9 +77,21 @@ struct Rule {
   std::vector<Assign> updates;
 };
 
+struct Init {
+  Ident embedding;
+  Ident dart;
+  ExprPtr value;
+  Location loc;
+  const Embedding* target = nullptr;  // bound by resolve/
+};
+
 struct Interaction {
   Ident name;
   Label support;
+  bool tagged = false;  // `tagged`: matches start from the dart tagged at initialisation (§3.2)
+  Location tagged_loc;
+  std::vector<Param> params;  // given by the scene
+  std::vector<Init> inits;    // run once per match of the pattern, at initialisation
   Pattern pattern;
   std::vector<Let> lets;
   std::vector<ExprPtr> whens;
@@ -89,6 +108,7 @@ struct Criterion {
   Ident name;
   Label orbit;
   Ident dart;
+  std::vector<Param> params;  // given by the scene
   std::vector<Let> lets;
   ExprPtr measure;  // a comparison: measure OP threshold
   bool has_apply = false;
@@ -112,13 +132,6 @@ struct PackParam {
   Type type = Type::Error;
   Location type_loc;
   ExprPtr value;
-};
-
-struct Init {
-  Ident embedding;
-  Ident dart;
-  ExprPtr value;
-  Location loc;
 };
 
 struct Include {

@@ -322,20 +322,27 @@ std::vector<CheckedInteraction> check_interactions(const ast::Program& program,
       RuleChecker rc(ci.graph, diags);
       rc.label_lengths();
       rc.hooks({}, "interaction");
+      if (ci.graph.hooks.size() > 1) {
+        const GraphNode& second = ci.graph.left.nodes[static_cast<std::size_t>(ci.graph.hooks[1])];
+        diags.error(second.decl->name.loc,
+                    "node '" + second.name() + "' is not connected to '" +
+                        ci.graph.left.nodes[static_cast<std::size_t>(ci.graph.hooks[0])].name() +
+                        "'; an interaction pattern is reached from the support dart by explicit " +
+                        "arcs");
+      }
       if (rc.ok()) rc.unique_dims(ci.graph.left);
-      // The pattern is matched once per support orbit, from one of its darts:
-      // a hook orbit larger than the support would be counted several times.
-      for (int h : ci.graph.hooks) {
-        const GraphNode& hook = ci.graph.left.nodes[static_cast<std::size_t>(h)];
-        for (int d : hook.label()) {
-          if (d < 0 || std::count(inter.support.dims.begin(), inter.support.dims.end(), d))
-            continue;
-          diags
-              .error(hook.decl->label.loc, "the hook '" + hook.name() + "' follows " + dim_str(d) +
-                                               "-links, which leave the support orbit")
-              .notes.push_back({inter.support.loc, "the support orbit"});
-          break;
-        }
+      // Interaction patterns are explicit (every node a single dart, reached
+      // from the support dart by explicit arcs): a match is then a fixed-size
+      // record of slots, cached and swept by a flat force loop.
+      for (const GraphNode& node : ci.graph.left.nodes) {
+        if (node.label().empty()) continue;
+        diags
+            .error(node.decl->label.loc,
+                   "node '" + node.name() + "' of an interaction pattern is labelled with an " +
+                       "orbit; interaction patterns are explicit: label every node <> and " +
+                       "reach it with explicit arcs")
+            .notes.push_back({inter.support.loc, "the support orbit, matched from one dart"});
+        break;
       }
       std::string vertex = "<";
       for (int d = 1; d <= program.dimension; ++d) {

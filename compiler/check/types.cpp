@@ -245,6 +245,19 @@ void check_assign(const ast::Assign& a, TypeChecker& tc, const char* what) {
   tc.expect(*a.value, a.target->type, std::string(what) + " '" + a.embedding.text + "'");
 }
 
+void check_component_params(const std::vector<ast::Param>& params, TypeChecker& tc,
+                            diag::Diagnostics& diags) {
+  for (const ast::Param& p : params) {
+    if (p.default_value) {
+      tc.expect(*p.default_value, p.type, "the default of '" + p.name.text + "'");
+    }
+    if (p.bound != ast::Param::Bound::None && !numeric(p.type)) {
+      diags.error(p.bound_loc, "only real and int parameters can have a bound, and '" +
+                                   p.name.text + "' is " + str(p.type));
+    }
+  }
+}
+
 }  // namespace
 
 bool check_orbit_type(const ast::Label& label, int dimension, const char* what,
@@ -300,6 +313,20 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols,
         check_assign(u, tc, "the update of");
     }
     for (const auto& inter : file.interactions) {
+      check_component_params(inter.params, tc, diags);
+      for (const auto& init : inter.inits) {
+        if (!init.target) {
+          tc.expr(*init.value);
+          continue;
+        }
+        tc.expect(*init.value, init.target->type,
+                  "the initial value of '" + init.embedding.text + "'");
+        auto [it, fresh] = initialised.emplace(init.embedding.text, init.embedding.loc);
+        if (!fresh) {
+          diags.error(init.embedding.loc, "'" + init.embedding.text + "' is initialised twice")
+              .notes.push_back({it->second, "first initialised here"});
+        }
+      }
       tc.lets(inter.lets);
       for (const auto& w : inter.whens)
         tc.expect(*w, Type::Bool, "a precondition");
@@ -315,6 +342,7 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols,
       if (inter.energy) tc.expect(*inter.energy, Type::Real, "the energy");
     }
     for (const auto& crit : file.criteria) {
+      check_component_params(crit.params, tc, diags);
       tc.lets(crit.lets);
       if (!crit.measure) {
         diags.error(crit.name.loc, "criterion '" + crit.name.text + "' has no 'measure'");

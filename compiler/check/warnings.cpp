@@ -12,6 +12,17 @@ void unused_lets(const std::vector<ast::Let>& lets, diag::Diagnostics& diags) {
   }
 }
 
+void unused_params(const std::vector<ast::Param>& params, const char* kind,
+                   const std::string& owner, diag::Diagnostics& diags) {
+  for (const ast::Param& p : params) {
+    if (p.uses == 0) {
+      diags.warning(
+          "unused-parameter", p.name.loc,
+          "parameter '" + p.name.text + "' of " + kind + " '" + owner + "' is never used");
+    }
+  }
+}
+
 }  // namespace
 
 void check_unused(const ast::Program& program, diag::Diagnostics& diags) {
@@ -26,10 +37,14 @@ void check_unused(const ast::Program& program, diag::Diagnostics& diags) {
         }
       }
     }
-    for (const ast::Interaction& i : file.interactions)
+    for (const ast::Interaction& i : file.interactions) {
       unused_lets(i.lets, diags);
-    for (const ast::Criterion& c : file.criteria)
+      unused_params(i.params, "interaction", i.name.text, diags);
+    }
+    for (const ast::Criterion& c : file.criteria) {
       unused_lets(c.lets, diags);
+      unused_params(c.params, "criterion", c.name.text, diags);
+    }
   }
 }
 

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "check/embeddings.hpp"
+#include "check/kernels.hpp"
 #include "check/topology.hpp"
 #include "check/types.hpp"
 #include "check/warnings.hpp"
@@ -42,6 +43,7 @@ void run_checks(const ast::Program& program, diag::Diagnostics& diags, Checked& 
   out.rules = check::check_rules(program, diags);
   out.interactions = check::check_interactions(program, diags);
   check::check_applies(program, out.rules, diags);
+  check::check_kernels(program, out.symbols, diags);
   check::check_embeddings(out.rules, out.symbols, diags);
   check::check_unused(program, diags);
 }
@@ -93,6 +95,7 @@ void generate(const ast::Program& program, const Checked& checked,
   model.rules = &checked.rules;
   model.interactions = &checked.interactions;
   model.pack = program.files.empty() ? "pack" : program.files.front().pack.text;
+  model.pack_namespace = "rift::packs::" + model.pack;
   const emit::GeneratedPack pack = emit::generate_pack(model, sources);
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);

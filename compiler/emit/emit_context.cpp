@@ -14,8 +14,8 @@ void fetch_embeddings(Writer& w, const std::set<std::string>& names,
                       const resolve::Symbols& symbols, const std::string& user) {
   for (const std::string& name : names) {
     const ast::Embedding* emb = symbols.embedding(name);
-    w.line("auto " + embedding_var(name) + " = require_embedding<" + cpp_type(emb->type) + ">(g, " +
-           quote(name) + ", " + quote(user) + ");");
+    w.line("auto " + embedding_var(name) + " = require_embedding<" + storage_type(emb->type) +
+           ">(g, " + quote(name) + ", " + quote(user) + ");");
   }
 }
 

@@ -21,8 +21,25 @@ struct PackModel {
   const resolve::Symbols* symbols = nullptr;
   const std::vector<check::CheckedRule>* rules = nullptr;
   const std::vector<check::CheckedInteraction>* interactions = nullptr;
-  std::string pack;  // C++ namespace name of the pack
+  std::string pack;            // the pack's name
+  std::string pack_namespace;  // rift::packs::<pack>
 };
+
+/// Name of the generated bool embedding on <> that tags the first dart of
+/// each support orbit of a `tagged` interaction.
+std::string tag_embedding(std::string_view interaction);
+
+/// A constant expression (defaults), as C++.
+std::string constant_expr(const ast::Expr& e, ast::Type to);
+
+/// `struct NAME { T field = default; ... };` for scene-given parameters.
+void declare_component_params(Writer& w, const std::string& name,
+                              const std::vector<ast::Param>& params);
+/// `NAME NAME_from(const rift::ComponentUse& use)`: reads (and checks) them from a scene.
+void emit_component_params_reader(Writer& w, const std::string& name, const std::string& user,
+                                  const std::vector<ast::Param>& params);
+/// `{"stiffness", rift::ValueType::kReal, default, "description", positive, non_negative}, ...`
+void write_param_specs(Writer& w, const std::vector<ast::Param>& params, bool from_scene);
 
 /// Names of the embeddings an expression reads.
 void embeddings_read(const ast::Expr& e, std::set<std::string>& out);
@@ -43,8 +60,14 @@ void emit_match(Writer& w, const check::RuleGraph& g, const lower::MatchPlan& ma
                 const std::string& fail);
 
 void emit_rule(Writer& w, const check::CheckedRule& rule, const PackModel& model);
-void emit_interaction(Writer& w, const check::CheckedInteraction& inter, const PackModel& model);
-void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& model);
 void emit_initialisers(Writer& w, const PackModel& model);
+
+/// Header declarations and source definitions of the generated classes.
+void declare_kernel(Writer& w, const check::CheckedInteraction& inter, const PackModel& model);
+void emit_kernel(Writer& w, const check::CheckedInteraction& inter, const PackModel& model);
+void declare_criterion(Writer& w, const ast::Criterion& crit, const PackModel& model);
+void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& model);
+void declare_rule_class(Writer& w, const check::CheckedRule& rule);
+void emit_rule_class(Writer& w, const check::CheckedRule& rule);
 
 }  // namespace rift::emit

@@ -50,6 +50,7 @@ class Emitter {
         if (e.param) return ctx_.args + "." + member_name(e.name);
         return ctx_.params + "." + member_name(e.name);
       case Expr::Kind::Read:
+        if (ctx_.read) return ctx_.read(e);
         return embedding_var(e.name) + "[" + dart_path(e, ctx_) + "]";
       case Expr::Kind::Collect:
         return "collect_" + e.op + "(" + ctx_.map + ", " + embedding_var(e.name) + ", " +

@@ -16,6 +16,9 @@ struct ExprContext {
   std::string args = "args";      // the rule's parameters
   std::string params = "params";  // the pack's parameters
   std::string map = "g";          // the rift::GMap
+  /// When set, writes an embedding read (Expr::Kind::Read) instead of
+  /// `e_NAME[dart]`: force kernels read through slots cached in the match.
+  std::function<std::string(const ast::Expr& read)> read;
 };
 
 std::string emit_expr(const ast::Expr& e, const ExprContext& ctx);

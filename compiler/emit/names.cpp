@@ -22,6 +22,41 @@ std::string cpp_type(ast::Type t) {
   return "void";
 }
 
+std::string storage_type(ast::Type t) {
+  return t == ast::Type::Bool ? "rift::Bool" : cpp_type(t);
+}
+
+std::string camel_name(std::string_view name) {
+  std::string out;
+  bool upper = true;
+  for (char c : name) {
+    if (c == '_') {
+      if (upper) out += '_';  // keep runs of underscores: names stay distinct
+      upper = true;
+      continue;
+    }
+    out += upper && c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c;
+    upper = false;
+  }
+  return out;
+}
+
+std::string kernel_class(std::string_view interaction) {
+  return camel_name(interaction) + "Kernel";
+}
+std::string interaction_class(std::string_view interaction) {
+  return camel_name(interaction) + "Interaction";
+}
+std::string component_params_struct(std::string_view name) {
+  return camel_name(name) + "Params";
+}
+std::string criterion_class(std::string_view criterion) {
+  return camel_name(criterion) + "Criterion";
+}
+std::string rule_class(std::string_view rule) {
+  return camel_name(rule) + "Rule";
+}
+
 std::string value_type_enum(ast::Type t) {
   switch (t) {
     case ast::Type::Real:

@@ -12,6 +12,8 @@ namespace rift::emit {
 
 /// The C++ type of a value type.
 std::string cpp_type(ast::Type t);
+/// The C++ type an embedding column of that type holds (bool: rift::Bool).
+std::string storage_type(ast::Type t);
 /// `rift::ValueType::kReal` ...
 std::string value_type_enum(ast::Type t);
 
@@ -20,5 +22,12 @@ std::string dart_name(std::string_view node);      // d_a (left/matched), n_a (r
 std::string embedding_var(std::string_view name);  // e_position
 std::string rule_function(std::string_view rule);  // apply_rule
 std::string member_name(std::string_view name);    // fields of Params and Args structs
+/// A C++ class name from a rule-language name: "global_edge" -> "GlobalEdge".
+std::string camel_name(std::string_view name);
+std::string kernel_class(std::string_view interaction);       // StretchKernel
+std::string interaction_class(std::string_view interaction);  // StretchInteraction
+std::string component_params_struct(std::string_view name);   // StretchParams
+std::string criterion_class(std::string_view criterion);      // GlobalEdgeCriterion
+std::string rule_class(std::string_view rule);                // SeparateFacesRule
 
 }  // namespace rift::emit

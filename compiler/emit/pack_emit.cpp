@@ -38,10 +38,24 @@ std::string orbit_text(const std::vector<int>& dims) {
   return out + ">";
 }
 
-ExprContext constant_context() {
-  ExprContext ctx;
-  ctx.dart = [](const std::string&) { return std::string("rift::kNoDart"); };
-  return ctx;
+template <class F>
+void for_each_criterion(const PackModel& m, F&& f) {
+  for (const ast::File& file : m.program->files) {
+    for (const ast::Criterion& c : file.criteria)
+      f(c);
+  }
+}
+
+template <class F>
+void for_each_embedding(const PackModel& m, F&& f) {
+  for (const ast::File& file : m.program->files) {
+    for (const ast::Embedding& e : file.embeddings)
+      f(e);
+  }
+}
+
+std::string register_function(const std::string& pack) {
+  return "rift_register_pack_" + pack;
 }
 
 void write_header(Writer& w, const PackModel& m) {
@@ -50,19 +64,25 @@ void write_header(Writer& w, const PackModel& m) {
   w.line();
   w.line("#include <cstddef>");
   w.line("#include <cstdint>");
-  w.line("#include <limits>");
+  w.line("#include <memory>");
   w.line("#include <span>");
+  w.line("#include <string>");
+  w.line("#include <vector>");
   w.line();
   w.line("#include \"rift/gmap/gmap.hpp\"");
+  w.line("#include \"rift/pack/pack.hpp\"");
+  w.line("#include \"rift/sim/cached_interaction.hpp\"");
   w.line();
   w.line("namespace rift::packs::" + m.pack + " {");
   w.line();
-  w.line("/// The pack's parameters; a scene may override them by name.");
+  w.line("inline constexpr int kDimension = " + std::to_string(m.program->dimension) + ";");
+  w.line();
+  w.line("/// The pack's parameters (`param`), with their defaults.");
   w.open("struct Params {");
   for (const ast::File& f : m.program->files) {
     for (const ast::PackParam& p : f.params) {
       w.line(cpp_type(p.type) + " " + member_name(p.name.text) + " = " +
-             convert(emit_expr(*p.value, constant_context()), p.value->type, p.type) + ";");
+             constant_expr(*p.value, p.type) + ";");
     }
   }
   w.close("};");
@@ -83,53 +103,152 @@ void write_header(Writer& w, const PackModel& m) {
   w.line();
   for (const check::CheckedRule& cr : *m.rules) {
     w.line("/// Rule '" + cr.rule->name.text +
-           "': true when it matched at `hooks` and was applied.");
+           "': true when it matched at `hooks` and was applied; every dart it created,");
+    w.line("/// relinked, deleted or moved to another embedding slot is appended to `touched`.");
     w.line("bool " + rule_function(cr.rule->name.text) +
            "(rift::GMap& g, std::span<const rift::Dart> hooks, const " + cr.rule->name.text +
-           "_args& args = {}, const Params& params = {});");
+           "_args& args = {}, const Params& params = {}, std::vector<rift::Dart>* touched = "
+           "nullptr);");
   }
   w.line();
-  w.open("struct InteractionResult {");
-  w.line("rift::Real energy = 0;");
-  w.line("std::size_t matched = 0;  ///< support orbits whose pattern matched");
-  w.close("};");
-  for (const check::CheckedInteraction& ci : *m.interactions) {
-    w.line("InteractionResult interaction_" + ci.interaction->name.text +
-           "(rift::GMap& g, const Params& params = {});");
-  }
+  for (const check::CheckedInteraction& ci : *m.interactions)
+    declare_kernel(w, ci, m);
+  for_each_criterion(m, [&](const ast::Criterion& c) { declare_criterion(w, c, m); });
+  for (const check::CheckedRule& cr : *m.rules)
+    declare_rule_class(w, cr);
+  w.line("/// The pack as a simulator sees it: embeddings, catalog and factories.");
+  w.open("class Pack final : public rift::Pack {");
+  w.middle(" public:");
+  w.line("explicit Pack(const Params& params = {});");
+  w.line("const std::string& name() const override { return name_; }");
+  w.line("int dimension() const override { return kDimension; }");
+  w.line("const std::string& description() const override { return description_; }");
+  w.line(
+      "const std::vector<rift::EmbeddingDecl>& embeddings() const override { return embeddings_; "
+      "}");
+  w.line("const rift::Catalog& catalog() const override { return catalog_; }");
+  w.line("std::vector<std::string> rule_names() const override;");
+  w.line("/// Declares the embeddings, then runs the pack-level initialisers.");
+  w.line("void initialise(rift::GMap& map) const override;");
+  w.line(
+      "std::unique_ptr<rift::ForceModel> make_interaction(const rift::ComponentUse& use) const "
+      "override;");
+  w.line(
+      "std::unique_ptr<rift::Criterion> make_criterion(const rift::ComponentUse& use) const "
+      "override;");
+  w.line("std::unique_ptr<rift::Rule> make_rule(const std::string& name) const override;");
+  w.line("const Params& params() const { return params_; }");
   w.line();
-  w.open("struct CriterionResult {");
-  w.line("std::size_t triggered = 0;  ///< orbits where the measure passed the threshold");
-  w.line("std::size_t applied = 0;    ///< of those, where the rule applied");
-  w.line("rift::Real max_measure = -std::numeric_limits<rift::Real>::infinity();");
+  w.middle(" private:");
+  w.line("Params params_;");
+  w.line("std::string name_ = " + quote(m.pack) + ";");
+  w.line("std::string description_;");
+  w.line("std::vector<rift::EmbeddingDecl> embeddings_;");
+  w.line("rift::Catalog catalog_;");
   w.close("};");
-  for (const ast::File& f : m.program->files) {
-    for (const ast::Criterion& c : f.criteria) {
-      w.line("CriterionResult criterion_" + c.name.text +
-             "(rift::GMap& g, const Params& params = {});");
-    }
-  }
-  w.line();
-  w.line("// Registry: lets a simulator list and select by name.");
-  w.open("struct RuleEntry {");
-  w.line("const char* name;");
-  w.line("std::size_t hooks;");
-  w.line("bool (*apply)(rift::GMap&, std::span<const rift::Dart>, const Params&);");
-  w.close("};");
-  w.open("struct InteractionEntry {");
-  w.line("const char* name;");
-  w.line("InteractionResult (*compute)(rift::GMap&, const Params&);");
-  w.close("};");
-  w.open("struct CriterionEntry {");
-  w.line("const char* name;");
-  w.line("CriterionResult (*evaluate)(rift::GMap&, const Params&);");
-  w.close("};");
-  w.line("std::span<const RuleEntry> rules();");
-  w.line("std::span<const InteractionEntry> interactions();");
-  w.line("std::span<const CriterionEntry> criteria();");
-  w.line("inline constexpr int kDimension = " + std::to_string(m.program->dimension) + ";");
   w.line();
   w.line("}  // namespace rift::packs::" + m.pack);
+  w.line();
+  w.line("/// Adds the pack to a simulator's registry (rift_add_simulator calls it).");
+  w.line("void " + register_function(m.pack) + "(rift::PackRegistry& registry);");
+}
+
+std::string default_of(const ast::Embedding& e) {
+  return e.default_value ? constant_expr(*e.default_value, e.type) : zero_of(e.type);
+}
+
+void write_pack_class(Writer& w, const PackModel& m) {
+  std::size_t criteria = 0;
+  for_each_criterion(m, [&](const ast::Criterion&) { ++criteria; });
+  const std::string description =
+      "rule pack '" + m.pack + "' (" + std::to_string(m.program->dimension) +
+      "D): " + std::to_string(m.interactions->size()) + " interaction(s), " +
+      std::to_string(criteria) + " criterion(s), " + std::to_string(m.rules->size()) + " rule(s)";
+  w.open("Pack::Pack(const Params& params) : params_(params), description_(" + quote(description) +
+         ") {");
+  for_each_embedding(m, [&](const ast::Embedding& e) {
+    w.line("embeddings_.push_back({" + quote(e.name.text) + ", " + value_type_enum(e.type) + ", " +
+           orbit_code(e.orbit.dims) + ", " + policy_of(e) + ", rift::Value(" +
+           storage_type(e.type) + "(" + default_of(e) + "))});");
+  });
+  for (const check::CheckedInteraction& ci : *m.interactions) {
+    if (!ci.interaction->tagged) continue;
+    w.line("embeddings_.push_back({" + quote(tag_embedding(ci.interaction->name.text)) +
+           ", rift::ValueType::kBool, rift::Orbit(), rift::MergePolicy::kKeepFirst, "
+           "rift::Value(rift::Bool(false))});");
+  }
+  for (const check::CheckedInteraction& ci : *m.interactions) {
+    const ast::Interaction& in = *ci.interaction;
+    std::string forces;
+    for (const ast::Assign& f : in.forces) {
+      if (forces.find(f.embedding.text) == std::string::npos)
+        forces += (forces.empty() ? "" : ", ") + f.embedding.text;
+    }
+    w.open("catalog_.interactions.push_back({" + quote(in.name.text) + ", " +
+           quote("support " + orbit_text(in.support.dims) +
+                 (forces.empty() ? "" : "; forces stored in " + forces)) +
+           ", {");
+    write_param_specs(w, in.params, true);
+    w.close("}, kDimension});");
+  }
+  for_each_criterion(m, [&](const ast::Criterion& c) {
+    w.open("catalog_.criteria.push_back({" + quote(c.name.text) + ", " +
+           quote("on " + orbit_text(c.orbit.dims) + "; applies rule " + c.rule.text) + ", {");
+    write_param_specs(w, c.params, true);
+    w.close("}, kDimension});");
+  });
+  w.close();
+  w.line();
+  w.open("std::vector<std::string> Pack::rule_names() const {");
+  std::string names;
+  for (const check::CheckedRule& cr : *m.rules)
+    names += (names.empty() ? "" : ", ") + quote(cr.rule->name.text);
+  w.line("return {" + names + "};");
+  w.close();
+  w.line();
+  w.open("void Pack::initialise(rift::GMap& map) const {");
+  w.line("declare_embeddings(map);");
+  w.line("run_initialisers(map, params_);");
+  w.close();
+  w.line();
+  w.open(
+      "std::unique_ptr<rift::ForceModel> Pack::make_interaction(const rift::ComponentUse& use) "
+      "const {");
+  for (const check::CheckedInteraction& ci : *m.interactions) {
+    const std::string& n = ci.interaction->name.text;
+    w.open("if (use.name == " + quote(n) + ") {");
+    w.line("return std::make_unique<" + interaction_class(n) + ">(" + component_params_struct(n) +
+           "_from(use), params_);");
+    w.close();
+  }
+  w.line("throw std::invalid_argument(\"pack '" + m.pack +
+         "' has no interaction '\" + use.name + \"'\");");
+  w.close();
+  w.line();
+  w.open(
+      "std::unique_ptr<rift::Criterion> Pack::make_criterion(const rift::ComponentUse& use) const "
+      "{");
+  for_each_criterion(m, [&](const ast::Criterion& c) {
+    const std::string& n = c.name.text;
+    w.open("if (use.name == " + quote(n) + ") {");
+    w.line("return std::make_unique<" + criterion_class(n) + ">(" + component_params_struct(n) +
+           "_from(use), params_);");
+    w.close();
+  });
+  w.line("throw std::invalid_argument(\"pack '" + m.pack +
+         "' has no criterion '\" + use.name + \"'\");");
+  w.close();
+  w.line();
+  w.open("std::unique_ptr<rift::Rule> Pack::make_rule(const std::string& name) const {");
+  w.line("(void)name;");
+  for (const check::CheckedRule& cr : *m.rules) {
+    const std::string& n = cr.rule->name.text;
+    w.line("if (name == " + quote(n) + ") return std::make_unique<" + rule_class(n) +
+           ">(params_);");
+  }
+  w.line("return nullptr;");
+  w.close();
+  w.line();
 }
 
 void write_declare(Writer& w, const PackModel& m) {
@@ -138,13 +257,10 @@ void write_declare(Writer& w, const PackModel& m) {
     for (const ast::Embedding& e : f.embeddings) {
       const std::string name = quote(e.name.text);
       const std::string orbit = orbit_code(e.orbit.dims);
-      const std::string def = e.default_value
-                                  ? convert(emit_expr(*e.default_value, constant_context()),
-                                            e.default_value->type, e.type)
-                                  : zero_of(e.type);
+      const std::string def = default_of(e);
       w.open("if (!g.has_embedding(" + name + ")) {");
-      w.line("g.add_embedding<" + cpp_type(e.type) + ">(" + name + ", " + orbit + ", " +
-             policy_of(e) + ", " + cpp_type(e.type) + "(" + def + "));");
+      w.line("g.add_embedding<" + storage_type(e.type) + ">(" + name + ", " + orbit + ", " +
+             policy_of(e) + ", " + storage_type(e.type) + "(" + def + "));");
       w.middle("} else if (g.find_column(" + name + ")->type() != " + value_type_enum(e.type) +
                " || !(g.attachment_of(" + name + ")->orbit() == " + orbit + ")) {");
       w.line("throw std::invalid_argument(" +
@@ -154,6 +270,14 @@ void write_declare(Writer& w, const PackModel& m) {
              ");");
       w.close();
     }
+  }
+  for (const check::CheckedInteraction& ci : *m.interactions) {
+    if (!ci.interaction->tagged) continue;
+    const std::string name = quote(tag_embedding(ci.interaction->name.text));
+    w.open("if (!g.has_embedding(" + name + ")) {");
+    w.line("g.add_embedding<rift::Bool>(" + name +
+           ", rift::Orbit(), rift::MergePolicy::kKeepFirst, rift::Bool(false));");
+    w.close();
   }
   w.close();
 }
@@ -172,8 +296,8 @@ GeneratedPack generate_pack(const PackModel& m, const diag::SourceManager& sourc
   w.line("// Generated by riftc from pack '" + m.pack + "'. Do not edit: edit the .rules files.");
   w.line("#include \"" + out.header_name + "\"");
   w.line();
-  for (const char* inc : {"<algorithm>", "<cmath>", "<stdexcept>", "<string>", "<type_traits>",
-                          "<utility>", "<vector>", "<Eigen/Dense>"}) {
+  for (const char* inc : {"<algorithm>", "<cmath>", "<limits>", "<stdexcept>", "<string>",
+                          "<type_traits>", "<utility>", "<variant>", "<vector>", "<Eigen/Dense>"}) {
     w.line(std::string("#include ") + inc);
   }
   w.line();
@@ -186,54 +310,34 @@ GeneratedPack generate_pack(const PackModel& m, const diag::SourceManager& sourc
     pre = nl == std::string_view::npos ? std::string_view{} : pre.substr(nl + 1);
   }
   w.line();
+  w.open("namespace {");
+  for (const check::CheckedInteraction& ci : *m.interactions) {
+    const std::string& n = ci.interaction->name.text;
+    emit_component_params_reader(w, component_params_struct(n), "interaction '" + n + "'",
+                                 ci.interaction->params);
+  }
+  for_each_criterion(m, [&](const ast::Criterion& c) {
+    emit_component_params_reader(w, component_params_struct(c.name.text),
+                                 "criterion '" + c.name.text + "'", c.params);
+  });
+  w.close("}  // namespace");
+  w.line();
   write_declare(w, m);
   w.line();
   emit_initialisers(w, m);
   for (const check::CheckedRule& cr : *m.rules)
     emit_rule(w, cr, m);
   for (const check::CheckedInteraction& ci : *m.interactions)
-    emit_interaction(w, ci, m);
-  for (const ast::File& f : m.program->files) {
-    for (const ast::Criterion& c : f.criteria)
-      emit_criterion(w, c, m);
-  }
-  // Registry.
-  w.open("std::span<const RuleEntry> rules() {");
-  w.open("static const RuleEntry entries[] = {");
-  for (const check::CheckedRule& cr : *m.rules) {
-    const std::string& n = cr.rule->name.text;
-    w.line(
-        std::string("{") + quote(n) + ", " + std::to_string(cr.graph.hooks.size()) +
-        ", [](rift::GMap& g, std::span<const rift::Dart> hooks, const Params& params) { return " +
-        rule_function(n) + "(g, hooks, " + n + "_args{}, params); }},");
-  }
-  w.line("{nullptr, 0, nullptr},");
-  w.close("};");
-  w.line("return std::span<const RuleEntry>(entries, std::size(entries) - 1);");
-  w.close();
-  w.open("std::span<const InteractionEntry> interactions() {");
-  w.open("static const InteractionEntry entries[] = {");
-  for (const check::CheckedInteraction& ci : *m.interactions) {
-    w.line(std::string("{") + quote(ci.interaction->name.text) + ", &interaction_" +
-           ci.interaction->name.text + "},");
-  }
-  w.line("{nullptr, nullptr},");
-  w.close("};");
-  w.line("return std::span<const InteractionEntry>(entries, std::size(entries) - 1);");
-  w.close();
-  w.open("std::span<const CriterionEntry> criteria() {");
-  w.open("static const CriterionEntry entries[] = {");
-  for (const ast::File& f : m.program->files) {
-    for (const ast::Criterion& c : f.criteria) {
-      w.line(std::string("{") + quote(c.name.text) + ", &criterion_" + c.name.text + "},");
-    }
-  }
-  w.line("{nullptr, nullptr},");
-  w.close("};");
-  w.line("return std::span<const CriterionEntry>(entries, std::size(entries) - 1);");
-  w.close();
-  w.line();
+    emit_kernel(w, ci, m);
+  for_each_criterion(m, [&](const ast::Criterion& c) { emit_criterion(w, c, m); });
+  for (const check::CheckedRule& cr : *m.rules)
+    emit_rule_class(w, cr);
+  write_pack_class(w, m);
   w.line("}  // namespace rift::packs::" + m.pack);
+  w.line();
+  w.open("void " + register_function(m.pack) + "(rift::PackRegistry& registry) {");
+  w.line("registry.add(std::make_unique<rift::packs::" + m.pack + "::Pack>());");
+  w.close();
   out.source = w.str();
   return out;
 }

@@ -93,7 +93,9 @@ struct Scratch {
 /// After a rewrite has set its links, gives every embedding orbit touching the rewritten darts
 /// one slot: orbits that merged combine their values with the column's policy, an orbit split
 /// from another keeps a copy of the value (§4.1), a new orbit gets the defaults.
-[[maybe_unused]] void update_embedding_slots(rift::GMap& g, const rift::Dart* darts, std::size_t count, Scratch& s) {
+/// Darts whose slot changes are appended to `touched`.
+[[maybe_unused]] void update_embedding_slots(rift::GMap& g, const rift::Dart* darts, std::size_t count, Scratch& s,
+                                             std::vector<rift::Dart>* touched) {
   for (const auto& attachment : g.attachments()) {
     rift::OrbitAttachment& att = *attachment;
     const rift::Mark m = g.reserve_mark();
@@ -135,7 +137,9 @@ struct Scratch {
       }
       s.claimed.push_back(keep);
       for (rift::Dart x : s.orbit) {
-        if (att.slot(x) != keep) att.assign(x, keep);
+        if (att.slot(x) == keep) continue;
+        att.assign(x, keep);
+        if (touched) touched->push_back(x);
       }
     }
     for (rift::Dart x : s.marked) g.unmark(x, m);
@@ -154,7 +158,7 @@ T zero() {
 
 /// Calls f(value) once per E-orbit inside the orbit <o>(d).
 template <class T, class F>
-void for_each_value(const rift::GMap& g, rift::Embedding<T>& e, rift::Dart d, rift::Orbit o, F&& f) {
+void for_each_value(const rift::GMap& g, const rift::Embedding<T>& e, rift::Dart d, rift::Orbit o, F&& f) {
   Scratch& s = scratch();
   s.seen.clear();
   g.for_each_in_orbit(d, o, [&](rift::Dart x) {
@@ -166,21 +170,21 @@ void for_each_value(const rift::GMap& g, rift::Embedding<T>& e, rift::Dart d, ri
 }
 
 template <class T>
-T collect_sum(const rift::GMap& g, rift::Embedding<T>& e, rift::Dart d, rift::Orbit o) {
+T collect_sum(const rift::GMap& g, const rift::Embedding<T>& e, rift::Dart d, rift::Orbit o) {
   T acc = zero<T>();
   for_each_value(g, e, d, o, [&](const T& v) { acc = acc + v; });
   return acc;
 }
 
 template <class T>
-std::int64_t collect_count(const rift::GMap& g, rift::Embedding<T>& e, rift::Dart d, rift::Orbit o) {
+std::int64_t collect_count(const rift::GMap& g, const rift::Embedding<T>& e, rift::Dart d, rift::Orbit o) {
   std::int64_t n = 0;
   for_each_value(g, e, d, o, [&](const T&) { ++n; });
   return n;
 }
 
 template <class T>
-auto collect_mean(const rift::GMap& g, rift::Embedding<T>& e, rift::Dart d, rift::Orbit o) {
+auto collect_mean(const rift::GMap& g, const rift::Embedding<T>& e, rift::Dart d, rift::Orbit o) {
   const T sum = collect_sum(g, e, d, o);
   const auto n = static_cast<rift::Real>(collect_count(g, e, d, o));
   if constexpr (std::is_same_v<T, std::int64_t>) {
@@ -191,14 +195,14 @@ auto collect_mean(const rift::GMap& g, rift::Embedding<T>& e, rift::Dart d, rift
 }
 
 template <class T>
-T collect_min(const rift::GMap& g, rift::Embedding<T>& e, rift::Dart d, rift::Orbit o) {
+T collect_min(const rift::GMap& g, const rift::Embedding<T>& e, rift::Dart d, rift::Orbit o) {
   T best = std::numeric_limits<T>::max();
   for_each_value(g, e, d, o, [&](const T& v) { best = std::min(best, v); });
   return best;
 }
 
 template <class T>
-T collect_max(const rift::GMap& g, rift::Embedding<T>& e, rift::Dart d, rift::Orbit o) {
+T collect_max(const rift::GMap& g, const rift::Embedding<T>& e, rift::Dart d, rift::Orbit o) {
   T best = std::numeric_limits<T>::lowest();
   for_each_value(g, e, d, o, [&](const T& v) { best = std::max(best, v); });
   return best;
@@ -221,6 +225,32 @@ T collect_max(const rift::GMap& g, rift::Embedding<T>& e, rift::Dart d, rift::Or
 
 [[maybe_unused]] rift::Vec3 symmetric_max_eigenvector(const rift::Mat3& m) {
   return Eigen::SelfAdjointEigenSolver<rift::Mat3>(m).eigenvectors().col(2);
+}
+
+/// A parameter value given by a scene or a caller, as T (an int is accepted for a real).
+template <class T>
+T value_as(const rift::Value& v, const std::string& what) {
+  if constexpr (std::is_same_v<T, rift::Real>) {
+    if (const auto* i = std::get_if<std::int64_t>(&v)) return static_cast<rift::Real>(*i);
+  }
+  if constexpr (std::is_same_v<T, bool>) {
+    if (const auto* b = std::get_if<rift::Bool>(&v)) return b->value;
+  } else {
+    if (const auto* x = std::get_if<T>(&v)) return *x;
+  }
+  throw std::invalid_argument(what + " has a value of the wrong type");
+}
+
+/// The dart of <o>(d) tagged at initialisation (§3.2: the first dart fixes the
+/// order of an element's vertices), or kNoDart.
+[[maybe_unused]] rift::Dart tagged_dart(const rift::GMap& g, const rift::Embedding<rift::Bool>& tag, rift::Dart d,
+                                        rift::Orbit o) {
+  if (tag[d]) return d;
+  rift::Dart found = rift::kNoDart;
+  g.for_each_in_orbit(d, o, [&](rift::Dart x) {
+    if (found == rift::kNoDart && tag[x]) found = x;
+  });
+  return found;
 }
 
 template <class T>

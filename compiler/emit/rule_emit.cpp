@@ -34,6 +34,10 @@ void open_row_loop(Writer& w, const check::PatternSide& side, bool right) {
   }
 }
 
+std::size_t nl_of(const check::RuleGraph& g) {
+  return g.left.nodes.size();
+}
+
 }  // namespace
 
 void emit_match(Writer& w, const check::RuleGraph& g, const lower::MatchPlan& match,
@@ -93,7 +97,7 @@ void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) 
   w.line("// " + user + " (" + std::to_string(g.hooks.size()) + " hook(s))");
   w.open("bool " + rule_function(rule.name.text) +
          "(rift::GMap& g, std::span<const rift::Dart> hooks, const " + rule.name.text +
-         "_args& args, const Params& params) {");
+         "_args& args, const Params& params, std::vector<rift::Dart>* touched) {");
   w.line("(void)args;");
   w.line("(void)params;");
   w.line("if (g.dimension() != " + std::to_string(g.dimension) + ") throw std::invalid_argument(" +
@@ -142,7 +146,9 @@ void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) 
     w.close();
   }
 
-  // ---- rewrite
+  // ---- rewrite: every dart of the match may change (relinked or deleted)
+  if (nl_of(g) > 0)
+    w.line("if (touched) touched->insert(touched->end(), s.left.begin(), s.left.end());");
   for (int v : rewrite.deleted) {
     w.line("for (std::size_t r = 0; r < rows; ++r) g.delete_dart(" + L(v) + "[r]);");
   }
@@ -157,11 +163,16 @@ void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) 
       w.line("std::copy_n(" + L(l) + ", rows, " + rv + ");");
     } else {
       w.line("for (std::size_t r = 0; r < rows; ++r) " + rv + "[r] = g.create_dart();");
+      w.line("if (touched) touched->insert(touched->end(), " + rv + ", " + rv + " + rows);");
     }
   }
   for (const lower::ArcCheck& u : rewrite.unlinks) {
-    w.line("for (std::size_t r = 0; r < rows; ++r) g.unlink(" + R(u.a) + "[r], " +
-           std::to_string(u.dim) + ");");
+    const std::string x = R(u.a) + "[r]";
+    const std::string d = std::to_string(u.dim);
+    w.open("for (std::size_t r = 0; r < rows; ++r) {");
+    w.line("if (touched) touched->push_back(g.alpha(" + x + ", " + d + "));");
+    w.line("g.unlink(" + x + ", " + d + ");");
+    w.close();
   }
   auto link = [&](const std::string& x, const std::string& y, int dim) {
     const std::string d = std::to_string(dim);
@@ -179,7 +190,7 @@ void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) 
     link(R(l.node) + "[r]", R(l.node) + "[s.nbr[r * label + " + std::to_string(l.pos) + "]]",
          l.dim);
   }
-  if (nr > 0) w.line("update_embedding_slots(g, s.right.data(), s.right.size(), s);");
+  if (nr > 0) w.line("update_embedding_slots(g, s.right.data(), s.right.size(), s, touched);");
   for (std::size_t k = 0; k < rule.right.assigns.size(); ++k) {
     const ast::Assign& a = rule.right.assigns[k];
     const int v = g.right.find(a.node.text);

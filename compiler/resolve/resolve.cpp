@@ -19,7 +19,8 @@ struct Scope {
   std::set<std::string> hidden_nodes;
   std::string hidden_reason;
   bool constant = false;  // embedding defaults and pack parameters: no names at all
-  const std::vector<ast::Let>* match_lets = nullptr;  // lets an update may not read
+  const std::vector<ast::Let>* match_lets = nullptr;  // lets that exist but may not be read
+  std::string match_lets_reason;
 };
 
 class Resolver {
@@ -64,6 +65,8 @@ class Resolver {
     }
     return false;
   }
+
+  diag::Diagnostics& diags() { return diags_; }
 
   void lets(const std::vector<ast::Let>& lets, Scope scope) {
     scope.lets = &lets;
@@ -125,10 +128,7 @@ class Resolver {
       for (const ast::Let& let : *scope.match_lets) {
         if (let.name.text != e.name) continue;
         ++let.uses;  // reported here; no second report as unused
-        diags_
-            .error(e.loc, "'" + e.name +
-                              "' is a value of the match; an update runs after the rewrite and "
-                              "cannot read it")
+        diags_.error(e.loc, "'" + e.name + "' " + scope.match_lets_reason)
             .notes.push_back({let.name.loc, "defined here"});
         return;
       }
@@ -168,6 +168,8 @@ void resolve_rule(const ast::Rule& rule, Resolver& r) {
   Scope after;  // updates read the rewritten map; lets describe the match, so they are not visible
   after.params = &rule.params;
   after.match_lets = &rule.lets;
+  after.match_lets_reason =
+      "is a value of the match; an update runs after the rewrite and cannot read it";
   after.nodes = right;
   for (const auto& n : rule.left.nodes) {
     if (!right.count(n.name.text)) after.hidden_nodes.insert(n.name.text);
@@ -179,6 +181,20 @@ void resolve_rule(const ast::Rule& rule, Resolver& r) {
       r.node(u.node.text, u.node.loc, after);
     }
     r.expr(*u.value, after);
+  }
+}
+
+/// Defaults of scene-given parameters are constants; a name is declared once.
+void component_params(const std::vector<ast::Param>& params, Resolver& r, const Scope& constant) {
+  for (std::size_t k = 0; k < params.size(); ++k) {
+    if (params[k].default_value) r.expr(*params[k].default_value, constant);
+    for (std::size_t j = 0; j < k; ++j) {
+      if (params[j].name.text != params[k].name.text) continue;
+      r.diags()
+          .error(params[k].name.loc, "parameter '" + params[k].name.text + "' is declared twice")
+          .notes.push_back({params[j].name.loc, "first declared here"});
+      break;
+    }
   }
 }
 
@@ -195,7 +211,7 @@ void resolve_names(const ast::Program& program, const Symbols& symbols, diag::Di
     for (const auto& p : file.params)
       r.expr(*p.value, constant);
     for (const auto& init : file.inits) {
-      r.embedding(init.embedding.text, init.embedding.loc);
+      const_cast<ast::Init&>(init).target = r.embedding(init.embedding.text, init.embedding.loc);
       Scope s;
       s.nodes.insert(init.dart.text);
       r.expr(*init.value, s);
@@ -203,8 +219,24 @@ void resolve_names(const ast::Program& program, const Symbols& symbols, diag::Di
     for (const auto& rule : file.rules)
       resolve_rule(rule, r);
     for (const auto& inter : file.interactions) {
+      component_params(inter.params, r, constant);
       Scope s;
+      s.params = &inter.params;
       s.nodes = node_names(inter.pattern);
+      Scope at_init = s;  // once per match on the initial mesh: no force-loop values
+      at_init.match_lets = &inter.lets;
+      at_init.match_lets_reason =
+          "is a value of the force loop; an init runs once on the initial mesh and cannot read it";
+      for (const auto& init : inter.inits) {
+        const_cast<ast::Init&>(init).target = r.embedding(init.embedding.text, init.embedding.loc);
+        if (!s.nodes.count(init.dart.text)) {
+          diags
+              .error(init.dart.loc, "an interaction's init writes at one of its pattern nodes; '" +
+                                        init.dart.text + "' is not one")
+              .notes.push_back({inter.pattern.loc, "the pattern"});
+        }
+        r.expr(*init.value, at_init);
+      }
       r.lets(inter.lets, s);
       s.lets = &inter.lets;
       s.visible_lets = inter.lets.size();
@@ -218,7 +250,9 @@ void resolve_names(const ast::Program& program, const Symbols& symbols, diag::Di
       if (inter.energy) r.expr(*inter.energy, s);
     }
     for (const auto& crit : file.criteria) {
+      component_params(crit.params, r, constant);
       Scope s;
+      s.params = &crit.params;
       s.nodes.insert(crit.dart.text);
       r.lets(crit.lets, s);
       s.lets = &crit.lets;

@@ -4,6 +4,8 @@
 // trigger their rule, and the registry lists everything by name.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstring>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -36,11 +38,6 @@ Dart find_dart(const GMap& g, int i, bool free) {
     if (found == rift::kNoDart && g.is_free(d, i) == free) found = d;
   });
   return found;
-}
-
-bool apply(bool (*rule)(GMap&, std::span<const Dart>, const g2::Params&), GMap& g,
-           std::initializer_list<Dart> hooks) {
-  return rule(g, std::span<const Dart>(hooks.begin(), hooks.size()), {});
 }
 
 void expect_valid(const GMap& g) {
@@ -77,7 +74,15 @@ TEST(GeneratedRules, SewingWithTwoHooksUndoesTheSeparation) {
   const Dart d = find_dart(g, 2, false);
   const Dart b = g.alpha(d, 2);
   ASSERT_TRUE(g2::apply_separate_faces(g, std::span<const Dart>(&d, 1)));
-  ASSERT_TRUE(apply(g2::rules()[1].apply, g, {d, b}));  // sew_edges through the registry
+  // sew_edges through the pack's factory, as a simulator would.
+  const auto sew = g2::Pack().make_rule("sew_edges");
+  ASSERT_NE(sew, nullptr);
+  EXPECT_EQ(sew->hook_count(), 2);
+  std::vector<Dart> touched;
+  const Dart hooks[] = {d, b};
+  ASSERT_TRUE(sew->apply(g, hooks, {}, touched));
+  EXPECT_NE(std::find(touched.begin(), touched.end(), d), touched.end());
+  EXPECT_NE(std::find(touched.begin(), touched.end(), b), touched.end());
   expect_valid(g);
   const auto after = rift::compute_statistics(g);
   EXPECT_EQ(after.edges, original.edges);
@@ -187,54 +192,145 @@ TEST(GeneratedRules, ANonInjectiveMatchIsRejected) {
   expect_valid(g);
 }
 
-TEST(GeneratedInteractions, StretchSpringsGiveOppositeForces) {
-  GMap g = grid("grid:quad:1x1");
-  const auto rest = g2::interaction_stretch(g);
-  EXPECT_EQ(rest.matched, 4u);
-  EXPECT_NEAR(rest.energy, 0.0, 1e-12);
-  auto position = g.embedding<Vec3>("position");
-  const Dart moved = find_dart(g, 2, true);
-  position[moved] += Vec3(0.5, 0.25, 0.0);
-  const auto stretched = g2::interaction_stretch(g);
-  EXPECT_GT(stretched.energy, 0.0);
-  auto force = g.embedding<Vec3>("f_stretch");
-  Vec3 total = Vec3::Zero();
-  rift::Real largest = 0;
-  g.for_each_dart([&](Dart d) {
-    total += force[d];
-    largest = std::max(largest, force[d].norm());
-  });
-  EXPECT_GT(largest, 0.1);
-  EXPECT_LT(total.norm(), 1e-9);  // action and reaction
+TEST(GeneratedRules, TouchedDartsCoverTheRewrite) {
+  GMap g = grid("grid:quad:2x1");
+  const Dart d = find_dart(g, 2, false);
+  const Dart b = g.alpha(d, 2);
+  std::vector<Dart> touched;
+  ASSERT_TRUE(g2::apply_separate_faces(g, std::span<const Dart>(&d, 1), {}, {}, &touched));
+  // Both sides of the edge were relinked.
+  for (Dart x : {d, g.alpha(d, 0), b, g.alpha(b, 0)})
+    EXPECT_NE(std::find(touched.begin(), touched.end(), x), touched.end()) << x;
+  // A rule that does not apply touches nothing.
+  touched.clear();
+  EXPECT_FALSE(g2::apply_separate_faces(g, std::span<const Dart>(&d, 1), {}, {}, &touched));
+  EXPECT_TRUE(touched.empty());
 }
 
-TEST(GeneratedCriteria, TriggerTheirRuleWhereTheMeasurePasses) {
+TEST(GeneratedInteractions, StretchKernelGivesOppositeForces) {
+  GMap g = grid("grid:quad:1x1");
+  g2::StretchInteraction stretch(g2::StretchParams{10.0, 0.0});
+  stretch.initialise(g);
+  EXPECT_EQ(stretch.active_matches(), 4u);
+  EXPECT_EQ(g2::StretchKernel::kRadius, 1);
+  auto position = g.embedding<Vec3>("position");
+  auto velocity = g.embedding<Vec3>("velocity");
+  std::vector<Vec3> f(position.values().size(), Vec3::Zero());
+  const rift::ForceInput rest{position.values().data(), velocity.values().data()};
+  stretch.add_forces(rest, f.data(), true);
+  EXPECT_NEAR(stretch.potential_energy(rest), 0.0, 1e-12);
+  for (const Vec3& v : f)
+    EXPECT_LT(v.norm(), 1e-12);
+  // The kernel reads the stage arrays it is given, not the map's positions.
+  std::vector<Vec3> x = position.values();
+  const Dart moved = find_dart(g, 2, true);
+  x[position.slot(moved)] += Vec3(0.5, 0.25, 0.0);
+  const rift::ForceInput stage{x.data(), velocity.values().data()};
+  std::fill(f.begin(), f.end(), Vec3::Zero());
+  stretch.add_forces(stage, f.data(), true);
+  EXPECT_GT(stretch.potential_energy(stage), 0.0);
+  Vec3 total = Vec3::Zero();
+  for (const Vec3& v : f)
+    total += v;
+  EXPECT_GT(f[position.slot(moved)].norm(), 0.1);
+  EXPECT_LT(total.norm(), 1e-9);  // action and reaction
+  // Stored per dart (Table 1): the two ends of a half-edge hold opposite forces.
+  auto stored = g.embedding<Vec3>("f_stretch");
+  EXPECT_GT(stored[moved].norm(), 0.1);
+  EXPECT_LT((stored[moved] + stored[g.alpha(moved, 0)]).norm(), 1e-12);
+}
+
+TEST(GeneratedInteractions, TaggedElementsAreMatchedFromTheirFirstDart) {
+  GMap g = grid("grid:tri:2x2");
+  g2::AreaInteraction area;
+  area.initialise(g);
+  EXPECT_TRUE(g2::AreaKernel::kTagged);
+  EXPECT_EQ(area.active_matches(), 8u);
+  // Whatever dart of a triangle the match starts from, it reaches the same
+  // corners in the same order: the one tagged at initialisation.
+  const g2::AreaKernel& kernel = area.kernel();
+  std::size_t checked = 0;
+  g.for_each_cell(g2::AreaKernel::kSupport, [&](Dart face) {
+    g2::AreaKernel::Match first{};
+    ASSERT_TRUE(kernel.match(g, face, first));
+    g.for_each_in_orbit(face, g2::AreaKernel::kSupport, [&](Dart x) {
+      g2::AreaKernel::Match m{};
+      ASSERT_TRUE(kernel.match(g, x, m));
+      EXPECT_EQ(std::memcmp(&m, &first, sizeof m), 0);
+      ++checked;
+    });
+  });
+  EXPECT_EQ(checked, g.size());
+  // So the rest shape computed at initialisation gives no force at rest.
+  auto position = g.embedding<Vec3>("position");
+  auto velocity = g.embedding<Vec3>("velocity");
+  std::vector<Vec3> f(position.values().size(), Vec3::Zero());
+  area.add_forces({position.values().data(), velocity.values().data()}, f.data(), false);
+  for (const Vec3& v : f)
+    EXPECT_LT(v.norm(), 1e-12);
+}
+
+TEST(GeneratedCriteria, ProposeCandidatesAndApplyTheirRule) {
   GMap g = grid("grid:quad:2x1");
   // Vertical edges have length 1, horizontal ones 0.5: three edges pass 0.5,
   // and only the interior one can be separated.
-  const auto result = g2::criterion_long_edge(g);
-  EXPECT_EQ(result.triggered, 3u);
-  EXPECT_EQ(result.applied, 1u);
-  EXPECT_DOUBLE_EQ(result.max_measure, 1.0);
+  g2::LongEdgeCriterion criterion;
+  criterion.initialise(g);
+  std::vector<rift::TearCandidate> candidates;
+  criterion.collect(g, candidates);
+  ASSERT_EQ(candidates.size(), 3u);
+  std::size_t applied = 0;
+  std::vector<Dart> touched;
+  for (const auto& c : candidates) {
+    EXPECT_DOUBLE_EQ(c.measure, 1.0);
+    if (criterion.apply(g, c, touched)) ++applied;
+  }
+  EXPECT_EQ(applied, 1u);
+  EXPECT_FALSE(touched.empty());
   expect_valid(g);
   EXPECT_EQ(rift::compute_statistics(g).boundary, 8u);
   GMap calm = grid("grid:quad:2x1");
-  g2::Params params;
-  params.threshold = 2.0;
-  EXPECT_EQ(g2::criterion_long_edge(calm, params).triggered, 0u);
+  g2::LongEdgeCriterion strict(g2::LongEdgeParams{2.0});
+  strict.initialise(calm);
+  candidates.clear();
+  strict.collect(calm, candidates);
+  EXPECT_TRUE(candidates.empty());
 }
 
-TEST(GeneratedRegistry, ListsEverythingByName) {
-  ASSERT_EQ(g2::rules().size(), 7u);
-  EXPECT_STREQ(g2::rules()[0].name, "separate_faces");
-  EXPECT_EQ(g2::rules()[0].hooks, 1u);
-  EXPECT_STREQ(g2::rules()[1].name, "sew_edges");
-  EXPECT_EQ(g2::rules()[1].hooks, 2u);
-  ASSERT_EQ(g2::interactions().size(), 1u);
-  EXPECT_STREQ(g2::interactions()[0].name, "stretch");
-  ASSERT_EQ(g2::criteria().size(), 1u);
-  EXPECT_STREQ(g2::criteria()[0].name, "long_edge");
+TEST(GeneratedPack, ListsEverythingByName) {
+  const g2::Pack pack;
+  EXPECT_EQ(pack.name(), "gen2d");
+  EXPECT_EQ(pack.dimension(), 2);
+  const auto rules = pack.rule_names();
+  ASSERT_EQ(rules.size(), 7u);
+  EXPECT_EQ(rules[0], "separate_faces");
+  EXPECT_EQ(pack.make_rule("separate_faces")->hook_count(), 1);
+  EXPECT_EQ(pack.make_rule("sew_edges")->hook_count(), 2);
+  EXPECT_EQ(pack.make_rule("nope"), nullptr);
+  ASSERT_EQ(pack.catalog().interactions.size(), 3u);
+  EXPECT_EQ(pack.catalog().interactions[0].name, "stretch");
+  ASSERT_EQ(pack.catalog().criteria.size(), 1u);
+  EXPECT_EQ(pack.catalog().criteria[0].name, "long_edge");
   EXPECT_EQ(g2::kDimension, 2);
+  // The tag of the tagged interaction is one of the pack's embeddings.
+  bool tag = false;
+  for (const auto& e : pack.embeddings())
+    tag = tag || (e.name == "area_first_dart" && e.type == rift::ValueType::kBool);
+  EXPECT_TRUE(tag);
+}
+
+TEST(GeneratedPack, RuleArgumentsAreCheckedAtRunTime) {
+  GMap g = grid("grid:quad:2x1");
+  const auto lift = g2::Pack().make_rule("lift_if_right");
+  ASSERT_EQ(lift->params().size(), 1u);
+  EXPECT_EQ(lift->params()[0].name, "dx");
+  std::vector<Dart> touched;
+  const Dart right = find_dart(g, 2, true);
+  EXPECT_THROW(lift->apply(g, std::span<const Dart>(&right, 1), {}, touched),
+               std::invalid_argument);
+  const rift::Value wrong[] = {rift::Value(Vec3(Vec3::Zero()))};
+  EXPECT_THROW(lift->apply(g, std::span<const Dart>(&right, 1), wrong, touched),
+               std::invalid_argument);
 }
 
 TEST(GeneratedRules3D, SeparatesAndRemovesVolumes) {

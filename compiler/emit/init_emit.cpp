@@ -1,0 +1,122 @@
+// Pack-level initialisers (one sweep over the cells of their embedding's
+// orbit) and the parameters a scene gives to interactions and criteria: their
+// C++ struct, their reader from a rift::ComponentUse, their catalog entries.
+#include "emit/emit_context.hpp"
+#include "emit/names.hpp"
+
+namespace rift::emit {
+
+namespace {
+
+ExprContext dart_context() {
+  ExprContext ctx;
+  ctx.dart = [](const std::string& node) { return dart_name(node); };
+  return ctx;
+}
+
+std::string zero_of(ast::Type t) {
+  switch (t) {
+    case ast::Type::Vec3:
+      return "rift::Vec3::Zero()";
+    case ast::Type::Mat3:
+      return "rift::Mat3::Zero()";
+    case ast::Type::Bool:
+      return "false";
+    case ast::Type::Int:
+      return "std::int64_t{0}";
+    default:
+      return "rift::Real(0)";
+  }
+}
+
+}  // namespace
+
+std::string constant_expr(const ast::Expr& e, ast::Type to) {
+  ExprContext ctx;
+  ctx.dart = [](const std::string&) { return std::string("rift::kNoDart"); };
+  return convert(emit_expr(e, ctx), e.type, to);
+}
+
+void declare_component_params(Writer& w, const std::string& name,
+                              const std::vector<ast::Param>& params) {
+  w.line("/// Parameters given by the scene.");
+  w.open("struct " + name + " {");
+  for (const ast::Param& p : params) {
+    const std::string value =
+        p.default_value ? constant_expr(*p.default_value, p.type) : zero_of(p.type);
+    w.line(cpp_type(p.type) + " " + member_name(p.name.text) + " = " + cpp_type(p.type) + "(" +
+           value + ");" + (p.description.empty() ? "" : "  ///< " + p.description));
+  }
+  w.close("};");
+}
+
+void emit_component_params_reader(Writer& w, const std::string& name, const std::string& user,
+                                  const std::vector<ast::Param>& params) {
+  w.open("[[maybe_unused]] " + name + " " + name +
+         "_from([[maybe_unused]] const rift::ComponentUse& use) {");
+  w.line(name + " p;");
+  for (const ast::Param& p : params) {
+    const std::string field = "p." + member_name(p.name.text);
+    const std::string what = user + ": parameter '" + p.name.text + "'";
+    w.open("if (auto it = use.params.find(" + quote(p.name.text) + "); it != use.params.end()) {");
+    w.line(field + " = value_as<" + cpp_type(p.type) + ">(it->second.value, " + quote(what) + ");");
+    if (!p.default_value) {
+      w.middle("} else {");
+      w.line("throw std::invalid_argument(" + quote(what + " is required") + ");");
+    }
+    w.close();
+    if (p.bound == ast::Param::Bound::Positive) {
+      w.line("if (!(" + field + " > 0)) throw std::invalid_argument(" +
+             quote(what + " must be > 0") + ");");
+    } else if (p.bound == ast::Param::Bound::NonNegative) {
+      w.line("if (!(" + field + " >= 0)) throw std::invalid_argument(" +
+             quote(what + " must be >= 0") + ");");
+    }
+  }
+  w.line("return p;");
+  w.close();
+  w.line();
+}
+
+void write_param_specs(Writer& w, const std::vector<ast::Param>& params, bool from_scene) {
+  for (const ast::Param& p : params) {
+    std::string def = "std::nullopt";
+    if (from_scene && p.default_value) {
+      def = "rift::Value(" + storage_type(p.type) + "(" + constant_expr(*p.default_value, p.type) +
+            "))";
+    }
+    const bool positive = p.bound == ast::Param::Bound::Positive;
+    const bool non_negative = p.bound == ast::Param::Bound::NonNegative;
+    w.line(std::string("{") + quote(p.name.text) + ", " + value_type_enum(p.type) + ", " + def +
+           ", " + quote(p.description) + ", " + (positive ? "true" : "false") + ", " +
+           (non_negative ? "true" : "false") + "},");
+  }
+}
+
+void emit_initialisers(Writer& w, const PackModel& model) {
+  w.open("void run_initialisers(rift::GMap& g, const Params& params) {");
+  w.line("(void)g;");
+  w.line("(void)params;");
+  const ExprContext ctx = dart_context();
+  for (const ast::File& file : model.program->files) {
+    for (const ast::Init& init : file.inits) {
+      const ast::Embedding* target = model.symbols->embedding(init.embedding.text);
+      std::set<std::string> used;
+      embeddings_read(*init.value, used);
+      used.insert(init.embedding.text);
+      w.open("{  // init " + init.embedding.text);
+      fetch_embeddings(w, used, *model.symbols, "init " + init.embedding.text);
+      w.open("g.for_each_cell(" + orbit_code(target->orbit.dims) + ", [&](rift::Dart " +
+             dart_name(init.dart.text) + ") {");
+      write_sourced(w, init.value->loc,
+                    embedding_var(init.embedding.text) + "[" + dart_name(init.dart.text) + "] = " +
+                        convert(emit_expr(*init.value, ctx), init.value->type, target->type) + ";");
+      w.close("});");
+      w.close();
+    }
+  }
+  w.close();
+  w.line();
+}
+
+}  // namespace rift::emit

@@ -1,0 +1,107 @@
+#include "lower/kernel_plan.hpp"
+
+#include <algorithm>
+
+#include "check/kernels.hpp"
+
+namespace rift::lower {
+
+namespace {
+
+std::vector<int> sorted(std::vector<int> dims) {
+  std::sort(dims.begin(), dims.end());
+  return dims;
+}
+
+class SlotCollector {
+ public:
+  SlotCollector(const check::RuleGraph& g, int dimension, KernelPlan& plan)
+      : g_(g), dimension_(dimension), plan_(plan) {}
+
+  int add(int node, const std::vector<int>& hops, const std::vector<int>& orbit,
+          const std::string& via) {
+    const std::vector<int> o = sorted(orbit);
+    const int found = plan_.find(node, hops, o);
+    if (found >= 0) return found;
+    SlotUse use;
+    use.node = node;
+    use.hops = hops;
+    use.orbit = o;
+    use.vertex = o == vertex_orbit(dimension_);
+    use.via = use.vertex ? std::string(check::kPositionEmbedding) : via;
+    plan_.slots.push_back(use);
+    plan_.radius = std::max(
+        plan_.radius, plan_.depth[static_cast<std::size_t>(node)] + static_cast<int>(hops.size()));
+    return static_cast<int>(plan_.slots.size()) - 1;
+  }
+
+  void reads(const ast::Expr& e) {
+    if (e.kind == ast::Expr::Kind::Read && e.embedding) {
+      add(g_.left.find(e.node), e.hops, e.embedding->orbit.dims, e.name);
+    }
+    for (const auto& a : e.args)
+      reads(*a);
+  }
+
+ private:
+  const check::RuleGraph& g_;
+  int dimension_;
+  KernelPlan& plan_;
+};
+
+}  // namespace
+
+std::vector<int> vertex_orbit(int dimension) {
+  std::vector<int> out;
+  for (int d = 1; d <= dimension; ++d)
+    out.push_back(d);
+  return out;
+}
+
+int KernelPlan::find(int node, const std::vector<int>& hops, const std::vector<int>& orbit) const {
+  for (std::size_t k = 0; k < slots.size(); ++k) {
+    if (slots[k].node == node && slots[k].hops == hops && slots[k].orbit == orbit) {
+      return static_cast<int>(k);
+    }
+  }
+  return -1;
+}
+
+KernelPlan plan_kernel(const check::CheckedInteraction& ci, const resolve::Symbols& /*symbols*/) {
+  const ast::Interaction& inter = *ci.interaction;
+  const check::RuleGraph& g = ci.graph;
+  KernelPlan plan;
+  for (const auto& n : g.left.nodes)
+    plan.nodes.push_back(n.name());
+  plan.match = plan_match(g);
+  plan.depth.assign(g.left.nodes.size(), 0);
+  plan.node_order = plan.match.hooks;
+  for (const Follow& f : plan.match.follows) {
+    plan.depth[static_cast<std::size_t>(f.to)] = plan.depth[static_cast<std::size_t>(f.from)] + 1;
+    plan.node_order.push_back(f.to);
+  }
+  for (const ArcCheck& a : plan.match.arc_checks) {
+    plan.radius = std::max(plan.radius, plan.depth[static_cast<std::size_t>(a.a)] + 1);
+  }
+  for (int d : plan.depth)
+    plan.radius = std::max(plan.radius, d);
+
+  SlotCollector collect(g, g.dimension, plan);
+  for (const auto& l : inter.lets)
+    collect.reads(*l.value);
+  for (const auto& w : inter.whens)
+    collect.reads(*w);
+  for (const ast::Assign& f : inter.forces) {
+    collect.reads(*f.value);
+    const int node = g.left.find(f.node.text);
+    ForceStore store;
+    store.embedding = f.embedding.text;
+    store.vertex_slot = collect.add(node, {}, vertex_orbit(g.dimension), "");
+    store.store_slot = collect.add(node, {}, f.target->orbit.dims, f.embedding.text);
+    plan.forces.push_back(store);
+  }
+  if (inter.energy) collect.reads(*inter.energy);
+  return plan;
+}
+
+}  // namespace rift::lower
