@@ -1,5 +1,6 @@
 #include "check/kernels.hpp"
 
+#include <set>
 #include <string>
 
 namespace rift::check {
@@ -36,7 +37,7 @@ class KernelChecker {
     }
     if (e.kind == ast::Expr::Kind::Read && e.embedding &&
         (e.name == kPositionEmbedding || e.name == kVelocityEmbedding) &&
-        !is_vertex_orbit(e.embedding->orbit.dims, dimension_)) {
+        !is_vertex_orbit(e.embedding->orbit.dims, dimension_) && reported_.insert(e.name).second) {
       diags_
           .error(e.loc, "the integrator holds '" + e.name + "' per vertex: declare it on " +
                             vertex_orbit_text(dimension_) + " to read it in an interaction")
@@ -46,9 +47,12 @@ class KernelChecker {
       expr(*a);
   }
 
+  void next_interaction() { reported_.clear(); }
+
  private:
   int dimension_;
   diag::Diagnostics& diags_;
+  std::set<std::string> reported_;  // once per embedding and interaction
 };
 
 }  // namespace
@@ -58,6 +62,7 @@ void check_kernels(const ast::Program& program, const resolve::Symbols& /*symbol
   KernelChecker kc(program.dimension, diags);
   for (const ast::File& file : program.files) {
     for (const ast::Interaction& inter : file.interactions) {
+      kc.next_interaction();
       for (const auto& l : inter.lets)
         kc.expr(*l.value);
       for (const auto& w : inter.whens)

@@ -190,6 +190,7 @@ void component_params(const std::vector<ast::Param>& params, Resolver& r, const 
     if (params[k].default_value) r.expr(*params[k].default_value, constant);
     for (std::size_t j = 0; j < k; ++j) {
       if (params[j].name.text != params[k].name.text) continue;
+      ++params[k].uses;  // reported here; no second report as unused
       r.diags()
           .error(params[k].name.loc, "parameter '" + params[k].name.text + "' is declared twice")
           .notes.push_back({params[j].name.loc, "first declared here"});
