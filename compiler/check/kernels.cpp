@@ -1,5 +1,6 @@
 #include "check/kernels.hpp"
 
+#include <map>
 #include <set>
 #include <string>
 
@@ -71,6 +72,58 @@ void check_kernels(const ast::Program& program, const resolve::Symbols& /*symbol
         kc.expr(*f.value);
       if (inter.energy) kc.expr(*inter.energy);
     }
+  }
+}
+
+}  // namespace rift::check
+
+namespace rift::check {
+
+std::string camel_case(std::string_view name) {
+  std::string out;
+  bool upper = true;
+  for (char c : name) {
+    if (c == '_') {
+      if (upper) out += '_';  // keep runs of underscores: names stay distinct
+      upper = true;
+      continue;
+    }
+    out += upper && c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c;
+    upper = false;
+  }
+  return out;
+}
+
+void check_generated_names(const ast::Program& program, const resolve::Symbols& symbols,
+                           diag::Diagnostics& diags) {
+  std::map<std::string, const ast::Ident*> classes;
+  auto add = [&](const ast::Ident& name, const char* suffix) {
+    const std::string cpp = camel_case(name.text) + suffix;
+    auto [it, fresh] = classes.emplace(cpp, &name);
+    if (fresh) return;
+    diags
+        .error(name.loc, "'" + name.text + "' and '" + it->second->text +
+                             "' give the same C++ name '" + cpp + "'; rename one")
+        .notes.push_back({it->second->loc, "'" + it->second->text + "' declared here"});
+  };
+  for (const ast::File& file : program.files) {
+    for (const ast::Rule& r : file.rules)
+      add(r.name, "Rule");
+    for (const ast::Interaction& i : file.interactions) {
+      add(i.name, "Params");  // and ...Kernel, ...Interaction
+      const std::string tag = i.name.text + "_first_dart";
+      if (i.tagged) {
+        if (const ast::Embedding* e = symbols.embedding(tag)) {
+          diags
+              .error(i.tagged_loc, "a tagged interaction '" + i.name.text +
+                                       "' declares the embedding '" + tag +
+                                       "', which the pack already has")
+              .notes.push_back({e->name.loc, "declared here"});
+        }
+      }
+    }
+    for (const ast::Criterion& c : file.criteria)
+      add(c.name, "Params");  // and ...Criterion
   }
 }
 

@@ -4,6 +4,9 @@
 // by vertex slot, so they must live on the vertex orbit.
 #pragma once
 
+#include <string>
+#include <string_view>
+
 #include "ast/program.hpp"
 #include "diag/diagnostics.hpp"
 #include "resolve/symbols.hpp"
@@ -16,5 +19,14 @@ inline constexpr const char* kVelocityEmbedding = "velocity";
 
 void check_kernels(const ast::Program& program, const resolve::Symbols& symbols,
                    diag::Diagnostics& diags);
+
+/// The C++ names the generator derives must be distinct: class names are the
+/// rule-language names in CamelCase, and a `tagged` interaction declares an
+/// embedding `NAME_first_dart`.
+void check_generated_names(const ast::Program& program, const resolve::Symbols& symbols,
+                           diag::Diagnostics& diags);
+
+/// "global_edge" -> "GlobalEdge" (runs of underscores are kept after the first).
+std::string camel_case(std::string_view name);
 
 }  // namespace rift::check

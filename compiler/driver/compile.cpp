@@ -44,6 +44,7 @@ void run_checks(const ast::Program& program, diag::Diagnostics& diags, Checked& 
   out.interactions = check::check_interactions(program, diags);
   check::check_applies(program, out.rules, diags);
   check::check_kernels(program, out.symbols, diags);
+  check::check_generated_names(program, out.symbols, diags);
   check::check_embeddings(out.rules, out.symbols, diags);
   check::check_unused(program, diags);
 }

@@ -2,6 +2,8 @@
 
 #include <set>
 
+#include "check/kernels.hpp"
+
 namespace rift::emit {
 
 std::string cpp_type(ast::Type t) {
@@ -27,18 +29,7 @@ std::string storage_type(ast::Type t) {
 }
 
 std::string camel_name(std::string_view name) {
-  std::string out;
-  bool upper = true;
-  for (char c : name) {
-    if (c == '_') {
-      if (upper) out += '_';  // keep runs of underscores: names stay distinct
-      upper = true;
-      continue;
-    }
-    out += upper && c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c;
-    upper = false;
-  }
-  return out;
+  return check::camel_case(name);
 }
 
 std::string kernel_class(std::string_view interaction) {
