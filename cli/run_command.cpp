@@ -68,6 +68,19 @@ int run_run(const RunOptions& options, const PackRegistry& packs) {
   config.render.width = scene.output.width;
   config.render.height = scene.output.height;
   config.frame.element_id = "element_index";
+  // Look at the object upright: "up" is against gravity, the eye in front,
+  // a little to the right and above.
+  const Vec3 up = scene.gravity.norm() > 0 ? Vec3(-scene.gravity.normalized()) : Vec3(0, 0, 1);
+  int up_axis = 0;
+  up.cwiseAbs().maxCoeff(&up_axis);
+  config.view.up = up;
+  const int front_axis = up_axis == 1 ? 2 : 1;  // z in front when y is up, else y
+  const int side_axis = 3 - up_axis - front_axis;
+  Vec3 direction = Vec3::Zero();
+  direction[side_axis] = 0.45;
+  direction[up_axis] = 0.35 * (up[up_axis] > 0 ? 1 : -1);
+  direction[front_axis] = up_axis == 1 ? 1.0 : -1.0;
+  config.view.direction = direction;
   if (wants("csv")) {
     config.csv_columns = {"step",  "time",     "kinetic_energy", "potential_energy",
                           "tears", "vertices", "elements",       "step_ms"};
