@@ -16,12 +16,18 @@ class Lexer {
 
   Parser::symbol_type next();
 
+  /// The `///` doc comment whose last line is just above `line` (its lines
+  /// joined by spaces), or an empty string.
+  std::string doc_before(int line) const;
+
  private:
   /// Moves the current position over [token_, cursor_).
   void advance();
   diag::Location token_location() const;
   Parser::symbol_type scan_block_comment();
   Parser::symbol_type lex_error(const std::string& message);
+  /// Records one `///` line (token_ .. cursor_).
+  void doc_line();
 
   const char* cursor_;
   const char* limit_;
@@ -31,6 +37,8 @@ class Lexer {
   diag::Position pos_;        // position of cursor_
   diag::Position token_pos_;  // position of token_
   diag::Diagnostics& diags_;
+  std::string doc_;   // the latest run of consecutive `///` lines
+  int doc_line_ = 0;  // line of its last line
 };
 
 }  // namespace rift::grammar

@@ -40,6 +40,19 @@ Parser::symbol_type Lexer::lex_error(const std::string& message) {
   return Parser::make_YYerror(token_location());
 }
 
+void Lexer::doc_line() {
+  std::string text(token_ + 3, cursor_);
+  const std::size_t first = text.find_first_not_of(" \t");
+  const std::size_t last = text.find_last_not_of(" \t\r");
+  text = first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
+  if (doc_line_ != token_pos_.line - 1) doc_.clear();
+  if (!doc_.empty() && !text.empty()) doc_ += ' ';
+  doc_ += text;
+  doc_line_ = token_pos_.line;
+}
+
+std::string Lexer::doc_before(int line) const { return doc_line_ == line - 1 ? doc_ : std::string(); }
+
 Parser::symbol_type Lexer::scan_block_comment() {
   // token_ .. cursor_ holds "/*"; the comment ends at the first "*/".
   for (const char* p = cursor_; p + 1 < limit_; ++p) {
@@ -83,6 +96,7 @@ Parser::symbol_type Lexer::next() {
       $ { RIFT_TOKEN(); return Parser::make_END(token_location()); }
 
       [ \t\r\n]+ { RIFT_TOKEN(); continue; }
+      "///" [^\n\x00]* { RIFT_TOKEN(); doc_line(); continue; }
       "//" [^\n\x00]* { RIFT_TOKEN(); continue; }
       "/*" { RIFT_TOKEN(); return scan_block_comment(); }
 

@@ -135,6 +135,7 @@ ExprPtr call(std::string name, std::vector<ExprPtr> args, const rift::diag::Loca
 %type <rift::ast::Param::Bound> opt_bound
 %type <std::string> opt_description
 %type <bool> opt_tagged
+%type <std::string> interaction_kw criterion_kw pack_kw
 %type <rift::ast::ExprPtr> opt_default
 %type <std::optional<rift::ast::Ident>> opt_merge
 
@@ -156,8 +157,9 @@ file
   ;
 
 header
-  : PACK ident DIMENSION INT SEMI {
+  : pack_kw ident DIMENSION INT SEMI {
       ctx.file.has_header = true;
+      ctx.file.description = $1;
       ctx.file.pack = $2;
       const std::int64_t dim = $4;
       ctx.file.dimension = static_cast<int>(dim > 1000 ? 1000 : dim);
@@ -351,9 +353,15 @@ arc_chain
 
 /* ---- interactions ------------------------------------------------------------ */
 
+/* A `///` comment right above a declaration describes it (rift list shows it). */
+pack_kw : PACK { $$ = ctx.lexer.doc_before(@1.begin.line); } ;
+interaction_kw : INTERACTION { $$ = ctx.lexer.doc_before(@1.begin.line); } ;
+criterion_kw : CRITERION { $$ = ctx.lexer.doc_before(@1.begin.line); } ;
+
 interaction
-  : INTERACTION ident ON orbit opt_tagged component_params {
+  : interaction_kw ident ON orbit opt_tagged component_params {
       ctx.interaction = rift::ast::Interaction{};
+      ctx.interaction.description = $1;
       ctx.interaction.name = $2;
       ctx.interaction.support = $4;
       ctx.interaction.tagged = $5;
@@ -457,8 +465,9 @@ opt_description
 /* ---- criteria ----------------------------------------------------------------- */
 
 criterion
-  : CRITERION ident ON orbit LPAREN ident RPAREN component_params {
+  : criterion_kw ident ON orbit LPAREN ident RPAREN component_params {
       ctx.criterion = rift::ast::Criterion{};
+      ctx.criterion.description = $1;
       ctx.criterion.name = $2;
       ctx.criterion.orbit = $4;
       ctx.criterion.dart = $6;

@@ -87,6 +87,7 @@ struct Init {
 
 struct Interaction {
   Ident name;
+  std::string description;  // the `///` comment above it
   Label support;
   bool tagged = false;  // `tagged`: matches start from the dart tagged at initialisation (§3.2)
   Location tagged_loc;
@@ -106,6 +107,7 @@ struct ApplyArg {
 
 struct Criterion {
   Ident name;
+  std::string description;  // the `///` comment above it
   Label orbit;
   Ident dart;
   std::vector<Param> params;  // given by the scene
@@ -144,6 +146,7 @@ struct File {
   int file_id = -1;
   bool has_header = false;
   Ident pack;
+  std::string description;  // the `///` comment above the header
   int dimension = 2;
   Location dimension_loc;
   std::vector<Include> includes;

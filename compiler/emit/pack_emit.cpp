@@ -160,10 +160,13 @@ std::string default_of(const ast::Embedding& e) {
 void write_pack_class(Writer& w, const PackModel& m) {
   std::size_t criteria = 0;
   for_each_criterion(m, [&](const ast::Criterion&) { ++criteria; });
+  const std::string& doc = m.program->files.front().description;
   const std::string description =
-      "rule pack '" + m.pack + "' (" + std::to_string(m.program->dimension) +
-      "D): " + std::to_string(m.interactions->size()) + " interaction(s), " +
-      std::to_string(criteria) + " criterion(s), " + std::to_string(m.rules->size()) + " rule(s)";
+      !doc.empty() ? doc
+                   : "rule pack '" + m.pack + "' (" + std::to_string(m.program->dimension) +
+                         "D): " + std::to_string(m.interactions->size()) + " interaction(s), " +
+                         std::to_string(criteria) + " criterion(s), " +
+                         std::to_string(m.rules->size()) + " rule(s)";
   w.open("Pack::Pack(const Params& params) : params_(params), description_(" + quote(description) +
          ") {");
   for_each_embedding(m, [&](const ast::Embedding& e) {
@@ -184,16 +187,17 @@ void write_pack_class(Writer& w, const PackModel& m) {
       if (forces.find(f.embedding.text) == std::string::npos)
         forces += (forces.empty() ? "" : ", ") + f.embedding.text;
     }
+    const std::string about = "support " + orbit_text(in.support.dims) +
+                              (forces.empty() ? "" : "; forces stored in " + forces);
     w.open("catalog_.interactions.push_back({" + quote(in.name.text) + ", " +
-           quote("support " + orbit_text(in.support.dims) +
-                 (forces.empty() ? "" : "; forces stored in " + forces)) +
-           ", {");
+           quote(in.description.empty() ? about : in.description + " (" + about + ")") + ", {");
     write_param_specs(w, in.params, true);
     w.close("}, kDimension});");
   }
   for_each_criterion(m, [&](const ast::Criterion& c) {
+    const std::string about = "on " + orbit_text(c.orbit.dims) + "; applies rule " + c.rule.text;
     w.open("catalog_.criteria.push_back({" + quote(c.name.text) + ", " +
-           quote("on " + orbit_text(c.orbit.dims) + "; applies rule " + c.rule.text) + ", {");
+           quote(c.description.empty() ? about : c.description + " (" + about + ")") + ", {");
     write_param_specs(w, c.params, true);
     w.close("}, kDimension});");
   });

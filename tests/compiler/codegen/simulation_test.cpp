@@ -190,6 +190,9 @@ TEST(GeneratedRegistration, AddsThePackWithItsCatalog) {
   const rift::ComponentSpec* stretch = rift::Catalog::find(catalog.interactions, "stretch");
   ASSERT_NE(stretch, nullptr);
   EXPECT_EQ(stretch->dimension, 2);
+  // The `///` comment above the interaction describes it.
+  EXPECT_EQ(stretch->description.rfind("A damped spring on every half-edge.", 0), 0u)
+      << stretch->description;
   ASSERT_EQ(stretch->params.size(), 2u);
   const rift::ParamSpec* k = stretch->find_param("stiffness");
   ASSERT_NE(k, nullptr);

@@ -29,6 +29,33 @@ Parsed parse(const std::string& text) {
   return p;
 }
 
+TEST(Parser, SceneParametersTagsAndDocComments) {
+  const Parsed p = parse(
+      "/// A pack.\npack t dimension 2;\n"
+      "// not a doc\n/// A spring,\n///   damped.\n"
+      "interaction s on <0> tagged (k : real > 0 \"N/m\", c : real >= 0 = 0.1, n : int) {\n"
+      "  pattern { a : <>; b : <>; a -0- b; }\n  init k(a) = k;\n}\n"
+      "/// not above anything\n\ncriterion e on <0,2>(a) (limit : real = 1.0) {}\n");
+  ASSERT_EQ(p.errors, 0u) << p.diagnostics;
+  EXPECT_EQ(p.file.description, "A pack.");
+  ASSERT_EQ(p.file.interactions.size(), 1u);
+  const auto& i = p.file.interactions[0];
+  EXPECT_EQ(i.description, "A spring, damped.");
+  EXPECT_TRUE(i.tagged);
+  ASSERT_EQ(i.params.size(), 3u);
+  EXPECT_EQ(i.params[0].bound, rift::ast::Param::Bound::Positive);
+  EXPECT_EQ(i.params[0].description, "N/m");
+  EXPECT_EQ(i.params[0].default_value, nullptr);
+  EXPECT_EQ(i.params[1].bound, rift::ast::Param::Bound::NonNegative);
+  ASSERT_NE(i.params[1].default_value, nullptr);
+  EXPECT_EQ(i.params[2].type, rift::ast::Type::Int);
+  ASSERT_EQ(i.inits.size(), 1u);
+  EXPECT_EQ(i.inits[0].dart.text, "a");
+  ASSERT_EQ(p.file.criteria.size(), 1u);
+  EXPECT_EQ(p.file.criteria[0].description, "");
+  ASSERT_EQ(p.file.criteria[0].params.size(), 1u);
+}
+
 TEST(Parser, PackHeaderAndEmbedding) {
   const Parsed p =
       parse("pack cloth dimension 3;\nembedding v : vec3 on <1,2,3> = vec3(0,0,0) merge mean;");
