@@ -3,7 +3,10 @@
 # Runs riftc on the rule files at build time and compiles the generated C++
 # into the static library <target>, which links rift_runtime and exposes the
 # generated header <pack>.hpp (namespace rift::packs::<pack>), <pack> being
-# the name the first file declares with `pack NAME dimension N;`.
+# the name the first file declares with `pack NAME dimension N;`. The header
+# declares `void rift_register_pack_<pack>(rift::PackRegistry&)` in the global
+# namespace; the target's properties RIFT_PACK_NAME (<pack>) and
+# RIFT_PACK_HEADER (the header's path) let a simulator generate the call.
 #
 # riftc writes a dependency file, so editing a .rules file (or a file it
 # includes) regenerates and rebuilds only this pack.
@@ -53,6 +56,8 @@ function(rift_add_rule_pack target)
   target_include_directories(${target} PUBLIC "${out_dir}")
   target_link_libraries(${target} PUBLIC rift_runtime)
   target_compile_features(${target} PUBLIC cxx_std_20)
+  set_target_properties(${target} PROPERTIES RIFT_PACK_NAME "${pack}"
+                                             RIFT_PACK_HEADER "${out_dir}/${pack}.hpp")
   if(COMMAND rift_set_warnings)
     rift_set_warnings(${target})
   endif()
