@@ -189,7 +189,11 @@ void Simulation::on_topology_changed(std::span<const Dart> touched) {
   const Mark m = map_.reserve_mark();
   region_.clear();
   for (Dart d : touched) {
-    if (!map_.is_alive(d) || map_.is_marked(d, m)) continue;
+    if (!map_.is_alive(d)) {
+      region_.push_back(d);  // deleted: its matches must be dropped
+      continue;
+    }
+    if (map_.is_marked(d, m)) continue;
     map_.for_each_in_orbit(d, vertex, [&](Dart x) {
       map_.mark(x, m);
       region_.push_back(x);

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs this build of rift into a temporary prefix, builds the standalone
+# project examples/custom-criterion against it with find_package(rift), and
+# runs its scene: the new criterion must tear the cloth.
+set -euo pipefail
+build_dir=$1
+source_dir=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+cmake --install "$build_dir" --prefix "$work/prefix" > "$work/install.log"
+cmake -S "$source_dir/examples/custom-criterion" -B "$work/build" -G Ninja \
+      -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log" \
+  || { cat "$work/configure.log"; exit 1; }
+cmake --build "$work/build" > "$work/build.log" || { cat "$work/build.log"; exit 1; }
+
+"$work/build/my_rift" list | grep -q "edge_strain" || { echo "edge_strain is not listed"; exit 1; }
+"$work/build/my_rift" run "$source_dir/examples/custom-criterion/cloth.toml" --steps 1500 \
+    --out "$work/out" --quiet
+# The CSV's tears column (the fifth) must end above zero.
+tears=$(tail -n 1 "$work/out/cloth.csv" | cut -d, -f5)
+echo "tears after 1500 steps: $tears"
+awk -v t="$tears" 'BEGIN { exit !(t > 0) }'
+test -s "$work/out/cloth.pvd"
