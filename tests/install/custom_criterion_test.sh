@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs this build of rift into a temporary prefix, builds the standalone
-# project examples/custom-criterion against it with find_package(rift), and
-# runs its scene: the new criterion must tear the cloth.
+# projects examples/custom-criterion and examples/first-rule against it with
+# find_package(rift), and runs them: the new criterion must tear the cloth,
+# the tutorial's rule must turn 16 quads into 64 triangles.
 set -euo pipefail
 build_dir=$1
 source_dir=$2
@@ -22,3 +23,12 @@ tears=$(tail -n 1 "$work/out/cloth.csv" | cut -d, -f5)
 echo "tears after 1500 steps: $tears"
 awk -v t="$tears" 'BEGIN { exit !(t > 0) }'
 test -s "$work/out/cloth.pvd"
+
+# The tutorial's project: one rule applied by a small program (docs/tutorial.md).
+cmake -S "$source_dir/examples/first-rule" -B "$work/first" -G Ninja \
+      -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure2.log" \
+  || { cat "$work/configure2.log"; exit 1; }
+cmake --build "$work/first" > "$work/build2.log" || { cat "$work/build2.log"; exit 1; }
+"$work/first/fan_faces" "$work/fan" | tee "$work/fan.log"
+grep -q "faces=64" "$work/fan.log"
+test -s "$work/fan/frame_000000.png"
