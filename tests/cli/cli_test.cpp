@@ -2,15 +2,19 @@
 // files a run leaves behind.
 #include <gtest/gtest.h>
 #include <png.h>
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 #include <pugixml.hpp>
 
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 namespace {
 
@@ -251,6 +255,45 @@ TEST_F(Cli, ExplosionStopsAndKeepsFramesReadable) {
     ++frames;
   }
   EXPECT_GE(frames, 1);
+}
+
+TEST_F(Cli, CtrlCFinishesTheFrameAndClosesTheFiles) {
+  std::string text = kCloth;
+  text.replace(text.find("steps = 60"), 10, "steps = 100000000");
+  text.replace(text.find("every = 20"), 10, "every = 50");
+  const std::string scene = write("long.toml", text);
+  const std::string out = (dir_ / "o").string();
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    execl(RIFT_TEST_SIM, RIFT_TEST_SIM, "run", scene.c_str(), "--out", out.c_str(), "--quiet",
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // Wait until a few frames exist, then interrupt.
+  for (int k = 0; k < 200 && !fs::exists(dir_ / "o" / "frame_000003.vtu"); ++k) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  pugi::xml_document pvd;
+  ASSERT_TRUE(pvd.load_file((dir_ / "o" / "long.pvd").c_str()));
+  int frames = 0;
+  for (pugi::xml_node ds : pvd.child("VTKFile").child("Collection").children("DataSet")) {
+    pugi::xml_document vtu;
+    EXPECT_TRUE(vtu.load_file((dir_ / "o" / ds.attribute("file").value()).c_str()));
+    ++frames;
+  }
+  EXPECT_GE(frames, 4);
+  // The CSV has a row for every frame, the last one included.
+  std::ifstream csv(dir_ / "o" / "long.csv");
+  int rows = -1;
+  for (std::string line; std::getline(csv, line);)
+    ++rows;
+  EXPECT_EQ(rows, frames);
 }
 
 TEST_F(Cli, RiftWithoutPacksExplains) {
