@@ -8,22 +8,31 @@
 #include <vector>
 
 #include "criteria2d.hpp"
+#include "mass_spring2d.hpp"
 #include "rift/mesh/load_map.hpp"
 #include "rift/mesh/map_statistics.hpp"
+#include "rift/sim/mass_model.hpp"
 
 namespace {
 
 namespace cloth = rift::packs::criteria2d;
 using rift::Vec3;
 
-/// The interactions' inits run when they are initialised, as in a simulation.
+/// The interactions' inits run when they are initialised, as in a simulation;
+/// masses come from the runtime's mass model (density 1), as a scene sets them.
 void initialise(rift::GMap& g, std::vector<std::unique_ptr<rift::ForceModel>>& models) {
   const cloth::Pack pack;
   pack.initialise(g);
+  const rift::packs::mass_spring2d::Pack springs;
+  springs.initialise(g);
+  auto corner = g.embedding<rift::Real>("corner_mass");
+  rift::assign_corner_masses_by_density(g, 1.0, corner, g.embedding<rift::Vec3>("position"));
+  auto vertex = g.embedding<rift::Real>("vertex_mass");
+  rift::update_all_vertex_masses(g, corner, vertex);
   for (const char* name : {"stretch", "shear"}) {
     rift::ComponentUse use;
     use.name = name;
-    models.push_back(pack.make_interaction(use));
+    models.push_back(springs.make_interaction(use));
     models.back()->initialise(g);
   }
 }
