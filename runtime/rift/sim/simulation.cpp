@@ -66,6 +66,9 @@ void Simulation::initialise() {
     model->initialise(map_);
   for (auto& criterion : criteria_)
     criterion->initialise(map_);
+  if (Embedding<Vec3> f = map_.embedding<Vec3>(names::kVertexForce)) {
+    if (f.orbit() == Orbit::cell(0, map_.dimension())) vertex_force_ = f;
+  }
   refresh_inverse_masses();
   initialised_ = true;
 }
@@ -93,6 +96,11 @@ void Simulation::accelerations(const std::vector<Vec3>& x, const std::vector<Vec
   const ForceInput in{x.data(), v.data()};
   for (auto& model : models_)
     model->add_forces(in, forces_.data(), store);
+  if (store && vertex_force_) {
+    // Same orbit as position, so the same slots.
+    std::vector<Vec3>& out = vertex_force_.values();
+    std::copy(forces_.begin(), forces_.begin() + std::min(n, out.size()), out.begin());
+  }
   a.resize(n);
   const Vec3 g = settings_.gravity;
   for (std::size_t s = 0; s < n; ++s) {
