@@ -125,6 +125,13 @@ Parser::symbol_type Lexer::next() {
       "apply"       { return Parser::make_APPLY(RIFT_TOKEN()); }
       "at"          { return Parser::make_AT(RIFT_TOKEN()); }
       "with"        { return Parser::make_WITH(RIFT_TOKEN()); }
+      "script"      { return Parser::make_SCRIPT(RIFT_TOKEN()); }
+      "set"         { return Parser::make_SET(RIFT_TOKEN()); }
+      "for"         { return Parser::make_FOR(RIFT_TOKEN()); }
+      "each"        { return Parser::make_EACH(RIFT_TOKEN()); }
+      "in"          { return Parser::make_IN(RIFT_TOKEN()); }
+      "of"          { return Parser::make_OF(RIFT_TOKEN()); }
+      "where"       { return Parser::make_WHERE(RIFT_TOKEN()); }
       "if"          { return Parser::make_IF(RIFT_TOKEN()); }
       "then"        { return Parser::make_THEN(RIFT_TOKEN()); }
       "else"        { return Parser::make_ELSE(RIFT_TOKEN()); }

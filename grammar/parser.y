@@ -114,7 +114,8 @@ ExprPtr call(std::string name, std::vector<ExprPtr> args, const rift::diag::Loca
        MEASURE "measure" APPLY "apply" AT "at" WITH "with" IF "if" THEN "then" ELSE "else"
        TRUE "true" FALSE "false" OVER "over" SUM "sum" MEAN "mean" COUNT "count" MIN "min"
        MAX "max" T_REAL "real" T_INT "int" T_BOOL "bool" T_VEC3 "vec3" T_MAT3 "mat3"
-       AND "and" OR "or" NOT "not" TAGGED "tagged"
+       AND "and" OR "or" NOT "not" TAGGED "tagged" SCRIPT "script" SET "set" FOR "for"
+       EACH "each" IN "in" OF "of" WHERE "where"
 
 %token SEMI ";" COLON ":" COMMA "," DOT "." AT_SIGN "@" ASSIGN "=" LBRACE "{" RBRACE "}"
        LPAREN "(" RPAREN ")" LBRACKET "[" RBRACKET "]" LT "<" GT ">" LE "<=" GE ">="
@@ -135,7 +136,12 @@ ExprPtr call(std::string name, std::vector<ExprPtr> args, const rift::diag::Loca
 %type <rift::ast::Param::Bound> opt_bound
 %type <std::string> opt_description
 %type <bool> opt_tagged
-%type <std::string> interaction_kw criterion_kw pack_kw
+%type <std::string> interaction_kw criterion_kw pack_kw script_kw
+%type <std::vector<rift::ast::ApplyArg>> apply_with apply_args
+%type <rift::ast::ApplyArg> apply_arg
+%type <rift::ast::Each> opt_each
+%type <rift::ast::ExprPtr> opt_where
+%type <std::vector<rift::ast::ExprPtr>> dart_list
 %type <rift::ast::ExprPtr> opt_default
 %type <std::optional<rift::ast::Ident>> opt_merge
 
@@ -194,6 +200,7 @@ item
   | rule
   | interaction
   | criterion
+  | script
   | error SEMI
   | error RBRACE
   ;
@@ -496,6 +503,7 @@ criterion_stmt
       ctx.criterion.has_apply = true;
       ctx.criterion.rule = $2;
       ctx.criterion.apply_hooks = $4;
+      ctx.criterion.apply_args = $5;
       ctx.criterion.apply_loc = @$;
     }
   | body_stmt
@@ -503,17 +511,99 @@ criterion_stmt
   ;
 
 apply_with
-  : %empty
-  | WITH apply_args
+  : %empty { }
+  | WITH apply_args { $$ = $2; }
   ;
 
 apply_args
-  : apply_arg
-  | apply_args COMMA apply_arg
+  : apply_arg { $$.push_back($1); }
+  | apply_args COMMA apply_arg { $$ = $1; $$.push_back($3); }
   ;
 
 apply_arg
-  : ident ASSIGN expr { ctx.criterion.apply_args.push_back(rift::ast::ApplyArg{$1, $3}); }
+  : ident ASSIGN expr { $$ = rift::ast::ApplyArg{$1, $3}; }
+  ;
+
+/* ---- scripts ------------------------------------------------------------------ */
+
+script_kw : SCRIPT { $$ = ctx.lexer.doc_before(@1.begin.line); } ;
+
+script
+  : script_kw ident params AT ident_list {
+      ctx.script = rift::ast::Script{};
+      ctx.script.description = $1;
+      ctx.script.name = $2;
+      ctx.script.params = $3;
+      ctx.script.hooks = $5;
+      ctx.lets = nullptr;
+      ctx.whens = nullptr;
+    }
+    LBRACE script_stmts RBRACE {
+      ctx.file.scripts.push_back(std::move(ctx.script));
+    }
+  ;
+
+script_stmts
+  : %empty
+  | script_stmts script_stmt
+  ;
+
+script_stmt
+  : LET ident ASSIGN expr SEMI {
+      rift::ast::ScriptStmt s;
+      s.kind = rift::ast::ScriptStmt::Kind::Let;
+      s.loc = @$;
+      s.let = ctx.script.lets.size();
+      ctx.script.lets.push_back(rift::ast::Let{$2, $4});
+      ctx.script.stmts.push_back(std::move(s));
+    }
+  | SET ident DOT ident ASSIGN expr opt_each opt_where SEMI {
+      rift::ast::ScriptStmt s;
+      s.kind = rift::ast::ScriptStmt::Kind::Set;
+      s.loc = @$;
+      s.set = rift::ast::Assign{$2, $4, $6, @$};
+      s.each = $7;
+      s.where = $8;
+      ctx.script.stmts.push_back(std::move(s));
+    }
+  | APPLY ident AT dart_list opt_each opt_where apply_with SEMI {
+      rift::ast::ScriptStmt s;
+      s.kind = rift::ast::ScriptStmt::Kind::Apply;
+      s.loc = @$;
+      s.rule = $2;
+      s.hooks = $4;
+      s.each = $5;
+      s.where = $6;
+      s.args = $7;
+      ctx.script.stmts.push_back(std::move(s));
+    }
+  | WHEN expr SEMI {
+      ctx.diags.error(@1, "'when' is not allowed in a script; give an 'apply' or a 'set' a 'where' condition");
+    }
+  | error SEMI
+  ;
+
+dart_list
+  : node_path { $$.push_back($1); }
+  | dart_list COMMA node_path { $$ = $1; $$.push_back($3); }
+  ;
+
+/* for each <sub>(x) in <outer>(d) */
+opt_each
+  : %empty { }
+  | FOR EACH orbit LPAREN ident RPAREN IN orbit LPAREN node_path RPAREN {
+      $$.present = true;
+      $$.sub = $3;
+      $$.var = $5;
+      $$.outer = $8;
+      $$.dart = $10;
+      $$.loc = @$;
+    }
+  ;
+
+opt_where
+  : %empty { }
+  | WHERE expr { $$ = $2; }
   ;
 
 /* ---- expressions ----------------------------------------------------------------- */
@@ -567,6 +657,22 @@ primary
       $$->node = path->node;
       $$->node_loc = path->node_loc;
       $$->hops = path->hops;
+    }
+  | collect_op OF expr FOR EACH orbit LPAREN ident RPAREN IN orbit LPAREN node_path RPAREN {
+      ExprPtr path = $13;
+      rift::ast::Ident var = $8;
+      $$ = make_expr(Expr::Kind::Fold, @$);
+      $$->op = $1;
+      $$->op_loc = @1;
+      $$->args.push_back($3);
+      $$->orbit = $6;
+      $$->var = var.text;
+      $$->var_loc = var.loc;
+      $$->outer = $11;
+      $$->node = path->node;
+      $$->node_loc = path->node_loc;
+      $$->hops = path->hops;
+      $$ = deepen(std::move($$), ctx);
     }
   | primary LBRACKET expr RBRACKET {
       $$ = make_expr(Expr::Kind::Index, @$);

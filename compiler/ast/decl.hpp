@@ -120,6 +120,42 @@ struct Criterion {
   Location apply_loc;
 };
 
+/// `for each <sub>(var) in <outer>(dart)`: one dart per sub-orbit <sub>
+/// inside the orbit <outer> of a dart (the sub-orbits of a script, §4.3).
+struct Each {
+  bool present = false;
+  Label sub;
+  Ident var;
+  Label outer;
+  ExprPtr dart;  // a Read without an embedding: node@hops
+  Location loc;
+};
+
+/// A statement of a script, run in order on the current map.
+struct ScriptStmt {
+  enum class Kind { Let, Set, Apply };
+  Kind kind = Kind::Let;
+  Location loc;
+  std::size_t let = 0;         // Let: index in Script::lets
+  Assign set;                  // Set: var.embedding = value
+  Ident rule;                  // Apply: the rule (or earlier script) applied
+  std::vector<ExprPtr> hooks;  // Apply: dart paths, one per hook
+  std::vector<ApplyArg> args;  // Apply: its parameters, by name
+  Each each;                   // Set, Apply: repeated once per sub-orbit
+  ExprPtr where;               // Set, Apply: skipped where false
+};
+
+/// Jerboa's scripts: rules (and earlier scripts) applied in sequence, possibly
+/// at every sub-orbit of an orbit, with embeddings set in between.
+struct Script {
+  Ident name;
+  std::string description;  // the `///` comment above it
+  std::vector<Param> params;
+  std::vector<Ident> hooks;  // the darts a caller gives
+  std::vector<Let> lets;
+  std::vector<ScriptStmt> stmts;
+};
+
 struct Embedding {
   Ident name;
   Type type = Type::Error;
@@ -154,6 +190,7 @@ struct File {
   std::vector<PackParam> params;
   std::vector<Init> inits;
   std::vector<Rule> rules;
+  std::vector<Script> scripts;
   std::vector<Interaction> interactions;
   std::vector<Criterion> criteria;
 };

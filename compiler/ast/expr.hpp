@@ -43,6 +43,7 @@ struct Expr {
     Read,     // node@hops... . name
     Collect,  // op name over <orbit>(node)   op: sum mean min max count
     Index,    // args[0][args[1]] or args[0][args[1], args[2]]
+    Fold,  // op of args[0] for each <orbit>(var) in <outer>(node@hops)   op: sum mean min max count
   };
 
   Kind kind = Kind::IntLit;
@@ -57,6 +58,9 @@ struct Expr {
   Location node_loc;
   std::vector<int> hops;
   Label orbit;
+  Label outer;      // Fold: the orbit whose sub-orbits are visited
+  std::string var;  // Fold: the dart variable bound to each sub-orbit
+  Location var_loc;
   std::vector<ExprPtr> args;
   int depth = 1;  // of the tree below; the parser caps it so passes may recurse safely
 

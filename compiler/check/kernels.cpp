@@ -31,6 +31,11 @@ class KernelChecker {
   KernelChecker(int dimension, diag::Diagnostics& diags) : dimension_(dimension), diags_(diags) {}
 
   void expr(const ast::Expr& e) {
+    if (e.kind == ast::Expr::Kind::Fold) {
+      diags_.error(e.loc, "'" + e.op + " of ... for each' traverses the map, which an " +
+                              "interaction's force loop does not do; compute the value in an init");
+      return;
+    }
     if (e.kind == ast::Expr::Kind::Collect) {
       diags_.error(e.loc, "'" + e.op + " ... over' traverses the map, which an interaction's " +
                               "force loop does not do; compute the value in an init and read it");
@@ -109,6 +114,8 @@ void check_generated_names(const ast::Program& program, const resolve::Symbols& 
   for (const ast::File& file : program.files) {
     for (const ast::Rule& r : file.rules)
       add(r.name, "Rule");
+    for (const ast::Script& sc : file.scripts)
+      add(sc.name, "Rule");
     for (const ast::Interaction& i : file.interactions) {
       add(i.name, "Params");  // and ...Kernel, ...Interaction
       const std::string tag = i.name.text + "_first_dart";

@@ -370,23 +370,52 @@ std::vector<CheckedInteraction> check_interactions(const ast::Program& program,
   return out;
 }
 
+namespace {
+
+/// The number of hooks of the rule or script `name`, or -1 when unknown.
+int hook_count(const ast::Program& program, const std::vector<CheckedRule>& rules,
+               const std::string& name, diag::Location* declared) {
+  for (const CheckedRule& cr : rules) {
+    if (cr.rule->name.text != name) continue;
+    *declared = cr.rule->name.loc;
+    return cr.ok ? static_cast<int>(cr.graph.hooks.size()) : -1;
+  }
+  for (const ast::File& file : program.files) {
+    for (const ast::Script& s : file.scripts) {
+      if (s.name.text != name) continue;
+      *declared = s.name.loc;
+      return static_cast<int>(s.hooks.size());
+    }
+  }
+  return -1;
+}
+
+void check_hook_count(const ast::Program& program, const std::vector<CheckedRule>& rules,
+                      const ast::Ident& callee, std::size_t given, const diag::Location& loc,
+                      diag::Diagnostics& diags) {
+  diag::Location declared;
+  const int want = hook_count(program, rules, callee.text, &declared);
+  if (want < 0 || static_cast<std::size_t>(want) == given) return;
+  diags
+      .error(loc, "rule '" + callee.text + "' has " + std::to_string(want) + " hook(s) but " +
+                      std::to_string(given) + " dart(s) are given")
+      .notes.push_back({declared, "rule declared here"});
+}
+
+}  // namespace
+
 void check_applies(const ast::Program& program, const std::vector<CheckedRule>& rules,
                    diag::Diagnostics& diags) {
   for (const ast::File& file : program.files) {
     for (const ast::Criterion& crit : file.criteria) {
       check_orbit_type(crit.orbit, program.dimension, "a criterion", diags);
       if (!crit.has_apply) continue;
-      for (const CheckedRule& cr : rules) {
-        if (cr.rule->name.text != crit.rule.text || !cr.ok) continue;
-        if (cr.graph.hooks.size() != crit.apply_hooks.size()) {
-          diags
-              .error(crit.apply_loc, "rule '" + crit.rule.text + "' has " +
-                                         std::to_string(cr.graph.hooks.size()) + " hook(s) but " +
-                                         std::to_string(crit.apply_hooks.size()) +
-                                         " dart(s) are given")
-              .notes.push_back({cr.rule->name.loc, "rule declared here"});
-        }
-        break;
+      check_hook_count(program, rules, crit.rule, crit.apply_hooks.size(), crit.apply_loc, diags);
+    }
+    for (const ast::Script& script : file.scripts) {
+      for (const ast::ScriptStmt& st : script.stmts) {
+        if (st.kind != ast::ScriptStmt::Kind::Apply) continue;
+        check_hook_count(program, rules, st.rule, st.hooks.size(), st.loc, diags);
       }
     }
   }

@@ -74,8 +74,35 @@ class TypeChecker {
         return index(e);
       case Expr::Kind::Call:
         return call(e);
+      case Expr::Kind::Fold:
+        return fold(e);
     }
     return Type::Error;
+  }
+
+  /// `op of BODY for each <sub>(x) in <outer>(d)`.
+  Type fold(const Expr& e) {
+    check_hops(e);
+    check_orbit_type(e.orbit, dimension_, "a 'for each'", diags_);
+    check_orbit_type(e.outer, dimension_, "a 'for each'", diags_);
+    const Type t = expr(*e.args[0]);
+    if (t == Type::Error) return t;
+    if (e.op == "count") {
+      if (t == Type::Bool) return Type::Int;
+      diags_.error(e.args[0]->loc,
+                   "'count of' counts where a condition holds: it needs a bool, not " + str(t));
+      return Type::Error;
+    }
+    if (e.op == "min" || e.op == "max") {
+      if (numeric(t)) return t;
+      diags_.error(e.args[0]->loc, "'" + e.op + " of' needs real or int values, not " + str(t));
+      return Type::Error;
+    }
+    if (t == Type::Bool) {
+      diags_.error(e.args[0]->loc, "'" + e.op + " of' cannot combine bool values");
+      return Type::Error;
+    }
+    return e.op == "mean" && t == Type::Int ? Type::Real : t;
   }
 
   void check_hops(const Expr& e) {
@@ -258,6 +285,56 @@ void check_component_params(const std::vector<ast::Param>& params, TypeChecker& 
   }
 }
 
+/// The arguments of an `apply`: every one names a parameter of the callee,
+/// with its type, and every parameter is given.
+void check_call_args(const ast::Ident& callee, const std::vector<ast::Param>* params,
+                     const std::vector<ast::ApplyArg>& args, const diag::Location& loc,
+                     TypeChecker& tc, diag::Diagnostics& diags) {
+  for (const auto& arg : args) {
+    const ast::Param* param = nullptr;
+    if (params) {
+      for (const auto& p : *params) {
+        if (p.name.text == arg.name.text) param = &p;
+      }
+      if (!param) {
+        diags.error(arg.name.loc,
+                    "rule '" + callee.text + "' has no parameter '" + arg.name.text + "'");
+      }
+    }
+    tc.expect(*arg.value, param ? param->type : Type::Error, "parameter '" + arg.name.text + "'");
+  }
+  if (!params) return;
+  for (const auto& p : *params) {
+    bool given = false;
+    for (const auto& arg : args)
+      given = given || arg.name.text == p.name.text;
+    if (!given) {
+      diags.error(loc, "parameter '" + p.name.text + "' of rule '" + callee.text + "' is not given")
+          .notes.push_back({p.name.loc, "declared here"});
+    }
+  }
+}
+
+void check_script(const ast::Script& script, const resolve::Symbols& symbols, int dimension,
+                  TypeChecker& tc, diag::Diagnostics& diags) {
+  for (const ast::ScriptStmt& st : script.stmts) {
+    if (st.kind == ast::ScriptStmt::Kind::Let) {
+      tc.expr(*script.lets[st.let].value);
+      continue;
+    }
+    if (st.each.present) {
+      check_orbit_type(st.each.sub, dimension, "a 'for each'", diags);
+      check_orbit_type(st.each.outer, dimension, "a 'for each'", diags);
+    }
+    if (st.where) tc.expect(*st.where, Type::Bool, "a 'where' condition");
+    if (st.kind == ast::ScriptStmt::Kind::Set) {
+      check_assign(st.set, tc, "the value of");
+      continue;
+    }
+    check_call_args(st.rule, symbols.callee_params(st.rule.text), st.args, st.loc, tc, diags);
+  }
+}
+
 }  // namespace
 
 bool check_orbit_type(const ast::Label& label, int dimension, const char* what,
@@ -312,6 +389,8 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols,
       for (const auto& u : rule.updates)
         check_assign(u, tc, "the update of");
     }
+    for (const auto& script : file.scripts)
+      check_script(script, symbols, program.dimension, tc, diags);
     for (const auto& inter : file.interactions) {
       check_component_params(inter.params, tc, diags);
       for (const auto& init : inter.inits) {
@@ -358,33 +437,9 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols,
       if (!crit.has_apply) {
         diags.error(crit.name.loc, "criterion '" + crit.name.text + "' applies no rule");
       }
-      const ast::Rule* rule = crit.has_apply ? symbols.rule(crit.rule.text) : nullptr;
-      for (const auto& arg : crit.apply_args) {
-        const ast::Param* param = nullptr;
-        if (rule) {
-          for (const auto& p : rule->params) {
-            if (p.name.text == arg.name.text) param = &p;
-          }
-          if (!param) {
-            diags.error(arg.name.loc,
-                        "rule '" + rule->name.text + "' has no parameter '" + arg.name.text + "'");
-          }
-        }
-        tc.expect(*arg.value, param ? param->type : Type::Error,
-                  "parameter '" + arg.name.text + "'");
-      }
-      if (rule) {
-        for (const auto& p : rule->params) {
-          bool given = false;
-          for (const auto& arg : crit.apply_args)
-            given = given || arg.name.text == p.name.text;
-          if (!given) {
-            diags
-                .error(crit.apply_loc, "parameter '" + p.name.text + "' of rule '" +
-                                           rule->name.text + "' is not given")
-                .notes.push_back({p.name.loc, "declared here"});
-          }
-        }
+      if (crit.has_apply) {
+        check_call_args(crit.rule, symbols.callee_params(crit.rule.text), crit.apply_args,
+                        crit.apply_loc, tc, diags);
       }
     }
   }

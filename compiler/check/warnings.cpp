@@ -41,6 +41,16 @@ void check_unused(const ast::Program& program, diag::Diagnostics& diags) {
       unused_lets(i.lets, diags);
       unused_params(i.params, "interaction", i.name.text, diags);
     }
+    for (const ast::Script& sc : file.scripts) {
+      unused_lets(sc.lets, diags);
+      for (const ast::Param& p : sc.params) {
+        if (p.uses == 0) {
+          diags.warning(
+              "unused-parameter", p.name.loc,
+              "parameter '" + p.name.text + "' of script '" + sc.name.text + "' is never used");
+        }
+      }
+    }
     for (const ast::Criterion& c : file.criteria) {
       unused_lets(c.lets, diags);
       unused_params(c.params, "criterion", c.name.text, diags);

@@ -30,8 +30,8 @@ std::set<std::string> criterion_embeddings(const ast::Criterion& crit) {
 
 /// The rule parameter an apply argument fills, and whether the candidate
 /// carries it (vec3 arguments named `normal` and `point`).
-const ast::Param* rule_param(const ast::Rule& rule, const std::string& name) {
-  for (const ast::Param& p : rule.params) {
+const ast::Param* rule_param(const std::vector<ast::Param>& params, const std::string& name) {
+  for (const ast::Param& p : params) {
     if (p.name.text == name) return &p;
   }
   return nullptr;
@@ -77,7 +77,7 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
   const std::string cls = criterion_class(crit.name.text);
   const std::string user = "criterion '" + crit.name.text + "'";
   const ExprContext ctx = criterion_context();
-  const ast::Rule* rule = model.symbols->rule(crit.rule.text);
+  const std::vector<ast::Param>& rule_params = *model.symbols->callee_params(crit.rule.text);
   const ast::Expr& lhs = *crit.measure->args[0];
   const ast::Expr& rhs = *crit.measure->args[1];
   const std::string d = dart_name(crit.dart.text);
@@ -126,14 +126,14 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
   w.line("if (!g.is_alive(candidate.at)) return false;");
   w.line("[[maybe_unused]] const rift::Dart " + d + " = candidate.at;");
   if (evaluates) write_lets(w, crit.lets, ctx);
-  w.line(rule->name.text + "_args args;");
+  w.line(crit.rule.text + "_args args;");
   for (const ast::ApplyArg& a : crit.apply_args) {
     const std::string field = "args." + member_name(a.name.text);
     if (carried(a)) {
       w.line(field + " = candidate." + a.name.text + ";");
       continue;
     }
-    const ast::Param* p = rule_param(*rule, a.name.text);
+    const ast::Param* p = rule_param(rule_params, a.name.text);
     write_sourced(w, a.value->loc,
                   field + " = " + convert(emit_expr(*a.value, ctx), a.value->type, p->type) + ";");
   }
@@ -141,41 +141,38 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
   for (std::size_t k = 0; k < crit.apply_hooks.size(); ++k)
     hooks += (k ? ", " : "") + dart_name(crit.apply_hooks[k].text);
   w.line("const rift::Dart hooks[] = {" + hooks + "};");
-  w.line("return " + rule_function(rule->name.text) + "(g, hooks, args, pack_, &touched);");
+  w.line("return " + rule_function(crit.rule.text) + "(g, hooks, args, pack_, &touched);");
   w.close();
   w.line();
 }
 
-void declare_rule_class(Writer& w, const check::CheckedRule& cr) {
-  const ast::Rule& rule = *cr.rule;
-  const std::string cls = rule_class(rule.name.text);
-  w.line("/// Rule '" + rule.name.text + "' as a rift::Rule: arguments by position.");
+void declare_rule_class(Writer& w, const std::string& name, std::size_t hook_count) {
+  const std::string cls = rule_class(name);
+  w.line("/// Rule '" + name + "' as a rift::Rule: arguments by position.");
   w.open("class " + cls + " final : public rift::Rule {");
   w.middle(" public:");
   w.line("explicit " + cls + "(const Params& pack = {});");
   w.line("const std::string& name() const override { return name_; }");
-  w.line("int hook_count() const override { return " + std::to_string(cr.graph.hooks.size()) +
-         "; }");
+  w.line("int hook_count() const override { return " + std::to_string(hook_count) + "; }");
   w.line("const std::vector<rift::ParamSpec>& params() const override { return specs_; }");
   w.line("bool apply(rift::GMap& g, std::span<const rift::Dart> hooks,");
   w.line(
       "           std::span<const rift::Value> args, std::vector<rift::Dart>& touched) override;");
   w.line();
   w.middle(" private:");
-  w.line("std::string name_ = " + quote(rule.name.text) + ";");
+  w.line("std::string name_ = " + quote(name) + ";");
   w.line("Params pack_;");
   w.line("std::vector<rift::ParamSpec> specs_;");
   w.close("};");
   w.line();
 }
 
-void emit_rule_class(Writer& w, const check::CheckedRule& cr) {
-  const ast::Rule& rule = *cr.rule;
-  const std::string cls = rule_class(rule.name.text);
+void emit_rule_class(Writer& w, const std::string& name, const std::vector<ast::Param>& params) {
+  const std::string cls = rule_class(name);
   w.open(cls + "::" + cls + "(const Params& pack) : pack_(pack) {");
-  if (!rule.params.empty()) {
+  if (!params.empty()) {
     w.open("specs_ = {");
-    write_param_specs(w, rule.params, false);
+    write_param_specs(w, params, false);
     w.close("};");
   }
   w.close();
@@ -183,20 +180,20 @@ void emit_rule_class(Writer& w, const check::CheckedRule& cr) {
   w.open("bool " + cls +
          "::apply(rift::GMap& g, std::span<const rift::Dart> hooks, std::span<const rift::Value> "
          "args, std::vector<rift::Dart>& touched) {");
-  w.open("if (args.size() != " + std::to_string(rule.params.size()) + ") {");
-  w.line("throw std::invalid_argument(" +
-         quote("rule '" + rule.name.text + "' takes " + std::to_string(rule.params.size()) +
-               " argument(s), got ") +
-         " + std::to_string(args.size()));");
+  w.open("if (args.size() != " + std::to_string(params.size()) + ") {");
+  w.line(
+      "throw std::invalid_argument(" +
+      quote("rule '" + name + "' takes " + std::to_string(params.size()) + " argument(s), got ") +
+      " + std::to_string(args.size()));");
   w.close();
-  w.line(rule.name.text + "_args a;");
-  for (std::size_t k = 0; k < rule.params.size(); ++k) {
-    const ast::Param& p = rule.params[k];
+  w.line(name + "_args a;");
+  for (std::size_t k = 0; k < params.size(); ++k) {
+    const ast::Param& p = params[k];
     w.line("a." + member_name(p.name.text) + " = value_as<" + cpp_type(p.type) + ">(args[" +
            std::to_string(k) + "], " +
-           quote("argument '" + p.name.text + "' of rule '" + rule.name.text + "'") + ");");
+           quote("argument '" + p.name.text + "' of rule '" + name + "'") + ");");
   }
-  w.line("return " + rule_function(rule.name.text) + "(g, hooks, a, pack_, &touched);");
+  w.line("return " + rule_function(name) + "(g, hooks, a, pack_, &touched);");
   w.close();
   w.line();
 }

@@ -60,6 +60,7 @@ void emit_match(Writer& w, const check::RuleGraph& g, const lower::MatchPlan& ma
                 const std::string& fail);
 
 void emit_rule(Writer& w, const check::CheckedRule& rule, const PackModel& model);
+void emit_script(Writer& w, const ast::Script& script, const PackModel& model);
 void emit_initialisers(Writer& w, const PackModel& model);
 
 /// Header declarations and source definitions of the generated classes.
@@ -67,7 +68,8 @@ void declare_kernel(Writer& w, const check::CheckedInteraction& inter, const Pac
 void emit_kernel(Writer& w, const check::CheckedInteraction& inter, const PackModel& model);
 void declare_criterion(Writer& w, const ast::Criterion& crit, const PackModel& model);
 void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& model);
-void declare_rule_class(Writer& w, const check::CheckedRule& rule);
-void emit_rule_class(Writer& w, const check::CheckedRule& rule);
+/// A rule or script as a rift::Rule (arguments by position).
+void declare_rule_class(Writer& w, const std::string& name, std::size_t hooks);
+void emit_rule_class(Writer& w, const std::string& name, const std::vector<ast::Param>& params);
 
 }  // namespace rift::emit

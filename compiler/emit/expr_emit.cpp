@@ -74,12 +74,63 @@ class Emitter {
       }
       case Expr::Kind::Call:
         return call(e);
+      case Expr::Kind::Fold:
+        return fold(e);
     }
     return "0";
   }
 
  private:
   std::string as(const Expr& e, Type to) { return convert(expr(e), e.type, to); }
+
+  /// An immediately invoked lambda: one dart per sub-orbit, the body per dart.
+  std::string fold(const Expr& e) {
+    const Expr& body = *e.args[0];
+    const bool mean = e.op == "mean";
+    // Folds nest: each gets its own names, so that no inner one shadows another.
+    const std::string id = std::to_string(folds_++);
+    const std::string acc = "acc" + id, n = "n" + id;
+    const Type acc_type = e.op == "count" ? Type::Int : (mean ? e.type : e.type);
+    const std::string t = cpp_type(acc_type);
+    std::string init = zero_of(acc_type);
+    if (e.op == "min") init = "std::numeric_limits<" + t + ">::max()";
+    if (e.op == "max") init = "std::numeric_limits<" + t + ">::lowest()";
+    std::string step;
+    const std::string value = as(body, acc_type);
+    if (e.op == "count") {
+      step = "if (" + expr(body) + ") ++" + acc + ";";
+    } else if (e.op == "min" || e.op == "max") {
+      step = acc + " = std::" + e.op + "<" + t + ">(" + acc + ", " + value + ");";
+    } else {
+      step = acc + " = " + t + "(" + acc + " + " + value + ");";
+    }
+    if (mean) step += " ++" + n + ";";
+    std::string out = "[&]() { " + t + " " + acc + " = " + init + ";";
+    if (mean) out += " std::int64_t " + n + " = 0;";
+    out += " " + ctx_.map + ".for_each_sub_orbit(" + dart_path(e, ctx_) + ", " +
+           orbit_code(e.outer.dims) + ", " + orbit_code(e.orbit.dims) + ", [&](rift::Dart " +
+           ctx_.dart(e.var) + ") { " + step + " });";
+    if (mean) {
+      out += " return " + n + " > 0 ? " + t + "(" + acc + " / static_cast<rift::Real>(" + n +
+             ")) : " + t + "(" + zero_of(acc_type) + ");";
+    } else {
+      out += " return " + acc + ";";
+    }
+    return out + " }()";
+  }
+
+  static std::string zero_of(Type t) {
+    switch (t) {
+      case Type::Vec3:
+        return "rift::Vec3::Zero()";
+      case Type::Mat3:
+        return "rift::Mat3::Zero()";
+      case Type::Int:
+        return "std::int64_t{0}";
+      default:
+        return "rift::Real(0)";
+    }
+  }
 
   std::string unary(const Expr& e) {
     if (e.op == "not") return "(!" + expr(*e.args[0]) + ")";
@@ -148,6 +199,7 @@ class Emitter {
   }
 
   const ExprContext& ctx_;
+  int folds_ = 0;
 };
 
 }  // namespace
@@ -163,6 +215,10 @@ std::string orbit_code(const std::vector<int>& dims) {
     if (d >= 0 && d < 8) mask |= 1u << d;
   }
   return "rift::Orbit::from_mask(" + std::to_string(mask) + ")";
+}
+
+std::string emit_dart(const ast::Expr& path, const ExprContext& ctx) {
+  return dart_path(path, ctx);
 }
 
 std::string emit_expr(const ast::Expr& e, const ExprContext& ctx) {

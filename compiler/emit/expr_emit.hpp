@@ -22,6 +22,8 @@ struct ExprContext {
 };
 
 std::string emit_expr(const ast::Expr& e, const ExprContext& ctx);
+/// The dart a path `node@i@j` stands for.
+std::string emit_dart(const ast::Expr& path, const ExprContext& ctx);
 /// `code` (of type `from`) converted to `to` (only int -> real converts).
 std::string convert(const std::string& code, ast::Type from, ast::Type to);
 /// rift::Orbit::from_mask(...) for a list of dimensions.

@@ -47,6 +47,14 @@ void for_each_criterion(const PackModel& m, F&& f) {
 }
 
 template <class F>
+void for_each_script(const PackModel& m, F&& f) {
+  for (const ast::File& file : m.program->files) {
+    for (const ast::Script& s : file.scripts)
+      f(s);
+  }
+}
+
+template <class F>
 void for_each_embedding(const PackModel& m, F&& f) {
   for (const ast::File& file : m.program->files) {
     for (const ast::Embedding& e : file.embeddings)
@@ -87,13 +95,16 @@ void write_header(Writer& w, const PackModel& m) {
   }
   w.close("};");
   w.line();
-  for (const check::CheckedRule& cr : *m.rules) {
-    w.open("struct " + cr.rule->name.text + "_args {");
-    for (const ast::Param& p : cr.rule->params) {
+  auto args_struct = [&](const std::string& name, const std::vector<ast::Param>& params) {
+    w.open("struct " + name + "_args {");
+    for (const ast::Param& p : params) {
       w.line(cpp_type(p.type) + " " + member_name(p.name.text) + " = " + zero_of(p.type) + ";");
     }
     w.close("};");
-  }
+  };
+  for (const check::CheckedRule& cr : *m.rules)
+    args_struct(cr.rule->name.text, cr.rule->params);
+  for_each_script(m, [&](const ast::Script& s) { args_struct(s.name.text, s.params); });
   w.line();
   w.line("/// Adds every embedding the pack declares that the map does not have yet.");
   w.line("/// Throws std::invalid_argument when an existing one has another type or orbit.");
@@ -110,12 +121,20 @@ void write_header(Writer& w, const PackModel& m) {
            "_args& args = {}, const Params& params = {}, std::vector<rift::Dart>* touched = "
            "nullptr);");
   }
+  for_each_script(m, [&](const ast::Script& s) {
+    w.line("/// Script '" + s.name.text + "': true when one of its applications applied.");
+    w.line("bool " + rule_function(s.name.text) + "(rift::GMap& g, std::span<const rift::Dart> " +
+           "hooks, const " + s.name.text + "_args& args = {}, const Params& params = {}, " +
+           "std::vector<rift::Dart>* touched = nullptr);");
+  });
   w.line();
   for (const check::CheckedInteraction& ci : *m.interactions)
     declare_kernel(w, ci, m);
   for_each_criterion(m, [&](const ast::Criterion& c) { declare_criterion(w, c, m); });
   for (const check::CheckedRule& cr : *m.rules)
-    declare_rule_class(w, cr);
+    declare_rule_class(w, cr.rule->name.text, cr.graph.hooks.size());
+  for_each_script(
+      m, [&](const ast::Script& s) { declare_rule_class(w, s.name.text, s.hooks.size()); });
   w.line("/// The pack as a simulator sees it: embeddings, catalog and factories.");
   w.open("class Pack final : public rift::Pack {");
   w.middle(" public:");
@@ -207,6 +226,8 @@ void write_pack_class(Writer& w, const PackModel& m) {
   std::string names;
   for (const check::CheckedRule& cr : *m.rules)
     names += (names.empty() ? "" : ", ") + quote(cr.rule->name.text);
+  for_each_script(
+      m, [&](const ast::Script& s) { names += (names.empty() ? "" : ", ") + quote(s.name.text); });
   w.line("return {" + names + "};");
   w.close();
   w.line();
@@ -250,6 +271,10 @@ void write_pack_class(Writer& w, const PackModel& m) {
     w.line("if (name == " + quote(n) + ") return std::make_unique<" + rule_class(n) +
            ">(params_);");
   }
+  for_each_script(m, [&](const ast::Script& s) {
+    w.line("if (name == " + quote(s.name.text) + ") return std::make_unique<" +
+           rule_class(s.name.text) + ">(params_);");
+  });
   w.line("return nullptr;");
   w.close();
   w.line();
@@ -331,11 +356,13 @@ GeneratedPack generate_pack(const PackModel& m, const diag::SourceManager& sourc
   emit_initialisers(w, m);
   for (const check::CheckedRule& cr : *m.rules)
     emit_rule(w, cr, m);
+  for_each_script(m, [&](const ast::Script& s) { emit_script(w, s, m); });
   for (const check::CheckedInteraction& ci : *m.interactions)
     emit_kernel(w, ci, m);
   for_each_criterion(m, [&](const ast::Criterion& c) { emit_criterion(w, c, m); });
   for (const check::CheckedRule& cr : *m.rules)
-    emit_rule_class(w, cr);
+    emit_rule_class(w, cr.rule->name.text, cr.rule->params);
+  for_each_script(m, [&](const ast::Script& s) { emit_rule_class(w, s.name.text, s.params); });
   write_pack_class(w, m);
   w.line("}  // namespace rift::packs::" + m.pack);
   w.line();

@@ -22,6 +22,7 @@ struct ParseContext {
   ast::Rule rule;
   ast::Interaction interaction;
   ast::Criterion criterion;
+  ast::Script script;
   ast::Pattern* pattern = nullptr;        // the pattern block being read
   std::vector<ast::Let>* lets = nullptr;  // where `let` goes in the open body
   std::vector<ast::ExprPtr>* whens = nullptr;

@@ -9,7 +9,7 @@ void parse_file(const diag::SourceManager& sources, int file_id, diag::Diagnosti
                 ast::File& out) {
   out.file_id = file_id;
   grammar::Lexer lexer(sources.file(file_id).text, file_id, diags);
-  ParseContext ctx{lexer, out, diags, {}, {}, {}, nullptr, nullptr, nullptr};
+  ParseContext ctx{lexer, out, diags, {}, {}, {}, {}, nullptr, nullptr, nullptr};
   grammar::Parser parser(ctx);
   parser.parse();
 }

@@ -1,5 +1,8 @@
 #include "resolve/resolve.hpp"
 
+#include <algorithm>
+#include <functional>
+#include <map>
 #include <set>
 
 namespace rift::resolve {
@@ -42,6 +45,19 @@ class Resolver {
         node(e.node, e.node_loc, scope);
         m.embedding = embedding(e.name, e.loc);
         break;
+      case Expr::Kind::Fold: {
+        if (scope.constant) {
+          diags_.error(e.loc, "a constant expression cannot traverse the map");
+          return;
+        }
+        node(e.node, e.node_loc, scope);
+        Scope inner = scope;
+        inner.nodes.insert(e.var);
+        inner.hidden_nodes.erase(e.var);
+        for (const auto& a : e.args)
+          expr(*a, inner);
+        return;
+      }
       default:
         break;
     }
@@ -199,12 +215,90 @@ void component_params(const std::vector<ast::Param>& params, Resolver& r, const 
   }
 }
 
+/// Scripts: statements see the hooks, the parameters and the lets written
+/// before them; `for each` binds its dart variable for the statement only.
+/// Script calls, for the recursion check: caller -> (callee, call site).
+using CallGraph = std::map<std::string, std::vector<std::pair<std::string, diag::Location>>>;
+
+void resolve_script(const ast::Script& script, const Symbols& symbols, Resolver& r,
+                    CallGraph& calls) {
+  Scope s;
+  s.params = &script.params;
+  s.lets = &script.lets;
+  for (const auto& h : script.hooks)
+    s.nodes.insert(h.text);
+  auto& mine = calls[script.name.text];
+  for (const ast::ScriptStmt& st : script.stmts) {
+    if (st.kind == ast::ScriptStmt::Kind::Let) {
+      s.visible_lets = st.let;
+      r.expr(*script.lets[st.let].value, s);
+      s.visible_lets = st.let + 1;
+      continue;
+    }
+    Scope inner = s;
+    if (st.each.present) {
+      r.node(st.each.dart->node, st.each.dart->node_loc, s);
+      inner.nodes.insert(st.each.var.text);
+    }
+    if (st.where) r.expr(*st.where, inner);
+    if (st.kind == ast::ScriptStmt::Kind::Set) {
+      const_cast<ast::Assign&>(st.set).target =
+          r.embedding(st.set.embedding.text, st.set.embedding.loc);
+      r.node(st.set.node.text, st.set.node.loc, inner);
+      r.expr(*st.set.value, inner);
+      continue;
+    }
+    for (const auto& h : st.hooks)
+      r.node(h->node, h->node_loc, inner);
+    for (const auto& a : st.args)
+      r.expr(*a.value, inner);
+    if (symbols.rule(st.rule.text)) continue;
+    if (symbols.script(st.rule.text)) {
+      mine.emplace_back(st.rule.text, st.rule.loc);
+      continue;
+    }
+    r.diags().error(st.rule.loc, "unknown rule '" + st.rule.text + "'");
+  }
+}
+
+/// A script may not apply itself, directly or through other scripts: each
+/// call that closes a cycle is reported.
+void check_recursion(const CallGraph& calls, diag::Diagnostics& diags) {
+  std::map<std::string, int> state;  // 0 unvisited, 1 on the path, 2 done
+  std::vector<std::string> path;
+  std::function<void(const std::string&)> visit = [&](const std::string& s) {
+    state[s] = 1;
+    path.push_back(s);
+    auto it = calls.find(s);
+    if (it != calls.end()) {
+      for (const auto& [callee, loc] : it->second) {
+        if (state[callee] == 1) {
+          std::string cycle;
+          for (auto p = std::find(path.begin(), path.end(), callee); p != path.end(); ++p)
+            cycle += "'" + *p + "' -> ";
+          diags.error(loc, "script '" + s + "' applies script '" + callee +
+                               "', which applies it again (" + cycle + "'" + callee +
+                               "'); scripts cannot recurse");
+        } else if (state[callee] == 0) {
+          visit(callee);
+        }
+      }
+    }
+    path.pop_back();
+    state[s] = 2;
+  };
+  for (const auto& [s, callees] : calls) {
+    if (state[s] == 0) visit(s);
+  }
+}
+
 }  // namespace
 
 void resolve_names(const ast::Program& program, const Symbols& symbols, diag::Diagnostics& diags) {
   Resolver r(symbols, diags);
   Scope constant;
   constant.constant = true;
+  CallGraph script_calls;
   for (const ast::File& file : program.files) {
     for (const auto& e : file.embeddings) {
       if (e.default_value) r.expr(*e.default_value, constant);
@@ -219,6 +313,8 @@ void resolve_names(const ast::Program& program, const Symbols& symbols, diag::Di
     }
     for (const auto& rule : file.rules)
       resolve_rule(rule, r);
+    for (const auto& script : file.scripts)
+      resolve_script(script, symbols, r, script_calls);
     for (const auto& inter : file.interactions) {
       component_params(inter.params, r, constant);
       Scope s;
@@ -261,13 +357,13 @@ void resolve_names(const ast::Program& program, const Symbols& symbols, diag::Di
       if (crit.measure) r.expr(*crit.measure, s);
       for (const auto& h : crit.apply_hooks)
         r.node(h.text, h.loc, s);
-      const ast::Rule* rule = crit.has_apply ? symbols.rule(crit.rule.text) : nullptr;
-      if (crit.has_apply && !rule)
+      if (crit.has_apply && !symbols.callee_params(crit.rule.text))
         diags.error(crit.rule.loc, "unknown rule '" + crit.rule.text + "'");
       for (const auto& a : crit.apply_args)
         r.expr(*a.value, s);
     }
   }
+  check_recursion(script_calls, diags);
 }
 
 }  // namespace rift::resolve

@@ -44,6 +44,14 @@ const ast::PackParam* Symbols::param(std::string_view name) const {
 const ast::Rule* Symbols::rule(std::string_view name) const {
   return lookup(rules, name);
 }
+const ast::Script* Symbols::script(std::string_view name) const {
+  return lookup(scripts, name);
+}
+const std::vector<ast::Param>* Symbols::callee_params(std::string_view name) const {
+  if (const ast::Rule* r = rule(name)) return &r->params;
+  if (const ast::Script* s = script(name)) return &s->params;
+  return nullptr;
+}
 
 Symbols collect_symbols(const ast::Program& program, diag::Diagnostics& diags) {
   Symbols symbols;
@@ -55,6 +63,8 @@ Symbols collect_symbols(const ast::Program& program, diag::Diagnostics& diags) {
       collector.add(symbols.params, p, "parameter");
     for (const auto& r : file.rules)
       collector.add(symbols.rules, r, "rule");
+    for (const auto& s : file.scripts)
+      collector.add(symbols.scripts, s, "script");
     for (const auto& i : file.interactions)
       collector.add(symbols.interactions, i, "interaction");
     for (const auto& c : file.criteria)

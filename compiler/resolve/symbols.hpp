@@ -16,10 +16,14 @@ struct Symbols {
   std::map<std::string, const ast::Rule*, std::less<>> rules;
   std::map<std::string, const ast::Interaction*, std::less<>> interactions;
   std::map<std::string, const ast::Criterion*, std::less<>> criteria;
+  std::map<std::string, const ast::Script*, std::less<>> scripts;
 
   const ast::Embedding* embedding(std::string_view name) const;
   const ast::PackParam* param(std::string_view name) const;
   const ast::Rule* rule(std::string_view name) const;
+  const ast::Script* script(std::string_view name) const;
+  /// The parameters of the rule or script `name`, or nullptr when there is none.
+  const std::vector<ast::Param>* callee_params(std::string_view name) const;
 };
 
 /// Collects every declaration; a name declared twice is an error with a note
