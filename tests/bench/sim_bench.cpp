@@ -1,0 +1,97 @@
+// One RK4 step of the paper's cloth (Fig. 14, Table 2 "basic step") with the
+// GENERATED packs of rules/ in the runtime's Simulation, beside the
+// hand-written flat-array reference solver (tests/reference/) on the same
+// cloth. Reported as time per step; `springs` counts the atomic springs,
+// `s_per_spring` is the step time over springs x 4 force evaluations. See
+// docs/physics.md §7 for the command and the figures.
+#include <benchmark/benchmark.h>
+
+#include "../physics/physics_setup.hpp"
+#include "../reference/paper_cloth.hpp"
+
+namespace {
+
+using rift::GridKind;
+using rift::Real;
+using rift::Vec3;
+using rift::reference::kPaperDt;
+
+// The same 100 g cloth on a finer grid has lighter vertices: the damped RK4
+// limit scales as h^2, and so does dt (docs/physics.md §5).
+Real step_for(int n) {
+  return kPaperDt * (10.0 / n) * (10.0 / n);
+}
+
+std::unique_ptr<rift::Simulation> generated_cloth(GridKind kind, int n) {
+  using namespace rift::physics_test;
+  const rift::MeshData mesh = rift::reference::hanging_grid(kind, n, n);
+  SimSetup setup;
+  setup.settings.integrator = rift::IntegratorKind::kRK4;
+  setup.settings.dt = step_for(n);
+  setup.interactions = paper_cloth_springs();
+  setup.prepare = [&](rift::Simulation& sim) {
+    sim.set_total_mass(0.1);
+    const Vec3 left = mesh.points[rift::reference::grid_point(n, 0, n)];
+    const Vec3 right = mesh.points[rift::reference::grid_point(n, n, n)];
+    sim.pin_where(
+        [&](const Vec3& x) { return (x - left).norm() < 1e-9 || (x - right).norm() < 1e-9; });
+  };
+  return simulate(rift::assemble_gmap(mesh), setup);
+}
+
+void report(benchmark::State& state, double springs, double vertices) {
+  state.counters["springs"] = springs;
+  state.counters["vertices"] = vertices;
+  state.counters["s_per_spring"] =
+      benchmark::Counter(4 * springs * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void BM_GeneratedRk4Step(benchmark::State& state, GridKind kind) {
+  const int n = static_cast<int>(state.range(0));
+  auto sim = generated_cloth(kind, n);
+  for (int s = 0; s < 200; ++s)
+    sim->step();
+  for (auto _ : state) {
+    sim->step();
+    benchmark::DoNotOptimize(sim->position().values().data());
+    benchmark::ClobberMemory();
+  }
+  for (const Vec3& x : sim->position().values()) {
+    if (!x.allFinite()) {
+      state.SkipWithError("the cloth exploded");
+      break;
+    }
+  }
+  const auto& m = sim->force_models();
+  // stretch, shear (two diagonals per matched quad), bend
+  report(state,
+         static_cast<double>(m[0]->active_matches() + 2 * m[1]->active_matches() +
+                             m[2]->active_matches()),
+         static_cast<double>(sim->map().count_cells(rift::Orbit{1, 2})));
+}
+
+void BM_ReferenceRk4Step(benchmark::State& state, GridKind kind) {
+  const int n = static_cast<int>(state.range(0));
+  rift::reference::ReferenceCloth cloth = rift::reference::paper_cloth(kind, n, n);
+  for (int s = 0; s < 200; ++s)
+    cloth.step_rk4(step_for(n));
+  for (auto _ : state) {
+    cloth.step_rk4(step_for(n));
+    benchmark::DoNotOptimize(cloth.positions().data());
+    benchmark::ClobberMemory();
+  }
+  report(state, static_cast<double>(cloth.counts().total()),
+         static_cast<double>(cloth.vertex_count()));
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(BM_GeneratedRk4Step, quads, GridKind::Quad)->Arg(10)->Arg(100);
+BENCHMARK_CAPTURE(BM_ReferenceRk4Step, quads, GridKind::Quad)->Arg(10)->Arg(100);
+BENCHMARK_CAPTURE(BM_GeneratedRk4Step, triangles, GridKind::Tri)->Arg(10)->Arg(100);
+BENCHMARK_CAPTURE(BM_ReferenceRk4Step, triangles, GridKind::Tri)->Arg(10)->Arg(100);
+BENCHMARK_CAPTURE(BM_GeneratedRk4Step, mixed, GridKind::Mix)->Arg(10)->Arg(100);
+BENCHMARK_CAPTURE(BM_ReferenceRk4Step, mixed, GridKind::Mix)->Arg(10)->Arg(100);
+
+BENCHMARK_MAIN();
