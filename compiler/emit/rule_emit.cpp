@@ -206,6 +206,8 @@ void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) 
     }
     w.close();
   }
+  // A Debug build of the runtime checks the map after every rewrite.
+  w.line("g.check_after_rewrite(\"rule '" + rule.name.text + "'\");");
   w.line("return true;");
   w.close();
   w.line();

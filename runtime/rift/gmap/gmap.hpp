@@ -174,6 +174,11 @@ class GMap {
   std::vector<std::string> check_validity(std::size_t limit = 20) const;
   bool is_valid() const { return check_validity(1).empty(); }
 
+  /// In a Debug build (RIFT_CHECK_REWRITES), throws std::logic_error naming
+  /// `what` and the violations when the map is invalid; otherwise does
+  /// nothing. Called after every sew, unsew and generated rule.
+  void check_after_rewrite(const char* what) const;
+
   /// Renumbers live darts to [0, size()) in order and packs every embedding's
   /// slots. Returns new_index[old] (kNoDart for dead darts). No mark may be reserved.
   std::vector<Dart> compact();
@@ -187,7 +192,6 @@ class GMap {
   void split_embeddings_after_unsew(const std::vector<Dart>& pairs, int i);
   std::vector<Dart>& acquire_scratch() const;
   void release_scratch() const { --scratch_depth_; }
-  void check_after_rewrite(const char* what) const;
 
   int dimension_;
   std::array<std::vector<Dart>, kMaxDimension + 1> alpha_;
