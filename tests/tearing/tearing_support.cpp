@@ -1,0 +1,129 @@
+#include "tearing_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <tuple>
+
+#include "criteria2d.hpp"
+#include "criteria3d.hpp"
+#include "fem2d.hpp"
+#include "fem3d.hpp"
+#include "mass_spring2d.hpp"
+#include "mass_spring3d.hpp"
+#include "rift/scene/scene.hpp"
+#include "rift/scene/scene_setup.hpp"
+#include "topology2d.hpp"
+#include "topology3d.hpp"
+
+namespace rift::tearing_test {
+
+const PackRegistry& standard_packs() {
+  static const PackRegistry packs = [] {
+    PackRegistry r;
+    rift_register_pack_mass_spring2d(r);
+    rift_register_pack_mass_spring3d(r);
+    rift_register_pack_fem2d(r);
+    rift_register_pack_fem3d(r);
+    rift_register_pack_criteria2d(r);
+    rift_register_pack_criteria3d(r);
+    rift_register_pack_topology2d(r);
+    rift_register_pack_topology3d(r);
+    return r;
+  }();
+  return packs;
+}
+
+std::unique_ptr<Simulation> simulate(const std::string& name, const std::string& toml) {
+  const std::string path = ::testing::TempDir() + "rift_tearing_" + name + ".toml";
+  std::ofstream(path) << toml;
+  const Scene scene = read_scene(path, standard_packs().catalog());
+  SetupOptions options;
+  options.check_each_rewrite = true;
+  return build_simulation(scene, standard_packs(), options);
+}
+
+std::string static_scene(const std::string& mesh, const std::string& scale, double total_mass,
+                         const std::string& components) {
+  return "[mesh]\nsource = \"" + mesh + "\"\nscale = " + scale +
+         "\n[simulation]\nintegrator = \"rk4\"\ndt = 1e-7\nsteps = 1\ngravity = [0, 0, 0]\n"
+         "[mass]\ntotal = " +
+         std::to_string(total_mass) + "\n" + components;
+}
+
+void deform(Simulation& sim, const std::function<Vec3(const Vec3&)>& f) {
+  const GMap& g = sim.map();
+  g.for_each_cell(Orbit::cell(0, g.dimension()),
+                  [&](Dart d) { sim.position()[d] = f(sim.position()[d]); });
+}
+
+long Counts::euler() const {
+  return static_cast<long>(vertices) - static_cast<long>(edges) + static_cast<long>(faces) -
+         static_cast<long>(volumes);
+}
+
+Counts counts(const GMap& map) {
+  Counts c;
+  c.vertices = map.count_cells_of_dimension(0);
+  c.edges = map.count_cells_of_dimension(1);
+  c.faces = map.count_cells_of_dimension(2);
+  if (map.dimension() == 3) c.volumes = map.count_cells_of_dimension(3);
+  c.components = map.count_cells(Orbit::all(map.dimension()));
+  return c;
+}
+
+std::vector<Vec3> split_positions(const Simulation& sim) {
+  std::map<std::tuple<long long, long long, long long>, int> seen;
+  const GMap& g = sim.map();
+  g.for_each_cell(Orbit::cell(0, g.dimension()), [&](Dart d) {
+    const Vec3& p = sim.position()[d];
+    ++seen[{std::llround(p.x() * 1e9), std::llround(p.y() * 1e9), std::llround(p.z() * 1e9)}];
+  });
+  std::vector<Vec3> out;
+  for (const auto& [key, n] : seen) {
+    if (n > 1) {
+      out.emplace_back(static_cast<Real>(std::get<0>(key)) * 1e-9,
+                       static_cast<Real>(std::get<1>(key)) * 1e-9,
+                       static_cast<Real>(std::get<2>(key)) * 1e-9);
+    }
+  }
+  return out;
+}
+
+std::vector<Vec3> element_centres(const Simulation& sim) {
+  const GMap& g = sim.map();
+  const int dim = g.dimension();
+  std::vector<Vec3> out;
+  g.for_each_cell(Orbit::cell(dim, dim), [&](Dart d) {
+    Vec3 sum = Vec3::Zero();
+    int n = 0;
+    g.for_each_sub_orbit(d, Orbit::cell(dim, dim), Orbit::cell(0, dim), [&](Dart v) {
+      sum += sim.position()[v];
+      ++n;
+    });
+    out.push_back(sum / n);
+  });
+  return out;
+}
+
+void store_forces(Simulation& sim) {
+  std::vector<Vec3> f(sim.position().values().size(), Vec3::Zero());
+  const ForceInput in{sim.position().values().data(), sim.velocity().values().data()};
+  for (const auto& model : sim.force_models())
+    model->add_forces(in, f.data(), true);
+}
+
+std::vector<Dart> apply_first_candidate(Simulation& sim, std::size_t c) {
+  std::vector<TearCandidate> candidates;
+  sim.criteria().at(c)->collect(sim.map(), candidates);
+  std::vector<Dart> touched;
+  if (candidates.empty()) return touched;
+  EXPECT_TRUE(sim.criteria()[c]->apply(sim.map(), candidates.front(), touched));
+  EXPECT_TRUE(sim.map().check_validity().empty());
+  sim.on_topology_changed(touched);
+  return touched;
+}
+
+}  // namespace rift::tearing_test

@@ -1,0 +1,53 @@
+// Helpers of the tearing tests: scenes of the standard packs built from TOML
+// text, imposed deformations, and the counts a torn map is checked against.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rift/gmap/gmap.hpp"
+#include "rift/pack/pack.hpp"
+#include "rift/sim/simulation.hpp"
+
+namespace rift::tearing_test {
+
+/// Every standard pack (rules/CMakeLists.txt), registered once.
+const PackRegistry& standard_packs();
+
+/// A simulation of the scene `toml` (written to a temporary file named after
+/// `name`), checking the G-map after every rewrite.
+std::unique_ptr<Simulation> simulate(const std::string& name, const std::string& toml);
+
+/// The TOML of a static scene: no gravity, a tiny dt (one step barely moves
+/// anything), `total_mass` spread over `mesh` scaled by `scale`, then the
+/// given [[interaction]] and [[criterion]] tables.
+std::string static_scene(const std::string& mesh, const std::string& scale, double total_mass,
+                         const std::string& components);
+
+/// Moves every vertex to f(position), after the rest state was recorded.
+void deform(Simulation& sim, const std::function<Vec3(const Vec3&)>& f);
+
+struct Counts {
+  std::size_t vertices = 0, edges = 0, faces = 0, volumes = 0, components = 0;
+  /// V - E + F (- C in 3D).
+  long euler() const;
+};
+Counts counts(const GMap& map);
+
+/// Positions (rounded to 1e-9) shared by more than one vertex orbit: where vertices were split.
+std::vector<Vec3> split_positions(const Simulation& sim);
+
+/// Centres of the cells of dimension `dim` (faces in 2D, volumes in 3D).
+std::vector<Vec3> element_centres(const Simulation& sim);
+
+/// Every interaction computes and stores its forces at the current state,
+/// as the first stage of a step does (criteria read them).
+void store_forces(Simulation& sim);
+
+/// The first candidate of criterion `c`, applied by hand as the simulation
+/// would (rematch included); returns the touched darts.
+std::vector<Dart> apply_first_candidate(Simulation& sim, std::size_t c = 0);
+
+}  // namespace rift::tearing_test
