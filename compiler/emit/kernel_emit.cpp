@@ -19,6 +19,11 @@ std::string slot_field(int k) {
   return "s" + std::to_string(k);
 }
 
+/// The raw column pointer add_forces_all() hoists out of its loop.
+std::string column_pointer(const std::string& embedding) {
+  return "c_" + embedding;
+}
+
 std::string dart_path(const std::string& node, const std::vector<int>& hops) {
   std::string d = dart_name(node);
   for (int h : hops)
@@ -80,13 +85,13 @@ KernelModel model_of(const check::CheckedInteraction& ci, const PackModel& model
 
 /// Expressions of the force loop: positions and velocities from the stage
 /// arrays, every other value from its column, all through the match's slots.
-ExprContext loop_context(const KernelModel& k) {
+ExprContext loop_context(const KernelModel& k, bool hoisted = false) {
   ExprContext ctx;
   ctx.dart = [](const std::string& node) { return dart_name(node); };
   ctx.args = "p_";
   ctx.params = "pack_";
   const lower::KernelPlan* plan = &k.plan;
-  ctx.read = [plan, nodes = k.plan.nodes](const ast::Expr& e) {
+  ctx.read = [plan, nodes = k.plan.nodes, hoisted](const ast::Expr& e) {
     int node = -1;
     for (std::size_t v = 0; v < nodes.size(); ++v) {
       if (nodes[v] == e.node) node = static_cast<int>(v);
@@ -97,6 +102,7 @@ ExprContext loop_context(const KernelModel& k) {
     const std::string at = "m." + slot_field(slot);
     if (e.name == check::kPositionEmbedding) return "in.x[" + at + "]";
     if (e.name == check::kVelocityEmbedding) return "in.v[" + at + "]";
+    if (hoisted) return column_pointer(e.name) + "[" + at + "]";
     return embedding_var(e.name) + ".values()[" + at + "]";
   };
   return ctx;
@@ -229,6 +235,41 @@ void write_add_forces(Writer& w, const KernelModel& k) {
   w.line();
 }
 
+// The whole force pass in one function: column pointers are loaded once
+// instead of once per match (stores through Vec3* may alias anything, so the
+// compiler cannot hoist them itself), and the loop body is inlined.
+void write_add_forces_all(Writer& w, const KernelModel& k, const PackModel& model) {
+  const ExprContext ctx = loop_context(k, true);
+  w.open("void " + k.cls +
+         "::add_forces_all(std::span<const Match> ms, [[maybe_unused]] const rift::ForceInput& in, "
+         "[[maybe_unused]] rift::Vec3* f, [[maybe_unused]] bool store) {");
+  for (const std::string& name : k.embeddings) {
+    w.line("[[maybe_unused]] " + storage_type(model.symbols->embedding(name)->type) + "* const " +
+           column_pointer(name) + " = " + embedding_var(name) + ".values().data();");
+  }
+  w.open("for (const Match& m : ms) {");
+  std::string reset = "{ if (store) { ";
+  for (const lower::ForceStore& fs : k.plan.forces) {
+    reset += column_pointer(fs.embedding) + "[m." + slot_field(fs.store_slot) +
+             "] = rift::Vec3::Zero(); ";
+  }
+  reset += "} continue; }";
+  write_loop_prologue(w, k, ctx, reset);
+  for (std::size_t i = 0; i < k.inter->forces.size(); ++i) {
+    const ast::Assign& a = k.inter->forces[i];
+    const lower::ForceStore& fs = k.plan.forces[i];
+    const std::string var = "force_" + std::to_string(i);
+    write_sourced(w, a.value->loc,
+                  "const rift::Vec3 " + var + " = " + emit_expr(*a.value, ctx) + ";");
+    w.line("f[m." + slot_field(fs.vertex_slot) + "] += " + var + ";");
+    w.line("if (store) " + column_pointer(fs.embedding) + "[m." + slot_field(fs.store_slot) +
+           "] = " + var + ";");
+  }
+  w.close();
+  w.close();
+  w.line();
+}
+
 void write_reset(Writer& w, const KernelModel& k) {
   w.open("void " + k.cls + "::reset_stored([[maybe_unused]] const Match& m) {");
   for (const lower::ForceStore& fs : k.plan.forces) {
@@ -298,6 +339,10 @@ void declare_kernel(Writer& w, const check::CheckedInteraction& ci, const PackMo
   w.line("void initialise(rift::GMap& g);");
   w.line("bool match(const rift::GMap& g, rift::Dart support, Match& m) const;");
   w.line("void add_forces(const Match& m, const rift::ForceInput& in, rift::Vec3* f, bool store);");
+  w.line("/// add_forces over every match, with the columns read once.");
+  w.line(
+      "void add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, "
+      "bool store);");
   w.line("void reset_stored(const Match& m);");
   w.line("rift::Real energy(const Match& m, const rift::ForceInput& in) const;");
   w.line();
@@ -328,6 +373,7 @@ void emit_kernel(Writer& w, const check::CheckedInteraction& ci, const PackModel
   write_initialise(w, k, model);
   write_match(w, k);
   write_add_forces(w, k);
+  write_add_forces_all(w, k, model);
   write_reset(w, k);
   write_energy(w, k);
 }

@@ -50,8 +50,16 @@ class CachedInteraction final : public ForceModel {
   }
 
   void add_forces(const ForceInput& in, Vec3* f, bool store) override {
-    for (const auto& m : cache_.matches())
-      kernel_.add_forces(m, in, f, store);
+    using Match = typename Kernel::Match;
+    if constexpr (requires(Kernel & k, std::span<const Match> ms) {
+                    k.add_forces_all(ms, in, f, store);
+                  }) {
+      // Generated kernels run the whole pass themselves (columns read once).
+      kernel_.add_forces_all(std::span<const Match>(cache_.matches()), in, f, store);
+    } else {
+      for (const auto& m : cache_.matches())
+        kernel_.add_forces(m, in, f, store);
+    }
   }
 
   Real potential_energy(const ForceInput& in) const override {
