@@ -1,0 +1,80 @@
+// "A step allocates nothing" (issue 4): the generated packs' force passes,
+// the integrator and the criteria's evaluation run without a heap allocation
+// once warm. Every operator new of this test binary is counted.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "physics_setup.hpp"
+
+namespace {
+std::atomic<long> g_allocations{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+  ++g_allocations;
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t size) {
+  return operator new(size);
+}
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+  std::free(p);
+}
+
+namespace rift::physics_test {
+namespace {
+
+long allocations_during_steps(GridKind kind, const std::vector<Use>& criteria, int steps) {
+  SimSetup setup;
+  setup.settings = {IntegratorKind::kRK4, 5e-4, Vec3(0, 0, -9.81), 0, false};
+  setup.interactions = {{"stretch", {{"stiffness", 60.0}, {"damping", 0.1}}},
+                        {"shear", {{"stiffness", 43.0}, {"damping", 0.1}}},
+                        {"bend", {{"stiffness", 10.0}, {"damping", 0.1}}}};
+  setup.criteria = criteria;
+  setup.prepare = [](Simulation& sim) {
+    sim.set_total_mass(0.1);
+    sim.pin_where([](const Vec3& p) { return p.y() > 0.99 && (p.x() < 0.01 || p.x() > 0.99); });
+  };
+  auto sim = simulate(assemble_gmap(make_grid(kind, 10, 10)), setup);
+  for (int s = 0; s < 10; ++s)
+    sim->step();  // warm-up: buffers reach their size
+  const long before = g_allocations.load();
+  for (int s = 0; s < steps; ++s)
+    sim->step();
+  EXPECT_EQ(sim->tears(), 0u);
+  return g_allocations.load() - before;
+}
+
+TEST(NoAllocation, Rk4StepsOfTheClothAllocateNothing) {
+  for (GridKind kind : {GridKind::Quad, GridKind::Tri, GridKind::Mix}) {
+    EXPECT_EQ(allocations_during_steps(kind, {}, 100), 0) << static_cast<int>(kind);
+  }
+}
+
+TEST(NoAllocation, EvaluatingACriterionThatDoesNotHoldAllocatesNothing) {
+  EXPECT_EQ(allocations_during_steps(GridKind::Quad, {{"global_edge", {{"threshold", 1e3}}}}, 100),
+            0);
+}
+
+TEST(NoAllocation, TheCounterSeesAllocations) {
+  const long before = g_allocations.load();
+  auto* p = new std::vector<int>(100);
+  delete p;
+  EXPECT_GE(g_allocations.load() - before, 2);
+}
+
+}  // namespace
+}  // namespace rift::physics_test
