@@ -372,18 +372,21 @@ std::vector<CheckedInteraction> check_interactions(const ast::Program& program,
 
 namespace {
 
-/// The number of hooks of the rule or script `name`, or -1 when unknown.
+/// The number of hooks of the rule or script `name`, or -1 when unknown;
+/// `kind` says which it is.
 int hook_count(const ast::Program& program, const std::vector<CheckedRule>& rules,
-               const std::string& name, diag::Location* declared) {
+               const std::string& name, diag::Location* declared, std::string* kind) {
   for (const CheckedRule& cr : rules) {
     if (cr.rule->name.text != name) continue;
     *declared = cr.rule->name.loc;
+    *kind = "rule";
     return cr.ok ? static_cast<int>(cr.graph.hooks.size()) : -1;
   }
   for (const ast::File& file : program.files) {
     for (const ast::Script& s : file.scripts) {
       if (s.name.text != name) continue;
       *declared = s.name.loc;
+      *kind = "script";
       return static_cast<int>(s.hooks.size());
     }
   }
@@ -394,12 +397,13 @@ void check_hook_count(const ast::Program& program, const std::vector<CheckedRule
                       const ast::Ident& callee, std::size_t given, const diag::Location& loc,
                       diag::Diagnostics& diags) {
   diag::Location declared;
-  const int want = hook_count(program, rules, callee.text, &declared);
+  std::string kind;
+  const int want = hook_count(program, rules, callee.text, &declared, &kind);
   if (want < 0 || static_cast<std::size_t>(want) == given) return;
   diags
-      .error(loc, "rule '" + callee.text + "' has " + std::to_string(want) + " hook(s) but " +
+      .error(loc, kind + " '" + callee.text + "' has " + std::to_string(want) + " hook(s) but " +
                       std::to_string(given) + " dart(s) are given")
-      .notes.push_back({declared, "rule declared here"});
+      .notes.push_back({declared, kind + " declared here"});
 }
 
 }  // namespace

@@ -287,9 +287,11 @@ void check_component_params(const std::vector<ast::Param>& params, TypeChecker& 
 
 /// The arguments of an `apply`: every one names a parameter of the callee,
 /// with its type, and every parameter is given.
-void check_call_args(const ast::Ident& callee, const std::vector<ast::Param>* params,
+void check_call_args(const ast::Ident& callee, const resolve::Symbols& symbols,
                      const std::vector<ast::ApplyArg>& args, const diag::Location& loc,
                      TypeChecker& tc, diag::Diagnostics& diags) {
+  const std::vector<ast::Param>* params = symbols.callee_params(callee.text);
+  const std::string kind = symbols.script(callee.text) ? "script" : "rule";
   for (const auto& arg : args) {
     const ast::Param* param = nullptr;
     if (params) {
@@ -298,7 +300,7 @@ void check_call_args(const ast::Ident& callee, const std::vector<ast::Param>* pa
       }
       if (!param) {
         diags.error(arg.name.loc,
-                    "rule '" + callee.text + "' has no parameter '" + arg.name.text + "'");
+                    kind + " '" + callee.text + "' has no parameter '" + arg.name.text + "'");
       }
     }
     tc.expect(*arg.value, param ? param->type : Type::Error, "parameter '" + arg.name.text + "'");
@@ -309,7 +311,9 @@ void check_call_args(const ast::Ident& callee, const std::vector<ast::Param>* pa
     for (const auto& arg : args)
       given = given || arg.name.text == p.name.text;
     if (!given) {
-      diags.error(loc, "parameter '" + p.name.text + "' of rule '" + callee.text + "' is not given")
+      diags
+          .error(loc, "parameter '" + p.name.text + "' of " + kind + " '" + callee.text +
+                          "' is not given")
           .notes.push_back({p.name.loc, "declared here"});
     }
   }
@@ -331,7 +335,7 @@ void check_script(const ast::Script& script, const resolve::Symbols& symbols, in
       check_assign(st.set, tc, "the value of");
       continue;
     }
-    check_call_args(st.rule, symbols.callee_params(st.rule.text), st.args, st.loc, tc, diags);
+    check_call_args(st.rule, symbols, st.args, st.loc, tc, diags);
   }
 }
 
@@ -438,8 +442,7 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols,
         diags.error(crit.name.loc, "criterion '" + crit.name.text + "' applies no rule");
       }
       if (crit.has_apply) {
-        check_call_args(crit.rule, symbols.callee_params(crit.rule.text), crit.apply_args,
-                        crit.apply_loc, tc, diags);
+        check_call_args(crit.rule, symbols, crit.apply_args, crit.apply_loc, tc, diags);
       }
     }
   }

@@ -257,7 +257,7 @@ void resolve_script(const ast::Script& script, const Symbols& symbols, Resolver&
       mine.emplace_back(st.rule.text, st.rule.loc);
       continue;
     }
-    r.diags().error(st.rule.loc, "unknown rule '" + st.rule.text + "'");
+    r.diags().error(st.rule.loc, "unknown rule or script '" + st.rule.text + "'");
   }
 }
 
@@ -358,7 +358,7 @@ void resolve_names(const ast::Program& program, const Symbols& symbols, diag::Di
       for (const auto& h : crit.apply_hooks)
         r.node(h.text, h.loc, s);
       if (crit.has_apply && !symbols.callee_params(crit.rule.text))
-        diags.error(crit.rule.loc, "unknown rule '" + crit.rule.text + "'");
+        diags.error(crit.rule.loc, "unknown rule or script '" + crit.rule.text + "'");
       for (const auto& a : crit.apply_args)
         r.expr(*a.value, s);
     }
