@@ -45,9 +45,16 @@ function(rift_add_rule_pack target)
   if(TARGET riftc)
     set(riftc_target riftc)
   endif()
+  # Included rule files are looked up next to the including file, then in
+  # RIFT_RULES_INCLUDE_DIRS (find_package(rift) points it at the installed
+  # standard packs, so a pack can `include "common2d.rules";`).
+  set(include_flags "")
+  foreach(dir IN LISTS RIFT_RULES_INCLUDE_DIRS)
+    list(APPEND include_flags "-I" "${dir}")
+  endforeach()
   add_custom_command(
     OUTPUT "${out_dir}/${pack}.hpp" "${out_dir}/${pack}.cpp"
-    COMMAND "${riftc}" ${rules} -o "${out_dir}" --depfile "${out_dir}/${pack}.d"
+    COMMAND "${riftc}" ${rules} ${include_flags} -o "${out_dir}" --depfile "${out_dir}/${pack}.d"
     DEPENDS ${rules} ${riftc_target}
     DEPFILE "${out_dir}/${pack}.d"
     COMMENT "riftc: generating rule pack '${pack}'"

@@ -131,7 +131,8 @@ Result compile(const Options& options) {
   diag::SourceManager sources;
   diag::Diagnostics diags(sources);
   configure(diags, options);
-  const ast::Program program = parse::load_program(options.inputs, sources, diags);
+  const ast::Program program =
+      parse::load_program(options.inputs, sources, diags, options.include_dirs);
   Checked checked;
   run_checks(program, diags, checked);
   if (!diags.has_errors() && !options.out_dir.empty()) {

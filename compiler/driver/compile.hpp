@@ -13,6 +13,7 @@ struct Options {
   std::string out_dir;  // empty: check only
   std::string depfile;  // Make-style dependencies of the generated files (with out_dir)
   std::vector<std::string> disabled_warnings;
+  std::vector<std::string> include_dirs;  // searched for includes after the including file's folder
   bool warnings_as_errors = false;
 };
 

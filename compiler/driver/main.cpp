@@ -18,6 +18,8 @@ options:
                   OUTDIR/PACK.hpp and OUTDIR/PACK.cpp, PACK being the first file's pack
   --depfile FILE  with -o, also write the files read (includes too) as a
                   Make-style dependency file, for build systems
+  -I DIR          also look for included files in DIR (after the including
+                  file's own folder); may be repeated
   -Wno-NAME       disable warning NAME
   -Werror         treat warnings as errors
   --list-warnings print the names of all warnings
@@ -57,6 +59,9 @@ int main(int argc, char** argv) {
     } else if (arg == "--depfile") {
       if (k + 1 >= argc) return usage_error("--depfile needs a file name");
       options.depfile = argv[++k];
+    } else if (arg == "-I" || (arg.rfind("-I", 0) == 0 && arg.size() > 2)) {
+      if (arg == "-I" && k + 1 >= argc) return usage_error("-I needs a directory");
+      options.include_dirs.push_back(arg == "-I" ? std::string(argv[++k]) : arg.substr(2));
     } else if (arg == "-Werror") {
       options.warnings_as_errors = true;
     } else if (arg.rfind("-Wno-", 0) == 0) {

@@ -12,8 +12,12 @@ namespace fs = std::filesystem;
 
 class Loader {
  public:
-  Loader(diag::SourceManager& sources, diag::Diagnostics& diags, ast::Program& program)
-      : sources_(sources), diags_(diags), program_(program) {}
+  Loader(diag::SourceManager& sources, diag::Diagnostics& diags, ast::Program& program,
+         std::vector<std::string> include_dirs = {})
+      : sources_(sources),
+        diags_(diags),
+        program_(program),
+        include_dirs_(std::move(include_dirs)) {}
 
   void read(int file_id) {
     in_progress_.push_back(file_id);
@@ -29,8 +33,18 @@ class Loader {
   }
 
   void include(const std::string& base, const ast::Include& inc) {
-    const std::string path =
+    std::string path =
         (base.empty() ? fs::path(inc.path) : fs::path(base) / inc.path).lexically_normal().string();
+    std::error_code ec;
+    if (!fs::exists(path, ec) && fs::path(inc.path).is_relative()) {
+      for (const std::string& dir : include_dirs_) {
+        const std::string candidate = (fs::path(dir) / inc.path).lexically_normal().string();
+        if (fs::exists(candidate, ec)) {
+          path = candidate;
+          break;
+        }
+      }
+    }
     const int known = sources_.find(path);
     if (known >= 0) {
       for (int open : in_progress_) {
@@ -70,6 +84,7 @@ class Loader {
   diag::SourceManager& sources_;
   diag::Diagnostics& diags_;
   ast::Program& program_;
+  std::vector<std::string> include_dirs_;
   std::vector<int> in_progress_;
   bool have_dimension_ = false;
   diag::Location first_;
@@ -78,9 +93,9 @@ class Loader {
 }  // namespace
 
 ast::Program load_program(const std::vector<std::string>& paths, diag::SourceManager& sources,
-                          diag::Diagnostics& diags) {
+                          diag::Diagnostics& diags, const std::vector<std::string>& include_dirs) {
   ast::Program program;
-  Loader loader(sources, diags, program);
+  Loader loader(sources, diags, program, include_dirs);
   for (const std::string& path : paths) {
     if (sources.find(path) >= 0) continue;
     const int id = sources.load(path);
