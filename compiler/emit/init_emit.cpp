@@ -14,21 +14,6 @@ ExprContext dart_context() {
   return ctx;
 }
 
-std::string zero_of(ast::Type t) {
-  switch (t) {
-    case ast::Type::Vec3:
-      return "rift::Vec3::Zero()";
-    case ast::Type::Mat3:
-      return "rift::Mat3::Zero()";
-    case ast::Type::Bool:
-      return "false";
-    case ast::Type::Int:
-      return "std::int64_t{0}";
-    default:
-      return "rift::Real(0)";
-  }
-}
-
 }  // namespace
 
 std::string constant_expr(const ast::Expr& e, ast::Type to) {

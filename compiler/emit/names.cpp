@@ -24,6 +24,21 @@ std::string cpp_type(ast::Type t) {
   return "void";
 }
 
+std::string zero_of(ast::Type t) {
+  switch (t) {
+    case ast::Type::Vec3:
+      return "rift::Vec3::Zero()";
+    case ast::Type::Mat3:
+      return "rift::Mat3::Zero()";
+    case ast::Type::Bool:
+      return "false";
+    case ast::Type::Int:
+      return "std::int64_t{0}";
+    default:
+      return "rift::Real(0)";
+  }
+}
+
 std::string storage_type(ast::Type t) {
   return t == ast::Type::Bool ? "rift::Bool" : cpp_type(t);
 }

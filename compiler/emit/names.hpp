@@ -14,6 +14,8 @@ namespace rift::emit {
 std::string cpp_type(ast::Type t);
 /// The C++ type an embedding column of that type holds (bool: rift::Bool).
 std::string storage_type(ast::Type t);
+/// A C++ expression of the zero value of a type (false for bool).
+std::string zero_of(ast::Type t);
 /// `rift::ValueType::kReal` ...
 std::string value_type_enum(ast::Type t);
 

@@ -7,21 +7,6 @@ namespace rift::emit {
 
 namespace {
 
-std::string zero_of(ast::Type t) {
-  switch (t) {
-    case ast::Type::Vec3:
-      return "rift::Vec3::Zero()";
-    case ast::Type::Mat3:
-      return "rift::Mat3::Zero()";
-    case ast::Type::Bool:
-      return "false";
-    case ast::Type::Int:
-      return "std::int64_t{0}";
-    default:
-      return "rift::Real(0)";
-  }
-}
-
 std::string policy_of(const ast::Embedding& e) {
   if (!e.merge) return "rift::MergePolicy::kKeepFirst";
   const std::string& p = e.merge->text;
