@@ -45,15 +45,6 @@ Vec3 pull_columns_2_3(const Vec3& p) {
   return Vec3(p.x() + u, p.y(), p.z());
 }
 
-std::unique_ptr<Simulation> step_once(const std::string& name, const std::string& toml,
-                                      Vec3 (*deformation)(const Vec3&)) {
-  auto sim = simulate(name, toml);
-  deform(*sim, deformation);
-  sim->step();
-  EXPECT_TRUE(sim->map().check_validity().empty());
-  return sim;
-}
-
 /// Every piece of these strips stays a disk: V - E + F is the number of pieces.
 void expect_disks(const Counts& c) {
   EXPECT_EQ(c.euler(), static_cast<long>(c.components));

@@ -43,15 +43,6 @@ Vec3 pull_cubes_1_2(const Vec3& p) {
   return Vec3(p.x() + 0.2 * std::clamp(p.x() - 0.25, 0.0, 0.5), p.y(), p.z());
 }
 
-std::unique_ptr<Simulation> step_once(const std::string& name, const std::string& toml,
-                                      Vec3 (*deformation)(const Vec3&)) {
-  auto sim = simulate(name, toml);
-  deform(*sim, deformation);
-  sim->step();
-  EXPECT_TRUE(sim->map().check_validity().empty());
-  return sim;
-}
-
 /// Every piece stays a ball: V - E + F - C is the number of pieces.
 void expect_balls(const Counts& c) {
   EXPECT_EQ(c.euler(), static_cast<long>(c.components));

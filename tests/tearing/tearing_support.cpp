@@ -59,6 +59,15 @@ void deform(Simulation& sim, const std::function<Vec3(const Vec3&)>& f) {
                   [&](Dart d) { sim.position()[d] = f(sim.position()[d]); });
 }
 
+std::unique_ptr<Simulation> step_once(const std::string& name, const std::string& toml,
+                                      Vec3 (*deformation)(const Vec3&)) {
+  auto sim = simulate(name, toml);
+  deform(*sim, deformation);
+  sim->step();
+  EXPECT_TRUE(sim->map().check_validity().empty());
+  return sim;
+}
+
 long Counts::euler() const {
   return static_cast<long>(vertices) - static_cast<long>(edges) + static_cast<long>(faces) -
          static_cast<long>(volumes);

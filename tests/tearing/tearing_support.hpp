@@ -29,6 +29,11 @@ std::string static_scene(const std::string& mesh, const std::string& scale, doub
 /// Moves every vertex to f(position), after the rest state was recorded.
 void deform(Simulation& sim, const std::function<Vec3(const Vec3&)>& f);
 
+/// Builds the scene, imposes `deformation`, runs one step (its criteria
+/// apply), and checks that the map is valid.
+std::unique_ptr<Simulation> step_once(const std::string& name, const std::string& toml,
+                                      Vec3 (*deformation)(const Vec3&));
+
 struct Counts {
   std::size_t vertices = 0, edges = 0, faces = 0, volumes = 0, components = 0;
   /// V - E + F (- C in 3D).
