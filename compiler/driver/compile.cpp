@@ -89,9 +89,12 @@ std::string depfile_text(const std::filesystem::path& target, const diag::Source
 }
 
 void generate(const ast::Program& program, const Checked& checked,
-              const diag::SourceManager& sources, const std::string& out_dir,
-              const std::string& depfile, diag::Diagnostics& diags) {
+              const diag::SourceManager& sources, const Options& options,
+              diag::Diagnostics& diags) {
+  const std::string& out_dir = options.out_dir;
+  const std::string& depfile = options.depfile;
   emit::PackModel model;
+  model.line_directives = options.line_directives;
   model.program = &program;
   model.symbols = &checked.symbols;
   model.rules = &checked.rules;
@@ -142,7 +145,7 @@ Result compile(const Options& options) {
   Checked checked;
   run_checks(program, diags, checked);
   if (!diags.has_errors() && !options.out_dir.empty()) {
-    generate(program, checked, sources, options.out_dir, options.depfile, diags);
+    generate(program, checked, sources, options, diags);
   }
   return finish(diags);
 }
@@ -155,7 +158,7 @@ Result compile_text(const std::string& path, const std::string& text, const Opti
   Checked checked;
   run_checks(program, diags, checked);
   if (!diags.has_errors() && !options.out_dir.empty()) {
-    generate(program, checked, sources, options.out_dir, options.depfile, diags);
+    generate(program, checked, sources, options, diags);
   }
   return finish(diags);
 }

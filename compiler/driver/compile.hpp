@@ -18,6 +18,7 @@ struct Options {
   std::vector<std::string> disabled_warnings;
   std::vector<std::string> include_dirs;  // searched for includes after the including file's folder
   bool warnings_as_errors = false;
+  bool line_directives = true;  // #line directives into the .rules files
 };
 
 struct Result {

@@ -20,6 +20,9 @@ options:
                   Make-style dependency file, for build systems
   -I DIR          also look for included files in DIR (after the including
                   file's own folder); may be repeated
+  --no-line-directives
+                  no #line directives into the .rules files: the output then
+                  does not change when lines are added to them (diffable)
   -Wno-NAME       disable warning NAME
   -Werror         treat warnings as errors
   --list-warnings print the names of all warnings
@@ -56,6 +59,8 @@ int main(int argc, char** argv) {
     if (arg == "-o") {
       if (k + 1 >= argc) return usage_error("-o needs a directory");
       options.out_dir = argv[++k];
+    } else if (arg == "--no-line-directives") {
+      options.line_directives = false;
     } else if (arg == "--depfile") {
       if (k + 1 >= argc) return usage_error("--depfile needs a file name");
       options.depfile = argv[++k];

@@ -23,9 +23,10 @@ struct PackModel {
   const std::vector<check::CheckedRule>* rules = nullptr;
   const std::vector<check::CheckedInteraction>* interactions = nullptr;
   const std::vector<lower::InteractionPlan>* interaction_plans =
-      nullptr;                 // parallel to interactions
-  std::string pack;            // the pack's name
-  std::string pack_namespace;  // rift::packs::<pack>
+      nullptr;                  // parallel to interactions
+  std::string pack;             // the pack's name
+  std::string pack_namespace;   // rift::packs::<pack>
+  bool line_directives = true;  // #line into the .rules files
 };
 
 /// Name of the generated bool embedding on <> that tags the first dart of

@@ -1,9 +1,11 @@
 #include "emit/expr_emit.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "check/builtins.hpp"
+#include "emit/ir_render.hpp"
 #include "emit/names.hpp"
 
 namespace rift::emit {
@@ -15,15 +17,6 @@ using ast::Type;
 
 bool scalar(Type t) {
   return t == Type::Int || t == Type::Real;
-}
-
-std::string real_literal(double v) {
-  if (std::isinf(v)) return "std::numeric_limits<rift::Real>::infinity()";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  std::string s = buf;
-  if (s.find_first_of(".en") == std::string::npos) s += ".0";
-  return "rift::Real(" + s + ")";
 }
 
 std::string dart_path(const Expr& e, const ExprContext& ctx) {
@@ -81,7 +74,13 @@ class Emitter {
   }
 
  private:
-  std::string as(const Expr& e, Type to) { return convert(expr(e), e.type, to); }
+  std::string as(const Expr& e, Type to) {
+    // An int literal where a real is wanted is written as a real literal.
+    if (e.kind == Expr::Kind::IntLit && to == Type::Real) {
+      return real_literal(static_cast<double>(e.integer));
+    }
+    return convert(expr(e), e.type, to);
+  }
 
   /// An immediately invoked lambda: one dart per sub-orbit, the body per dart.
   std::string fold(const Expr& e) {
@@ -108,8 +107,8 @@ class Emitter {
     std::string out = "[&]() { " + t + " " + acc + " = " + init + ";";
     if (mean) out += " std::int64_t " + n + " = 0;";
     out += " " + ctx_.map + ".for_each_sub_orbit(" + dart_path(e, ctx_) + ", " +
-           orbit_code(e.outer.dims) + ", " + orbit_code(e.orbit.dims) + ", [&]([[maybe_unused]] rift::Dart " +
-           ctx_.dart(e.var) + ") { " + step + " });";
+           orbit_code(e.outer.dims) + ", " + orbit_code(e.orbit.dims) +
+           ", [&]([[maybe_unused]] rift::Dart " + ctx_.dart(e.var) + ") { " + step + " });";
     if (mean) {
       out += " return " + n + " > 0 ? " + t + "(" + acc + " / static_cast<rift::Real>(" + n +
              ")) : " + t + "(" + zero_of(acc_type) + ");";
@@ -210,11 +209,18 @@ std::string convert(const std::string& code, Type from, Type to) {
 }
 
 std::string orbit_code(const std::vector<int>& dims) {
-  unsigned mask = 0;
+  std::vector<int> sorted;
   for (int d : dims) {
-    if (d >= 0 && d < 8) mask |= 1u << d;
+    if (d >= 0 && d < 8 && std::find(sorted.begin(), sorted.end(), d) == sorted.end())
+      sorted.push_back(d);
   }
-  return "rift::Orbit::from_mask(" + std::to_string(mask) + ")";
+  std::sort(sorted.begin(), sorted.end());
+  std::string out = "rift::Orbit{";
+  for (std::size_t k = 0; k < sorted.size(); ++k) {
+    if (k) out += ", ";
+    out += std::to_string(sorted[k]);
+  }
+  return out + "}";
 }
 
 std::string emit_dart(const ast::Expr& path, const ExprContext& ctx) {

@@ -26,7 +26,7 @@ std::string emit_expr(const ast::Expr& e, const ExprContext& ctx);
 std::string emit_dart(const ast::Expr& path, const ExprContext& ctx);
 /// `code` (of type `from`) converted to `to` (only int -> real converts).
 std::string convert(const std::string& code, ast::Type from, ast::Type to);
-/// rift::Orbit::from_mask(...) for a list of dimensions.
+/// `rift::Orbit{1, 2}` for a list of dimensions.
 std::string orbit_code(const std::vector<int>& dims);
 
 }  // namespace rift::emit

@@ -2,6 +2,7 @@
 // orbit) and the parameters a scene gives to interactions and criteria: their
 // C++ struct, their reader from a rift::ComponentUse, their catalog entries.
 #include "emit/emit_context.hpp"
+#include "emit/ir_render.hpp"
 #include "emit/names.hpp"
 
 namespace rift::emit {
@@ -17,6 +18,9 @@ ExprContext dart_context() {
 }  // namespace
 
 std::string constant_expr(const ast::Expr& e, ast::Type to) {
+  if (e.kind == ast::Expr::Kind::IntLit && to == ast::Type::Real) {
+    return real_literal(static_cast<double>(e.integer));
+  }
   ExprContext ctx;
   ctx.dart = [](const std::string&) { return std::string("rift::kNoDart"); };
   return convert(emit_expr(e, ctx), e.type, to);
@@ -29,8 +33,8 @@ void declare_component_params(Writer& w, const std::string& name,
   for (const ast::Param& p : params) {
     const std::string value =
         p.default_value ? constant_expr(*p.default_value, p.type) : zero_of(p.type);
-    w.line(cpp_type(p.type) + " " + member_name(p.name.text) + " = " + cpp_type(p.type) + "(" +
-           value + ");" + (p.description.empty() ? "" : "  ///< " + p.description));
+    w.line(cpp_type(p.type) + " " + member_name(p.name.text) + " = " + value + ";" +
+           (p.description.empty() ? "" : "  ///< " + p.description));
   }
   w.close("};");
 }

@@ -58,8 +58,8 @@ class Renderer {
         return std::string("(") + expr(n.a) + " ? " + expr(n.b) + " : " + expr(n.c) + ")";
       }
       case Op::Index: {
-        std::string out = std::string("(") + expr(n.a) + ")(" + expr(n.b);
-        if (n.c != ir::kNoExpr) out += std::string(", ") + expr(n.c);
+        std::string out = std::string("(") + expr(n.a) + ")(" + index(n.b);
+        if (n.c != ir::kNoExpr) out += std::string(", ") + index(n.c);
         return out + ")";
       }
       case Op::Call:
@@ -77,6 +77,13 @@ class Renderer {
   }
 
  private:
+  /// A constant index as a plain number: `(h)(0, 2)`.
+  std::string index(ExprId id) {
+    const Node& n = g_[id];
+    if (n.op == Op::Literal && n.type == Type::Int) return std::to_string(n.integer);
+    return expr(id);
+  }
+
   std::string place(const ir::Place& p) {
     std::string d = ctx_.dart(p.node);
     for (int h : p.hops)

@@ -26,12 +26,13 @@ void Writer::middle(std::string_view text) {
 }
 
 void Writer::from_source(const diag::Location& loc) {
-  if (!loc.valid()) return;
+  if (!loc.valid() || !line_directives_) return;
   line("#line " + std::to_string(loc.begin.line) + " " + quote(sources_->file(loc.file).path));
 }
 
 void Writer::resume() {
   // The directive names the number of the line that follows it.
+  if (!line_directives_) return;
   line("#line " + std::to_string(lines_ + 2) + " " + quote(output_name_));
 }
 

@@ -27,6 +27,9 @@ class Writer {
   void from_source(const diag::Location& loc);
   /// Back to the generated file's own numbering.
   void resume();
+  /// Without them (`riftc --no-line-directives`), the output does not change
+  /// when a line is added to a .rules file, which keeps it diffable.
+  void set_line_directives(bool on) { line_directives_ = on; }
 
   const std::string& str() const { return out_; }
 
@@ -36,6 +39,7 @@ class Writer {
   std::string out_;
   int indent_ = 0;
   int lines_ = 0;
+  bool line_directives_ = true;
 };
 
 /// A C++ string literal for `text`.
