@@ -352,7 +352,14 @@ class SceneReader {
   }
 
   void read_output(const toml::table& t, SceneOutput& out) const {
-    check_keys(t, {"dir", "every", "formats", "png_every", "png_size"}, "[output]");
+    check_keys(t, {"dir", "every", "formats", "png_every", "png_size", "vtu_encoding"}, "[output]");
+    if (auto* n = t.get("vtu_encoding")) {
+      const std::string encoding = string(*n, "vtu_encoding");
+      if (encoding != "binary" && encoding != "ascii") {
+        fail(*n, "unknown vtu_encoding '" + encoding + "': expected \"binary\" or \"ascii\"");
+      }
+      out.vtu_ascii = encoding == "ascii";
+    }
     if (auto* n = t.get("dir")) out.dir = string(*n, "dir");
     if (auto* n = t.get("every")) out.every = static_cast<int>(integer(*n, "every", 1, 1 << 30));
     if (auto* n = t.get("png_every"))
