@@ -12,12 +12,12 @@
 #include <benchmark/benchmark.h>
 #include <malloc.h>
 #include <sys/resource.h>
-#include <cmath>
 
 #include <CGAL/Cell_attribute.h>
 #include <CGAL/Generalized_map.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 

@@ -70,6 +70,20 @@ TEST(HostileInputs, NegativeAndOverflowingIndices) {
                 "the number of nodes is negative ('-5')");
 }
 
+TEST(HostileInputs, SparseHugeAndRepeatedNodeTags) {
+  // Tags far apart (the hash map) and near (the flat table) mix freely.
+  const MeshData mesh =
+      io::read_gmsh("sparse.msh", kTet +
+                                      "$Nodes\n4\n9000000000000000000 0 0 0\n5 1 0 0\n-7 0 1 0\n"
+                                      "2000000 0 0 1\n$EndNodes\n$Elements\n1\n"
+                                      "1 4 0 9000000000000000000 5 -7 2000000\n$EndElements\n");
+  EXPECT_EQ(mesh.element_vertices, (std::vector<std::uint32_t>{0, 1, 2, 3}));
+  expect_broken("twice_dense.msh", kTet + "$Nodes\n2\n5 0 0 0\n5 1 0 0\n$EndNodes\n", 7,
+                "node 5 is defined twice");
+  expect_broken("twice_sparse.msh", kTet + "$Nodes\n2\n-5 0 0 0\n-5 1 0 0\n$EndNodes\n", 7,
+                "node -5 is defined twice");
+}
+
 TEST(HostileInputs, NonFiniteAndHugeCoordinates) {
   const std::string rest = "v 1 0 0\nv 0 1 0\nf 1 2 3\n";
   expect_broken("nan.obj", "v nan 0 0\n" + rest, 1,

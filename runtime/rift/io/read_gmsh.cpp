@@ -8,6 +8,7 @@
 // v2.2, the counts after them; the data between is little- or big-endian as the
 // integer 1 after the format line says. v2.2 writes 4-byte ints and doubles;
 // v4.1 writes ints, size_t (of the data size in the format line) and doubles.
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstdint>
@@ -55,6 +56,43 @@ GmshType gmsh_type(std::int64_t code) {
 }
 
 enum class Dialect { kV1, kV2, kV4 };
+
+// Node tags to 0-based indices. Gmsh numbers nodes 1..n in practice, so a flat
+// table indexed by tag (4 bytes a node) serves them; a tag far beyond the
+// nodes read so far goes to a hash map, so the table never outgrows the data.
+class TagIndex {
+ public:
+  /// False if `tag` is already there.
+  bool insert(std::int64_t tag, std::uint32_t index) {
+    if (tag >= 0 && static_cast<std::uint64_t>(tag) < dense_limit()) {
+      const auto t = static_cast<std::size_t>(tag);
+      if (t >= dense_.size()) dense_.resize(std::max(t + 1, 2 * dense_.size()), kNone);
+      if (dense_[t] != kNone) return false;
+      dense_[t] = index;
+      ++count_;
+      return true;
+    }
+    if (find(tag) != kNone) return false;
+    sparse_.emplace(tag, index);
+    ++count_;
+    return true;
+  }
+  /// kNone if `tag` is not there.
+  std::uint32_t find(std::int64_t tag) const {
+    if (tag >= 0 && static_cast<std::uint64_t>(tag) < dense_.size())
+      return dense_[static_cast<std::size_t>(tag)];
+    const auto it = sparse_.find(tag);
+    return it == sparse_.end() ? kNone : it->second;
+  }
+  static constexpr std::uint32_t kNone = ~0u;
+
+ private:
+  std::uint64_t dense_limit() const { return 2 * std::uint64_t{count_} + 1024; }
+
+  std::vector<std::uint32_t> dense_;
+  std::unordered_map<std::int64_t, std::uint32_t> sparse_;
+  std::size_t count_ = 0;
+};
 
 class GmshReader {
  public:
@@ -222,9 +260,8 @@ class GmshReader {
     if (mesh_.points.size() >= static_cast<std::size_t>(INT32_MAX)) {
       in_.fail(line, "more nodes than a mesh can hold (2^31 - 1)");
     }
-    const auto [it, inserted] =
-        node_index_.emplace(tag, static_cast<std::uint32_t>(mesh_.points.size()));
-    if (!inserted) in_.fail(line, "node " + std::to_string(tag) + " is defined twice");
+    if (!node_index_.insert(tag, static_cast<std::uint32_t>(mesh_.points.size())))
+      in_.fail(line, "node " + std::to_string(tag) + " is defined twice");
     mesh_.points.push_back(p);
   }
 
@@ -308,12 +345,12 @@ class GmshReader {
     return node(in_.to_integer(t, "a node tag"), t.line, element);
   }
   std::uint32_t node(std::int64_t tag, int line, std::int64_t element) {
-    const auto it = node_index_.find(tag);
-    if (it == node_index_.end()) {
+    const std::uint32_t index = node_index_.find(tag);
+    if (index == TagIndex::kNone) {
       in_.fail(line, "element " + std::to_string(element) + " refers to node " +
                          std::to_string(tag) + ", which is not defined");
     }
-    return it->second;
+    return index;
   }
 
   GmshType element_type(const Token& t) {
@@ -599,7 +636,7 @@ class GmshReader {
   Dialect dialect_ = Dialect::kV2;
   MeshData mesh_;
   ElementCollector elements_;
-  std::unordered_map<std::int64_t, std::uint32_t> node_index_;
+  TagIndex node_index_;
   int elements_line_ = 0;
   bool saw_nodes_ = false;
 };
