@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <thread>
 
@@ -21,6 +22,17 @@
 namespace {
 
 namespace fs = std::filesystem;
+
+// A frame file is whole: its XML part parses and it ends with its closing tag
+// (the appended binary data after <AppendedData> is not XML).
+bool frame_is_complete(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t cut = text.find("<AppendedData");
+  const std::string xml = cut == std::string::npos ? text : text.substr(0, cut) + "</VTKFile>";
+  pugi::xml_document doc;
+  return doc.load_string(xml.c_str()) && text.ends_with("</VTKFile>\n");
+}
 
 struct Result {
   int code;
@@ -251,7 +263,7 @@ TEST_F(Cli, ExplosionStopsAndKeepsFramesReadable) {
   ASSERT_TRUE(pvd.load_file((dir_ / "o" / "boom.pvd").c_str()));
   int frames = 0;
   for (pugi::xml_node ds : pvd.child("VTKFile").child("Collection").children("DataSet")) {
-    EXPECT_NO_THROW(rift::read_mesh_file((dir_ / "o" / ds.attribute("file").value()).string()));
+    EXPECT_TRUE(frame_is_complete(dir_ / "o" / ds.attribute("file").value()));
     ++frames;
   }
   EXPECT_GE(frames, 1);
@@ -283,7 +295,7 @@ TEST_F(Cli, CtrlCFinishesTheFrameAndClosesTheFiles) {
   ASSERT_TRUE(pvd.load_file((dir_ / "o" / "long.pvd").c_str()));
   int frames = 0;
   for (pugi::xml_node ds : pvd.child("VTKFile").child("Collection").children("DataSet")) {
-    EXPECT_NO_THROW(rift::read_mesh_file((dir_ / "o" / ds.attribute("file").value()).string()));
+    EXPECT_TRUE(frame_is_complete(dir_ / "o" / ds.attribute("file").value()));
     ++frames;
   }
   EXPECT_GE(frames, 4);

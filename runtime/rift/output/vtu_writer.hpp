@@ -1,6 +1,6 @@
 // VTK XML unstructured grid (.vtu) files, one per frame. By default the arrays
 // are appended raw binary (little-endian, UInt64 headers, uncompressed), the
-// layout ParaView writes itself: about half the size of text and no number
+// layout ParaView writes itself: exact, smaller than text and without number
 // formatting. ASCII (every real in its shortest exact text) is an option for
 // diffable files and hand inspection.
 #pragma once
