@@ -27,7 +27,5 @@ release() {
 
 job release release
 if [ "${RIFT_RELIABILITY:-1}" != 0 ]; then
-  job clang-tidy ./scripts/clang-tidy.sh build/release
-  job sanitizers ./scripts/sanitize-tests.sh
   job fuzz ./scripts/fuzz.sh all "${RIFT_FUZZ_SECONDS:-30}" -seed=1
 fi

@@ -8,11 +8,19 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <ostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "fuzz_harness.hpp"
+
+namespace rift::fuzz {
+// GoogleTest names a parameter by this instead of its bytes.
+inline void PrintTo(const Target& target, std::ostream* out) {
+  *out << target.name;
+}
+}  // namespace rift::fuzz
 
 namespace {
 

@@ -5,7 +5,7 @@
 
 #include "fuzz_harness.hpp"
 #include "rift/core/input_error.hpp"
-#include "rift/scene/scene.hpp"
+#include "rift/scene/scene_reader.hpp"
 
 namespace rift::fuzz {
 

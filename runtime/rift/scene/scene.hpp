@@ -6,7 +6,6 @@
 #include <map>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "rift/embed/value.hpp"
@@ -81,9 +80,5 @@ struct Scene {
 /// of the wrong type or range, unknown interactions or criteria, missing
 /// parameters, a mesh file that does not exist.
 Scene read_scene(const std::string& path, const Catalog& catalog);
-
-/// The same on TOML text already in memory (tests, fuzzing): `path` names it
-/// in messages and relative mesh files are looked up next to it.
-Scene read_scene_text(const std::string& path, std::string_view text, const Catalog& catalog);
 
 }  // namespace rift

@@ -11,6 +11,7 @@
 #include "rift/core/input_error.hpp"
 #include "rift/mesh/generators.hpp"
 #include "rift/scene/scene.hpp"
+#include "rift/scene/scene_reader.hpp"
 #include "rift/scene/suggest.hpp"
 
 namespace rift {
