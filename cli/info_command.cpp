@@ -27,18 +27,8 @@ CLI::App* add_info_command(CLI::App& app, InfoOptions& options) {
 int run_info(const InfoOptions& options) {
   AssemblyReport report;
   const GMap map = load_map(options.mesh, &report);
-  if (report.reoriented_tetrahedra > 0) {
-    fmt::print(stderr, "{}: warning: {} inverted tetrahedra were reoriented\n", options.mesh,
-               report.reoriented_tetrahedra);
-  }
-  if (report.flat_tetrahedra > 0) {
-    fmt::print(stderr, "{}: warning: {} tetrahedra have zero volume\n", options.mesh,
-               report.flat_tetrahedra);
-  }
-  if (report.nonmanifold_shared > 0) {
-    fmt::print(stderr, "{}: warning: {} {} shared by more than two elements were left unsewn\n",
-               options.mesh, report.nonmanifold_shared, map.dimension() == 3 ? "faces" : "edges");
-  }
+  for (const std::string& warning : assembly_warnings(report, map.dimension()))
+    fmt::print(stderr, "{}: warning: {}\n", options.mesh, warning);
   const MapStatistics stats = compute_statistics(map);
   fmt::print("{}\n", options.json ? stats.to_json() : stats.to_line());
   return 0;

@@ -52,6 +52,10 @@ int run_run(const RunOptions& options, const PackRegistry& packs) {
   const Scene scene = read_scene(options.scene, packs.catalog());
   SetupReport setup;
   std::unique_ptr<Simulation> sim = build_simulation(scene, packs, {options.check}, &setup);
+  for (const std::string& warning : assembly_warnings(setup.assembly, sim->map().dimension()))
+    fmt::print(stderr, "{}: warning: {}\n", scene.mesh.source, warning);
+  for (const std::string& warning : setup.warnings)
+    fmt::print(stderr, "{}: warning: {}\n", options.scene, warning);
   const std::int64_t steps = options.steps.value_or(scene.steps);
 
   OutputConfig config;
@@ -62,6 +66,7 @@ int run_run(const RunOptions& options, const PackRegistry& packs) {
            scene.output.formats.end();
   };
   config.vtu = wants("vtu");
+  config.vtu_encoding = scene.output.vtu_ascii ? VtuEncoding::kAscii : VtuEncoding::kAppendedBinary;
   config.obj = wants("obj");
   config.png = wants("png");
   config.png_every = scene.output.png_every > 0 ? scene.output.png_every : 1;

@@ -17,6 +17,7 @@
 #include <CGAL/Generalized_map.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -290,6 +291,31 @@ RIFT_GRID_BENCHMARK(BM_CgalPosition_BuildSweep);
 RIFT_GRID_BENCHMARK(BM_Rift_Sweep);
 RIFT_GRID_BENCHMARK(BM_CgalBare_Sweep);
 RIFT_GRID_BENCHMARK(BM_CgalPosition_Sweep);
+
+// One polygon of N vertices: assembly must cost the same per dart as a grid
+// (it was quadratic in the polygon's size: 12 s for `rift info` at 300,000).
+// Compare the "time_per_dart" counter across sizes and with BM_Rift_Build.
+void BM_Rift_BuildOnePolygon(benchmark::State& state) {
+  const auto n = static_cast<std::uint32_t>(state.range(0));
+  rift::MeshData mesh;
+  std::vector<std::uint32_t> ids(n);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const double a = 2 * 3.141592653589793 * k / n;
+    mesh.points.emplace_back(std::cos(a), std::sin(a), 0);
+    ids[k] = k;
+  }
+  mesh.add_element(rift::ElementType::Polygon, ids.begin(), ids.end());
+  for (auto _ : state)
+    benchmark::DoNotOptimize(rift_build(mesh));
+  state.counters["time_per_dart"] = benchmark::Counter(
+      2.0 * n, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_Rift_BuildOnePolygon)
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->Arg(300'000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 

@@ -66,7 +66,7 @@ TEST(NonManifold, InvertedTetrahedraAreReorientedAndCounted) {
   AssemblyReport report;
   EXPECT_EQ(read_counts(write_temp("inverted.mesh", text), &report),
             (Counts{48, 5, 9, 7, 2, 1, 6}));
-  EXPECT_EQ(report.reoriented_tetrahedra, 1u);
+  EXPECT_EQ(report.reoriented_solids, 1u);
 }
 
 }  // namespace

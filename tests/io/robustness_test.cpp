@@ -9,6 +9,7 @@
 #include "io_test_support.hpp"
 #include "rift/io/readers.hpp"
 #include "shapes.hpp"
+#include "shared_test_data.hpp"
 
 namespace rift::test {
 namespace {
@@ -101,9 +102,7 @@ TEST(Robustness, RandomByteDamageToTheSmallFiles) {
 }
 
 TEST(Robustness, PrefixesOfTheSharedMeshes) {
-  if (shared_mesh("liver.msh").empty()) {
-    GTEST_SKIP() << "shared test meshes not found at " << RIFT_SHARED_MESHES;
-  }
+  RIFT_EXPECT_SHARED_MESHES(!shared_mesh("liver.msh").empty());
   for (const char* file : {"liver.msh", "liver.obj", "cube_low_res.msh", "msh4_cube.msh",
                            "square3.msh", "triangleGrid_10_10.obj", "cube.mesh"}) {
     std::ifstream in(shared_mesh(file), std::ios::binary);

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "io_test_support.hpp"
+#include "shared_test_data.hpp"
 
 namespace rift::test {
 namespace {
@@ -47,9 +48,7 @@ class SharedMeshes : public testing::TestWithParam<SharedMesh> {};
 TEST_P(SharedMeshes, CountsMatchTheElementListsAndTheGeometry) {
   const SharedMesh& info = GetParam();
   const std::string path = shared_mesh(info.file);
-  if (path.empty()) {
-    GTEST_SKIP() << "shared test meshes not found at " << RIFT_SHARED_MESHES;
-  }
+  RIFT_EXPECT_SHARED_MESHES(!path.empty());
   const MeshData mesh = read_mesh_file(path);
   EXPECT_EQ(mesh.dimension, info.dimension);
   if (info.points > 0) {
@@ -77,7 +76,7 @@ TEST_P(SharedMeshes, CountsMatchTheElementListsAndTheGeometry) {
         ++negative;
       }
     }
-    EXPECT_EQ(report.reoriented_tetrahedra, negative);
+    EXPECT_EQ(report.reoriented_solids, negative);
   }
   if (!info.box) return;
 
@@ -147,7 +146,7 @@ INSTANTIATE_TEST_SUITE_P(All, SharedMeshes, testing::ValuesIn(kMeshes),
 // two triangles.
 TEST(SharedMeshesClosedForm, TriangleGridOfTenByTen) {
   const std::string path = shared_mesh("triangleGrid_10_10.obj");
-  if (path.empty()) GTEST_SKIP() << "shared test meshes not found at " << RIFT_SHARED_MESHES;
+  RIFT_EXPECT_SHARED_MESHES(!path.empty());
   const std::size_t n = 10, cells = (n - 1) * (n - 1);
   const Counts want{6 * 2 * cells, n * n, 2 * n * (n - 1) + cells, 2 * cells, 0, 1, 4 * (n - 1)};
   EXPECT_EQ(read_counts(path), want);

@@ -52,7 +52,7 @@ TEST(SmallMeshes, EveryShapeInEveryFormatHasItsHandCounts) {
       const GMap map = assemble_gmap(mesh, &report);
       EXPECT_EQ(map.check_validity(), std::vector<std::string>{});
       EXPECT_EQ(counts_of(map), shape.expected);
-      EXPECT_EQ(report.reoriented_tetrahedra, 0u);
+      EXPECT_EQ(report.reoriented_solids, 0u);
       EXPECT_EQ(report.nonmanifold_shared, 0u);
     }
   }

@@ -49,7 +49,7 @@ TEST(Vtu, ClothParsesWithCountsAndArrays) {
   const auto dir = fresh_folder();
   GMap map = cloth_with_velocity();
   const FrameMesh frame = extract_frame_mesh(map);
-  VtuWriter writer;
+  VtuWriter writer(VtuEncoding::kAscii);
   writer.write(frame, dir / "cloth.vtu", 0.25);
 
   pugi::xml_document doc;
@@ -88,7 +88,7 @@ TEST(Vtu, RealsReadBackExactly) {
   const auto dir = fresh_folder();
   GMap map = cloth_with_velocity();
   const FrameMesh frame = extract_frame_mesh(map);
-  VtuWriter writer;
+  VtuWriter writer(VtuEncoding::kAscii);
   writer.write(frame, dir / "exact.vtu", 0);
   pugi::xml_document doc;
   ASSERT_TRUE(doc.load_file((dir / "exact.vtu").c_str()));
@@ -102,7 +102,7 @@ TEST(Vtu, RealsReadBackExactly) {
 TEST(Vtu, TetBlockWritesTetraCells) {
   const auto dir = fresh_folder();
   const FrameMesh frame = extract_frame_mesh(assemble_gmap(make_block(BlockKind::Tet, 2, 2, 2)));
-  VtuWriter().write(frame, dir / "block.vtu", 0);
+  VtuWriter(VtuEncoding::kAscii).write(frame, dir / "block.vtu", 0);
   pugi::xml_document doc;
   ASSERT_TRUE(doc.load_file((dir / "block.vtu").c_str()));
   const auto piece = piece_of(doc);
@@ -116,7 +116,7 @@ TEST(Vtu, TetBlockWritesTetraCells) {
 TEST(Vtu, SplitVertexIsOneMorePointInTheFile) {
   const auto dir = fresh_folder();
   GMap map = quad_cloth(10, 10);
-  VtuWriter writer;
+  VtuWriter writer(VtuEncoding::kAscii);
   writer.write(extract_frame_mesh(map), dir / "a.vtu", 0);
   const Dart d = test::sewn_dart_on_edge(map, Vec3(0, 0.3, 0), Vec3(0.1, 0.3, 0));
   ASSERT_NE(d, kNoDart);
@@ -139,7 +139,7 @@ TEST(Vtu, UnwritableFolderIsAnOutputErrorNamingThePath) {
   }
   const auto target = dir / "plain_file" / "frame_000000.vtu";
   try {
-    VtuWriter().write(extract_frame_mesh(quad_cloth(2, 2)), target, 0);
+    VtuWriter(VtuEncoding::kAscii).write(extract_frame_mesh(quad_cloth(2, 2)), target, 0);
     FAIL() << "no exception";
   } catch (const OutputError& e) {
     EXPECT_NE(std::string(e.what()).find("plain_file"), std::string::npos) << e.what();
@@ -157,7 +157,7 @@ TEST(Pvd, ListsEveryFrameWrittenSoFarWithItsTime) {
     ASSERT_TRUE(empty.load_file((dir / "run.pvd").c_str()));
     EXPECT_FALSE(empty.child("VTKFile").child("Collection").child("DataSet"));
   }
-  VtuWriter vtu;
+  VtuWriter vtu(VtuEncoding::kAscii);
   FrameExtractor extractor;
   const double times[] = {0.0, 0.01, 0.02};
   for (std::size_t k = 0; k < 3; ++k) {

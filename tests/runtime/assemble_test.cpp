@@ -71,7 +71,7 @@ TEST(Assemble, InvertedTetrahedronIsReoriented) {
   m.add_element(ElementType::Tetra, {0, 2, 1, 3}, 7);
   AssemblyReport report;
   GMap map = assemble_gmap(m, &report);
-  EXPECT_EQ(report.reoriented_tetrahedra, 1u);
+  EXPECT_EQ(report.reoriented_solids, 1u);
   EXPECT_TRUE(map.is_valid());
   EXPECT_EQ(compute_statistics(map).faces, 4u);
 }

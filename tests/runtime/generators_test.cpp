@@ -110,8 +110,8 @@ INSTANTIATE_TEST_SUITE_P(Sizes, BlockCounts,
 TEST(Generators, TetBlockIsPositivelyOriented) {
   AssemblyReport report;
   assemble_gmap(make_block(BlockKind::Tet, 3, 2, 2), &report);
-  EXPECT_EQ(report.reoriented_tetrahedra, 0u);
-  EXPECT_EQ(report.flat_tetrahedra, 0u);
+  EXPECT_EQ(report.reoriented_solids, 0u);
+  EXPECT_EQ(report.flat_elements, 0u);
 }
 
 TEST(Generators, SpellingsAndTheirErrors) {

@@ -48,7 +48,7 @@ MeshData read_obj(const std::string& source, std::string_view text) {
           in.fail(key.line, "vertex " + std::to_string(mesh.points.size() + 1) + " has " +
                                 std::to_string(c) + " coordinates, expected 3");
         }
-        p[c] = in.to_real(t, "a vertex coordinate");
+        p[c] = in.to_coordinate(t, "a vertex coordinate");
       }
       mesh.points.push_back(p);
       in.skip_line();  // an optional w or a vertex colour

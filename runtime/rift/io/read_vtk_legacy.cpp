@@ -135,13 +135,13 @@ class VtkLegacyReader {
     if (!mesh_.points.empty()) in_.fail(key.line, "a second POINTS section");
     const std::size_t n = in_.count("the number of points");
     in_.expect("the data type of the points");
-    mesh_.points.reserve(in_.reserve_limit(n));
+    mesh_.points.reserve(in_.reserve_limit(n, 6));
     for (std::size_t k = 0; k < n; ++k) {
       Vec3 p;
       for (int c = 0; c < 3; ++c) {
-        p[c] =
-            in_.to_real(value(key, 3 * k + static_cast<std::size_t>(c), 3 * n),
-                        "coordinate " + std::to_string(c + 1) + " of point " + std::to_string(k));
+        p[c] = in_.to_coordinate(
+            value(key, 3 * k + static_cast<std::size_t>(c), 3 * n),
+            "coordinate " + std::to_string(c + 1) + " of point " + std::to_string(k));
       }
       mesh_.points.push_back(p);
     }

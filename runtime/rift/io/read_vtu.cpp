@@ -1,32 +1,177 @@
-// VTK XML unstructured grids (.vtu) with ASCII data arrays. The XML is parsed
-// by pugixml; the text of each DataArray goes through the same TextCursor as
-// the other formats, started at the array's line so messages name file lines.
+// VTK XML unstructured grids (.vtu). The XML is parsed by pugixml. A data array
+// is ASCII text, inline base64 (format="binary") or a slice of the appended
+// data (format="appended", raw bytes or base64), optionally zlib-compressed
+// (vtk_binary.hpp decodes those). ASCII arrays go through the same TextCursor
+// as the other formats, started at the array's line, so messages name file
+// lines; binary arrays are reported at their DataArray's line.
+//
+// Raw appended data is not XML (any byte may occur in it), so the document is
+// cut at <AppendedData> and only the part before it goes to the XML parser.
 #include <pugixml.hpp>
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
 #include <string>
 #include <vector>
 
 #include "rift/io/readers.hpp"
+#include "rift/io/vtk_binary.hpp"
 #include "rift/io/vtk_cells.hpp"
 
 namespace rift::io {
 
 namespace {
 
+struct ScalarType {
+  const char* name;
+  int bytes;
+  bool real;
+  bool is_signed;
+};
+
+constexpr ScalarType kScalarTypes[] = {{"Int8", 1, false, true},   {"UInt8", 1, false, false},
+                                       {"Int16", 2, false, true},  {"UInt16", 2, false, false},
+                                       {"Int32", 4, false, true},  {"UInt32", 4, false, false},
+                                       {"Int64", 8, false, true},  {"UInt64", 8, false, false},
+                                       {"Float32", 4, true, true}, {"Float64", 8, true, true}};
+
+const ScalarType* scalar_type(std::string_view name) {
+  for (const ScalarType& t : kScalarTypes) {
+    if (name == t.name) return &t;
+  }
+  return nullptr;
+}
+
+// The values of one DataArray, ASCII or binary, handed out in order.
+class ArrayValues {
+ public:
+  ArrayValues(TextCursor ascii, std::string what, int line)
+      : text_(std::move(ascii)), what_(std::move(what)), line_(line) {}
+  ArrayValues(TextCursor messages, std::string what, int line, std::vector<std::uint8_t> bytes,
+              const ScalarType& type, bool big_endian)
+      : text_(std::move(messages)),
+        what_(std::move(what)),
+        line_(line),
+        binary_(true),
+        bytes_(std::move(bytes)),
+        type_(&type),
+        big_endian_(big_endian) {
+    if (bytes_.size() % static_cast<std::size_t>(type.bytes) != 0) {
+      text_.fail(line_, "DataArray " + what_ + " holds " + std::to_string(bytes_.size()) +
+                            " bytes, not a whole number of " + type.name + " values");
+    }
+  }
+
+  const TextCursor& cursor() const { return text_; }
+  /// Line of the last value handed out (the array's line for binary data).
+  int last_line() const { return last_line_; }
+
+  double coordinate(std::size_t done, std::size_t announced, const std::string& what) {
+    if (!binary_) return text_.to_coordinate(token(done, announced), what);
+    const double v = binary_value(done, announced).real;
+    if (!std::isfinite(v)) text_.fail(line_, what + " is not a finite number");
+    if (std::abs(v) > kMaxCoordinate) {
+      text_.fail(line_, what + " (" + std::to_string(v) +
+                            ") is beyond +-1e30, the largest coordinate rift accepts; rescale "
+                            "the mesh");
+    }
+    return v;
+  }
+
+  std::int64_t integer(std::size_t done, std::size_t announced, const char* what) {
+    if (!binary_) return text_.to_integer(token(done, announced), what);
+    if (type_->real) {
+      text_.fail(line_,
+                 "DataArray " + what_ + " has type " + type_->name + ", expected an integer type");
+    }
+    const Value v = binary_value(done, announced);
+    if (v.too_large) {
+      text_.fail(line_, std::string(what) + " in DataArray " + what_ + " is out of range");
+    }
+    return v.integer;
+  }
+
+  void no_more(std::size_t announced) {
+    const bool extra =
+        binary_ ? next_ * static_cast<std::size_t>(type_->bytes) < bytes_.size() : !text_.at_end();
+    if (extra) {
+      text_.fail(binary_ ? line_ : text_.peek().line,
+                 "DataArray " + what_ + " holds more than the " + std::to_string(announced) +
+                     " values expected");
+    }
+  }
+
+ private:
+  struct Value {
+    double real = 0;
+    std::int64_t integer = 0;
+    bool too_large = false;
+  };
+
+  [[noreturn]] void short_of(int line, std::size_t done, std::size_t announced) const {
+    text_.fail(line, "DataArray " + what_ + " (line " + std::to_string(line_) + ") holds " +
+                         std::to_string(done) + " values, " + std::to_string(announced) +
+                         " expected");
+  }
+
+  Token token(std::size_t done, std::size_t announced) {
+    const Token t = text_.next();
+    if (t.empty()) short_of(t.line, done, announced);
+    last_line_ = t.line;
+    return t;
+  }
+
+  Value binary_value(std::size_t done, std::size_t announced) {
+    const auto size = static_cast<std::size_t>(type_->bytes);
+    if ((next_ + 1) * size > bytes_.size()) short_of(line_, done, announced);
+    std::uint64_t raw = 0;
+    for (std::size_t k = 0; k < size; ++k) {
+      const std::size_t byte = big_endian_ ? k : size - 1 - k;
+      raw = (raw << 8) | bytes_[next_ * size + byte];
+    }
+    ++next_;
+    last_line_ = line_;
+    Value v;
+    if (type_->real) {
+      v.real = size == 4
+                   ? static_cast<double>(std::bit_cast<float>(static_cast<std::uint32_t>(raw)))
+                   : std::bit_cast<double>(raw);
+      return v;
+    }
+    const int bits = 8 * type_->bytes;
+    if (type_->is_signed && bits < 64 && (raw >> (bits - 1)) != 0) {
+      raw |= ~std::uint64_t{0} << bits;  // sign extension
+    }
+    if (!type_->is_signed && raw > static_cast<std::uint64_t>(INT64_MAX)) v.too_large = true;
+    v.integer = static_cast<std::int64_t>(raw);
+    v.real = static_cast<double>(v.integer);
+    return v;
+  }
+
+  TextCursor text_;
+  std::string what_;
+  int line_;
+  int last_line_ = 0;
+  bool binary_ = false;
+  std::vector<std::uint8_t> bytes_;
+  const ScalarType* type_ = nullptr;
+  bool big_endian_ = false;
+  std::size_t next_ = 0;
+};
+
 class VtuReader {
  public:
   VtuReader(const std::string& source, std::string_view text) : source_(source), text_(text) {
     mesh_.source = source;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-      if (text[i] == '\n') line_starts_.push_back(i + 1);
-    }
   }
 
   MeshData read() {
+    std::string xml = split_appended_data();
     pugi::xml_document doc;
     const pugi::xml_parse_result parsed =
-        doc.load_buffer(text_.data(), text_.size(), pugi::parse_default, pugi::encoding_utf8);
+        doc.load_buffer_inplace(xml.data(), xml.size(), pugi::parse_default, pugi::encoding_utf8);
     if (!parsed) {
       fail(line_at(parsed.offset), std::string("malformed XML: ") + parsed.description());
     }
@@ -37,6 +182,7 @@ class VtuReader {
       fail(line_of(root),
            "unsupported VTK XML dataset type '" + type + "' (rift reads UnstructuredGrid)");
     }
+    read_encoding(root);
     const pugi::xml_node grid = root.child("UnstructuredGrid");
     if (!grid) fail(line_of(root), "the VTKFile has no UnstructuredGrid element");
     bool any = false;
@@ -54,13 +200,71 @@ class VtuReader {
     throw MeshError(source_, line, problem);
   }
 
+  // Returns the XML part of the file and records where the appended data is.
+  std::string split_appended_data() {
+    const std::size_t tag = text_.find("<AppendedData");
+    if (tag == std::string_view::npos) return std::string(text_);
+    const int line = line_at(static_cast<std::ptrdiff_t>(tag));
+    const std::size_t tag_end = text_.find('>', tag);
+    if (tag_end == std::string_view::npos) fail(line, "the <AppendedData> tag is not closed");
+    const std::string_view tag_text = text_.substr(tag, tag_end - tag);
+    if (tag_text.find("encoding=\"raw\"") != std::string_view::npos) {
+      appended_base64_ = false;
+    } else if (tag_text.find("encoding=\"base64\"") != std::string_view::npos) {
+      appended_base64_ = true;
+    } else {
+      fail(line, "<AppendedData> needs encoding=\"raw\" or encoding=\"base64\"");
+    }
+    std::size_t mark = tag_end + 1;
+    while (mark < text_.size() && (text_[mark] == ' ' || text_[mark] == '\n' ||
+                                   text_[mark] == '\r' || text_[mark] == '\t'))
+      ++mark;
+    if (mark >= text_.size() || text_[mark] != '_') {
+      fail(line, "the appended data must start with '_' after <AppendedData>");
+    }
+    appended_ = text_.substr(mark + 1);
+    has_appended_ = true;
+    return std::string(text_.substr(0, tag)) + "</VTKFile>";
+  }
+
+  void read_encoding(const pugi::xml_node root) {
+    const std::string header = root.attribute("header_type").as_string("UInt32");
+    if (header == "UInt32") {
+      layout_.header_bytes = 4;
+    } else if (header == "UInt64") {
+      layout_.header_bytes = 8;
+    } else {
+      fail(line_of(root), "unknown header_type '" + header + "' (UInt32 or UInt64)");
+    }
+    const std::string order = root.attribute("byte_order").as_string("LittleEndian");
+    if (order != "LittleEndian" && order != "BigEndian") {
+      fail(line_of(root), "unknown byte_order '" + order + "' (LittleEndian or BigEndian)");
+    }
+    layout_.big_endian = order == "BigEndian";
+    const std::string compressor = root.attribute("compressor").value();
+    if (compressor == "vtkZLibDataCompressor") {
+      layout_.compressed = true;
+    } else if (!compressor.empty()) {
+      fail(line_of(root), "compressor '" + compressor +
+                              "' is not supported (rift reads vtkZLibDataCompressor or none)");
+    }
+  }
+
+  // Lines are counted on demand from the last answer: the arrays are visited
+  // in file order, so the counting is linear overall, and a file of a hundred
+  // million line ends needs no table of them.
   int line_at(std::ptrdiff_t offset) const {
     if (offset < 0) return 0;  // pugixml could not tell
-    const auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(),
-                                     static_cast<std::size_t>(offset));
-    // line_starts_ holds the offset where each line begins; the number of
-    // line starts at or before `offset` is its 1-based line.
-    return static_cast<int>(it - line_starts_.begin());
+    const auto at = std::min(static_cast<std::size_t>(offset), text_.size());
+    if (at < counted_to_) {
+      counted_to_ = 0;
+      counted_line_ = 1;
+    }
+    counted_line_ +=
+        static_cast<int>(std::count(text_.begin() + static_cast<std::ptrdiff_t>(counted_to_),
+                                    text_.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+    counted_to_ = at;
+    return counted_line_;
   }
   int line_of(const pugi::xml_node node) const { return line_at(node.offset_debug()); }
 
@@ -72,40 +276,61 @@ class VtuReader {
     return in.to_count(Token{a.value(), line}, name);
   }
 
-  // A cursor over the values of an ASCII DataArray.
-  TextCursor values_of(const pugi::xml_node array, const std::string& what) const {
+  ArrayValues values_of(const pugi::xml_node array, const std::string& what) const {
     const int line = line_of(array);
     if (!array) fail(line, "missing DataArray: " + what);
     const std::string format = array.attribute("format").value();
-    if (format == "binary" || format == "appended") {
-      fail(line, "DataArray " + what + " is in " + format +
-                     " format, which rift does not read; save the file with ASCII data");
+    if (format == "ascii") {
+      const pugi::xml_node text = array.first_child();
+      if (!text || (text.type() != pugi::node_pcdata && text.type() != pugi::node_cdata)) {
+        return ArrayValues(TextCursor(source_, {}, line), what, line);
+      }
+      return ArrayValues(TextCursor(source_, text.value(), line_of(text)), what, line);
     }
-    if (format != "ascii") fail(line, "DataArray " + what + " has unknown format '" + format + "'");
-    const pugi::xml_node text = array.first_child();
-    if (!text || (text.type() != pugi::node_pcdata && text.type() != pugi::node_cdata)) {
-      return TextCursor(source_, {}, line);
+    const std::string type_name = array.attribute("type").value();
+    const ScalarType* type = scalar_type(type_name);
+    if (!type) {
+      fail(line, "DataArray " + what + " has unknown type '" + type_name +
+                     "' (Int8 to UInt64, Float32 or Float64)");
     }
-    return TextCursor(source_, text.value(), line_of(text));
-  }
-
-  Token value(TextCursor& in, const pugi::xml_node array, const std::string& what, std::size_t done,
-              std::size_t announced) const {
-    const Token t = in.next();
-    if (t.empty()) {
-      in.fail(t.line, "DataArray " + what + " (line " + std::to_string(line_of(array)) +
-                          ") holds " + std::to_string(done) + " values, " +
-                          std::to_string(announced) + " expected");
+    VtkBinaryLayout layout = layout_;
+    std::string_view data;
+    if (format == "binary") {
+      layout.base64 = true;
+      const pugi::xml_node text = array.first_child();
+      if (text && (text.type() == pugi::node_pcdata || text.type() == pugi::node_cdata)) {
+        data = text.value();
+      }
+    } else if (format == "appended") {
+      if (!has_appended_) {
+        fail(line,
+             "DataArray " + what + " is in appended format, but the file has no <AppendedData>");
+      }
+      layout.base64 = appended_base64_;
+      const pugi::xml_attribute offset_attribute = array.attribute("offset");
+      if (!offset_attribute) fail(line, "DataArray " + what + " is appended but has no offset");
+      const TextCursor in(source_, {}, line);
+      const std::int64_t offset =
+          in.to_integer(Token{offset_attribute.value(), line}, "the offset");
+      if (offset < 0 || static_cast<std::uint64_t>(offset) >= appended_.size()) {
+        fail(line, "DataArray " + what + " has offset " + std::to_string(offset) +
+                       ", outside the appended data (" + std::to_string(appended_.size()) +
+                       " bytes)");
+      }
+      data = appended_.substr(static_cast<std::size_t>(offset));
+    } else {
+      fail(line, "DataArray " + what + " has unknown format '" + format +
+                     "' (ascii, binary or appended)");
     }
-    return t;
-  }
-
-  void no_more(TextCursor& in, const std::string& what, std::size_t announced) const {
-    const Token extra = in.next();
-    if (!extra.empty()) {
-      in.fail(extra.line, "DataArray " + what + " holds more than the " +
-                              std::to_string(announced) + " values expected");
+    std::vector<std::uint8_t> bytes;
+    try {
+      bytes = decode_vtk_array(data, layout);
+    } catch (const VtkDataError& e) {
+      fail(line, "DataArray " + what + " (" + format + (layout.compressed ? ", zlib" : "") +
+                     "): " + e.what());
     }
+    return ArrayValues(TextCursor(source_, {}, line), what, line, std::move(bytes), *type,
+                       layout.big_endian);
   }
 
   static pugi::xml_node named_array(const pugi::xml_node parent, const char* name) {
@@ -124,18 +349,17 @@ class VtuReader {
     if (point_array && components != "3") {
       fail(line_of(point_array), "Points have " + components + " components, expected 3");
     }
-    TextCursor coords = values_of(point_array, "Points");
+    ArrayValues coords = values_of(point_array, "Points");
     for (std::size_t k = 0; k < n_points; ++k) {
       Vec3 p;
       for (int c = 0; c < 3; ++c) {
-        const Token t =
-            value(coords, point_array, "Points", 3 * k + static_cast<std::size_t>(c), 3 * n_points);
-        p[c] = coords.to_real(
-            t, "coordinate " + std::to_string(c + 1) + " of point " + std::to_string(k));
+        p[c] = coords.coordinate(
+            3 * k + static_cast<std::size_t>(c), 3 * n_points,
+            "coordinate " + std::to_string(c + 1) + " of point " + std::to_string(k));
       }
       mesh_.points.push_back(p);
     }
-    no_more(coords, "Points", 3 * n_points);
+    coords.no_more(3 * n_points);
 
     const pugi::xml_node cells = piece.child("Cells");
     if (!cells) {
@@ -150,27 +374,30 @@ class VtuReader {
     }
 
     // VTU offsets are end offsets: cell c ends at offsets[c].
-    TextCursor offs = values_of(offsets_array, "offsets");
+    ArrayValues offs = values_of(offsets_array, "offsets");
     std::vector<std::size_t> ends;
-    ends.reserve(offs.reserve_limit(n_cells));
+    ends.reserve(offs.cursor().reserve_limit(n_cells));
     for (std::size_t c = 0; c < n_cells; ++c) {
-      const Token t = value(offs, offsets_array, "offsets", c, n_cells);
-      const std::size_t end = offs.to_count(t, "an offset");
-      if (end < (ends.empty() ? 0 : ends.back())) {
-        offs.fail(t.line, "offset " + std::to_string(end) + " of cell " + std::to_string(c) +
-                              " is smaller than the one before");
+      const std::int64_t end = offs.integer(c, n_cells, "an offset");
+      if (end < 0 || static_cast<std::size_t>(end) < (ends.empty() ? 0 : ends.back())) {
+        offs.cursor().fail(offs.last_line(), "offset " + std::to_string(end) + " of cell " +
+                                                 std::to_string(c) +
+                                                 " is smaller than the one before");
       }
-      ends.push_back(end);
+      ends.push_back(static_cast<std::size_t>(end));
     }
-    no_more(offs, "offsets", n_cells);
+    offs.no_more(n_cells);
 
-    TextCursor types = values_of(types_array, "types");
-    std::vector<Token> type_tokens;
-    for (std::size_t c = 0; c < n_cells; ++c)
-      type_tokens.push_back(value(types, types_array, "types", c, n_cells));
-    no_more(types, "types", n_cells);
+    ArrayValues types = values_of(types_array, "types");
+    std::vector<std::pair<std::int64_t, int>> type_codes;  // code, line
+    type_codes.reserve(ends.size());
+    for (std::size_t c = 0; c < n_cells; ++c) {
+      const std::int64_t code = types.integer(c, n_cells, "a cell type");
+      type_codes.emplace_back(code, types.last_line());
+    }
+    types.no_more(n_cells);
 
-    TextCursor conn = values_of(conn_array, "connectivity");
+    ArrayValues conn = values_of(conn_array, "connectivity");
     const std::size_t total = ends.empty() ? 0 : ends.back();
     std::vector<std::uint32_t> ids;
     std::size_t read = 0;
@@ -178,18 +405,25 @@ class VtuReader {
       ids.clear();
       int line = 0;
       for (; read < ends[c]; ++read) {
-        const Token t = value(conn, conn_array, "connectivity", read, total);
-        if (line == 0) line = t.line;
-        ids.push_back(static_cast<std::uint32_t>(base + vtk_point_id(conn, t, n_points, c)));
+        const std::int64_t id = conn.integer(read, total, "a point id");
+        if (line == 0) line = conn.last_line();
+        ids.push_back(static_cast<std::uint32_t>(
+            base + vtk_point_id(conn.cursor(), id, conn.last_line(), n_points, c)));
       }
-      add_vtk_cell(types, elements_, type_tokens[c], ids, line ? line : type_tokens[c].line, c);
+      const auto [code, type_line] = type_codes[c];
+      add_vtk_cell(types.cursor(), elements_, code, type_line, ids, line ? line : type_line, c);
     }
-    no_more(conn, "connectivity", total);
+    conn.no_more(total);
   }
 
   std::string source_;
   std::string_view text_;
-  std::vector<std::size_t> line_starts_{0};
+  std::string_view appended_;
+  bool has_appended_ = false;
+  bool appended_base64_ = false;
+  VtkBinaryLayout layout_;
+  mutable std::size_t counted_to_ = 0;
+  mutable int counted_line_ = 1;
   MeshData mesh_;
   ElementCollector elements_;
 };

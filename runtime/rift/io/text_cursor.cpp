@@ -39,7 +39,9 @@ TextCursor::TextCursor(std::string source, std::string_view text, int first_line
       text_(text),
       line_(first_line),
       last_line_(first_line),
-      comment_(comment) {}
+      comment_(comment) {
+  if (first_line == 1 && text_.starts_with("\xEF\xBB\xBF")) pos_ = 3;
+}
 
 void TextCursor::skip_blanks(bool cross_lines) {
   while (pos_ < text_.size()) {
@@ -153,6 +155,48 @@ double TextCursor::to_real(Token token, std::string_view what) const {
   return value;
 }
 
+double TextCursor::to_coordinate(Token token, std::string_view what) const {
+  const double value = to_real(token, what);
+  if (std::abs(value) > kMaxCoordinate) {
+    fail(token.line, std::string(what) + " " + quote_text(token.text) +
+                         " is beyond +-1e30, the largest coordinate rift accepts (areas and "
+                         "volumes would overflow); rescale the mesh");
+  }
+  return value;
+}
+
+double TextCursor::check_coordinate(double value, int line, std::string_view what) const {
+  if (!std::isfinite(value)) fail(line, std::string(what) + " is not a finite number");
+  if (std::abs(value) > kMaxCoordinate) {
+    fail(line, std::string(what) + " (" + std::to_string(value) +
+                   ") is beyond +-1e30, the largest coordinate rift accepts (areas and volumes "
+                   "would overflow); rescale the mesh");
+  }
+  return value;
+}
+
+std::string_view TextCursor::take_bytes(std::size_t n, std::string_view what) {
+  if (text_.size() - pos_ < n) {
+    fail(line_, "unexpected end of file in binary data at byte " + std::to_string(pos_) +
+                    ", expected " + std::string(what));
+  }
+  const std::string_view bytes = text_.substr(pos_, n);
+  line_ += static_cast<int>(std::count(bytes.begin(), bytes.end(), '\n'));
+  last_line_ = line_;
+  pos_ += n;
+  return bytes;
+}
+
+bool TextCursor::skip_past(std::string_view marker) {
+  const std::size_t at = text_.find(marker, pos_);
+  const std::size_t end = at == std::string_view::npos ? text_.size() : at + marker.size();
+  line_ += static_cast<int>(std::count(text_.begin() + static_cast<std::ptrdiff_t>(pos_),
+                                       text_.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
+  last_line_ = line_;
+  pos_ = end;
+  return at != std::string_view::npos;
+}
+
 std::int64_t TextCursor::to_integer(Token token, std::string_view what) const {
   const std::string_view text = without_plus(token.text);
   std::int64_t value = 0;
@@ -183,8 +227,9 @@ void TextCursor::fail(int line, const std::string& problem) const {
   throw MeshError(source_, line, problem);
 }
 
-std::size_t TextCursor::reserve_limit(std::size_t announced) const {
-  return std::min(announced, text_.size() / 2 + 1);
+std::size_t TextCursor::reserve_limit(std::size_t announced, std::size_t min_entry_bytes) const {
+  const std::size_t left = text_.size() - std::min(pos_, text_.size());
+  return std::min({announced, left / std::max<std::size_t>(min_entry_bytes, 1) + 1, kMaxReserve});
 }
 
 }  // namespace rift::io

@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "rift/mesh/mesh_data.hpp"
 #include "rift/mesh/mesh_error.hpp"
 
 namespace rift::io {
@@ -24,7 +25,9 @@ class TextCursor {
  public:
   /// `first_line` numbers the first line of `text`, so that a piece of a larger
   /// file (a VTU data array) reports lines of the file. `comment` starts a
-  /// comment that runs to the end of the line ('\0': none).
+  /// comment that runs to the end of the line ('\0': none). A UTF-8 byte-order
+  /// mark at the start of a whole file (first_line 1) is skipped: editors on
+  /// Windows write one, and it is not part of the first token.
   TextCursor(std::string source, std::string_view text, int first_line = 1, char comment = '\0');
 
   const std::string& source() const { return source_; }
@@ -40,6 +43,15 @@ class TextCursor {
   /// What is left of the current line, without its line end, and moves to the
   /// next line. For line-structured headers (a VTK title may be empty).
   Token take_line();
+  /// The next `n` bytes as they are (binary data inside a text file, such as a
+  /// binary Gmsh section), or an error naming `what` and the byte offset.
+  std::string_view take_bytes(std::size_t n, std::string_view what);
+  /// Moves past the next occurrence of `marker`; false (at the end) if none.
+  bool skip_past(std::string_view marker);
+  /// Bytes from the current position to the end of the input.
+  std::size_t bytes_left() const { return text_.size() - pos_; }
+  /// Byte offset of the current position, for messages about binary data.
+  std::size_t offset() const { return pos_; }
   /// True when only whitespace and comments are left.
   bool at_end();
   /// Line of the last token handed out: where a truncated input is reported.
@@ -55,14 +67,23 @@ class TextCursor {
 
   /// A finite real ("nan", "inf" and text are errors).
   double to_real(Token token, std::string_view what) const;
+  /// A real that is a point coordinate: finite and at most kMaxCoordinate in
+  /// magnitude (see mesh_data.hpp).
+  double to_coordinate(Token token, std::string_view what) const;
+  /// The same check for a coordinate read from binary data at `line`.
+  double check_coordinate(double value, int line, std::string_view what) const;
   std::int64_t to_integer(Token token, std::string_view what) const;
   std::size_t to_count(Token token, std::string_view what) const;
 
   /// Throws MeshError(source, line, problem).
   [[noreturn]] void fail(int line, const std::string& problem) const;
-  /// Upper bound for reserve() calls so that a lying count cannot exhaust memory:
-  /// a file of n bytes cannot hold more than n / 2 values.
-  std::size_t reserve_limit(std::size_t announced) const;
+  /// Upper bound for reserve() calls so that a lying count cannot exhaust
+  /// memory: what is left of the file cannot hold more than one entry per
+  /// `min_entry_bytes` bytes, and beyond kMaxReserve entries the vector grows as
+  /// the data is read (geometric growth keeps that linear), so memory follows
+  /// the data actually present, not the header's claim.
+  std::size_t reserve_limit(std::size_t announced, std::size_t min_entry_bytes = 2) const;
+  static constexpr std::size_t kMaxReserve = std::size_t{1} << 20;
 
  private:
   void skip_blanks(bool cross_lines);

@@ -64,18 +64,25 @@ bool fixed_type(std::int64_t code, Fixed& out) {
 }  // namespace
 
 std::uint32_t vtk_point_id(const TextCursor& in, Token id, std::size_t points, std::size_t cell) {
-  const std::int64_t value = in.to_integer(id, "a point id");
+  return vtk_point_id(in, in.to_integer(id, "a point id"), id.line, points, cell);
+}
+
+std::uint32_t vtk_point_id(const TextCursor& in, std::int64_t value, int line, std::size_t points,
+                           std::size_t cell) {
   if (value < 0 || value >= static_cast<std::int64_t>(points)) {
-    in.fail(id.line, "cell " + std::to_string(cell) + " refers to point " + std::to_string(value) +
-                         ", but the file has " + std::to_string(points) +
-                         " points (numbered from 0)");
+    in.fail(line, "cell " + std::to_string(cell) + " refers to point " + std::to_string(value) +
+                      ", but the file has " + std::to_string(points) + " points (numbered from 0)");
   }
   return static_cast<std::uint32_t>(value);
 }
 
 void add_vtk_cell(const TextCursor& in, ElementCollector& out, Token type_token,
                   std::span<const std::uint32_t> ids, int line, std::size_t cell) {
-  const std::int64_t code = in.to_integer(type_token, "a cell type");
+  add_vtk_cell(in, out, in.to_integer(type_token, "a cell type"), type_token.line, ids, line, cell);
+}
+
+void add_vtk_cell(const TextCursor& in, ElementCollector& out, std::int64_t code, int type_line,
+                  std::span<const std::uint32_t> ids, int line, std::size_t cell) {
   const std::string which = "cell " + std::to_string(cell);
   switch (code) {
     case kVertex:
@@ -108,10 +115,10 @@ void add_vtk_cell(const TextCursor& in, ElementCollector& out, Token type_token,
   }
   Fixed f{};
   if (!fixed_type(code, f)) {
-    in.fail(type_token.line, "unknown or unsupported element type " + std::to_string(code) + " (" +
-                                 which +
-                                 "; rift reads linear VTK cells: 1 to 14, lines and points "
-                                 "being ignored)");
+    in.fail(type_line, "unknown or unsupported element type " + std::to_string(code) + " (" +
+                           which +
+                           "; rift reads linear VTK cells: 1 to 14, lines and points "
+                           "being ignored)");
   }
   if (ids.size() != f.points) {
     in.fail(line, which + " (" + f.name + ") has " + std::to_string(ids.size()) +

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <string>
 
 #include "rift/mesh/element_faces.hpp"
@@ -105,7 +106,11 @@ const SolidLayout& layout_of(ElementType type) {
   return layouts[static_cast<int>(type)];
 }
 
-void validate_element(const MeshData& mesh, const MeshElement& e, std::size_t index) {
+// `seen[p]` holds the index of the last element that visited point p, which
+// finds a repeated vertex in one pass however large the element (a single
+// polygon of 300,000 vertices is a valid 2D mesh).
+void validate_element(const MeshData& mesh, const MeshElement& e, std::size_t index,
+                      std::vector<std::uint32_t>& seen) {
   auto fail = [&](const std::string& what) {
     throw MeshError(
         mesh.source, e.source_line,
@@ -120,15 +125,130 @@ void validate_element(const MeshData& mesh, const MeshElement& e, std::size_t in
          (expected == 0 ? std::string("at least 3") : std::to_string(expected)));
   }
   const std::uint32_t* v = mesh.vertices_of(e);
+  const auto stamp = static_cast<std::uint32_t>(index);
   for (std::uint32_t k = 0; k < e.count; ++k) {
     if (v[k] >= mesh.points.size()) {
       fail("refers to vertex " + std::to_string(v[k] + 1) + " but the mesh has " +
            std::to_string(mesh.points.size()) + " vertices");
     }
-    for (std::uint32_t m = 0; m < k; ++m) {
-      if (v[m] == v[k]) fail("repeats vertex " + std::to_string(v[k] + 1));
+    if (seen[v[k]] == stamp) {
+      fail("repeats vertex " + std::to_string(v[k] + 1) +
+           (expected == 0 ? std::string()
+                          : " (a collapsed element: write it as the element it collapses to, "
+                            "a wedge, pyramid or tetrahedron)"));
     }
+    seen[v[k]] = stamp;
   }
+}
+
+// For each corner of a solid in VTK ordering, three neighbours (a, b, c) such
+// that (p_a - p)x(p_b - p).(p_c - p) > 0 when the solid is positively oriented.
+// A pyramid's apex has four neighbours and is left out: its base corners decide.
+struct Corner {
+  std::uint8_t at, a, b, c;
+};
+constexpr Corner kTetraCorners[] = {{0, 1, 2, 3}};
+constexpr Corner kHexaCorners[] = {{0, 1, 3, 4}, {1, 2, 0, 5}, {2, 3, 1, 6}, {3, 0, 2, 7},
+                                   {4, 7, 5, 0}, {5, 4, 6, 1}, {6, 5, 7, 2}, {7, 6, 4, 3}};
+// VTK's wedge has its first triangle's normal pointing out of the element.
+constexpr Corner kWedgeCorners[] = {{0, 2, 1, 3}, {1, 0, 2, 4}, {2, 1, 0, 5},
+                                    {3, 4, 5, 0}, {4, 5, 3, 1}, {5, 3, 4, 2}};
+constexpr Corner kPyramidCorners[] = {{0, 1, 3, 4}, {1, 2, 0, 4}, {2, 3, 1, 4}, {3, 0, 2, 4}};
+
+std::span<const Corner> corners_of(ElementType type) {
+  switch (type) {
+    case ElementType::Tetra:
+      return kTetraCorners;
+    case ElementType::Hexa:
+      return kHexaCorners;
+    case ElementType::Wedge:
+      return kWedgeCorners;
+    case ElementType::Pyramid:
+      return kPyramidCorners;
+    case ElementType::Polygon:
+      break;
+  }
+  return {};
+}
+
+// The vertex order of the mirror image: what turns an inverted solid around.
+void reverse_orientation(ElementType type, std::array<std::uint32_t, 8>& ids) {
+  switch (type) {
+    case ElementType::Tetra:
+      std::swap(ids[1], ids[2]);
+      break;
+    case ElementType::Hexa:
+      std::swap_ranges(ids.begin(), ids.begin() + 4, ids.begin() + 4);
+      break;
+    case ElementType::Wedge:
+      std::swap_ranges(ids.begin(), ids.begin() + 3, ids.begin() + 3);
+      break;
+    case ElementType::Pyramid:
+      std::swap(ids[1], ids[3]);
+      break;
+    case ElementType::Polygon:
+      break;
+  }
+}
+
+enum class Shape { kGood, kFlat, kInverted, kTangled, kTangledMostlyInverted };
+
+// A corner whose triple product is within `tolerance` of zero (relative to the
+// longest edge cubed) is degenerate, not inverted: a hexahedron with a
+// collapsed edge is still a valid solid.
+Shape solid_shape(const MeshData& mesh, ElementType type, const std::array<std::uint32_t, 8>& ids) {
+  constexpr Real kTolerance = 1e-13;
+  Real longest = 0;
+  std::array<Real, 8> det{};
+  const auto corners = corners_of(type);
+  for (std::size_t k = 0; k < corners.size(); ++k) {
+    const Corner& c = corners[k];
+    const Vec3& p = mesh.points[ids[c.at]];
+    const Vec3 a = mesh.points[ids[c.a]] - p;
+    const Vec3 b = mesh.points[ids[c.b]] - p;
+    const Vec3 d = mesh.points[ids[c.c]] - p;
+    longest = std::max({longest, a.squaredNorm(), b.squaredNorm(), d.squaredNorm()});
+    det[k] = a.cross(b).dot(d);
+  }
+  const Real tolerance = kTolerance * longest * std::sqrt(longest);
+  Real sum = 0;  // not the volume, but its sign says which orientation dominates
+  int positive = 0, negative = 0;
+  for (std::size_t k = 0; k < corners.size(); ++k) {
+    sum += det[k];
+    positive += det[k] > tolerance;
+    negative += det[k] < -tolerance;
+  }
+  if (positive > 0 && negative > 0) {
+    return sum < 0 ? Shape::kTangledMostlyInverted : Shape::kTangled;
+  }
+  if (positive == 0 && negative == 0) return Shape::kFlat;
+  return negative > 0 ? Shape::kInverted : Shape::kGood;
+}
+
+// Newell's normal: twice the vector area of a polygon, planar or not.
+bool polygon_is_flat(const MeshData& mesh, const std::uint32_t* v, std::uint32_t count) {
+  Vec3 twice_area = Vec3::Zero();
+  Real longest = 0;
+  // Relative to the first vertex, so that a small polygon far from the origin
+  // does not lose its area to cancellation.
+  const Vec3& origin = mesh.points[v[0]];
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const Vec3 p = mesh.points[v[i]] - origin;
+    const Vec3 q = mesh.points[v[(i + 1) % count]] - origin;
+    twice_area += p.cross(q);
+    longest = std::max(longest, (q - p).squaredNorm());
+  }
+  return twice_area.norm() <= 2e-13 * longest;
+}
+
+void note(std::size_t& count, ElementExample& first, const MeshElement& e, std::size_t index) {
+  if (count++ == 0) first = {index, e.source_line, e.type};
+}
+
+std::string example(const ElementExample& e) {
+  std::string s = std::string(element_name(e.type)) + " " + std::to_string(e.index + 1);
+  if (e.line > 0) s += ", line " + std::to_string(e.line);
+  return s;
 }
 
 Side make_side(const std::uint32_t* ids, std::uint32_t count, Dart first, std::uint32_t darts) {
@@ -148,6 +268,30 @@ Side make_side(const std::uint32_t* ids, std::uint32_t count, Dart first, std::u
 
 }  // namespace
 
+std::vector<std::string> assembly_warnings(const AssemblyReport& r, int dimension) {
+  std::vector<std::string> out;
+  if (r.reoriented_solids > 0) {
+    out.push_back(std::to_string(r.reoriented_solids) +
+                  " inverted solids were reoriented (first: " + example(r.first_reoriented) + ")");
+  }
+  if (r.flat_elements > 0) {
+    out.push_back(std::to_string(r.flat_elements) + " elements have zero " +
+                  (dimension == 3 ? "volume" : "area") +
+                  " and carry no mass or stiffness (first: " + example(r.first_flat) + ")");
+  }
+  if (r.tangled_solids > 0) {
+    out.push_back(std::to_string(r.tangled_solids) +
+                  " solids are tangled: their corners disagree on the orientation (first: " +
+                  example(r.first_tangled) + ")");
+  }
+  if (r.nonmanifold_shared > 0) {
+    out.push_back(std::to_string(r.nonmanifold_shared) + " " +
+                  (dimension == 3 ? "faces" : "edges") +
+                  " shared by more than two elements were left unsewn");
+  }
+  return out;
+}
+
 GMap assemble_gmap(const MeshData& mesh, AssemblyReport* report) {
   AssemblyReport local;
   AssemblyReport& rep = report ? *report : local;
@@ -161,12 +305,21 @@ GMap assemble_gmap(const MeshData& mesh, AssemblyReport* report) {
       throw MeshError(mesh.source, 0,
                       "vertex " + std::to_string(p + 1) + " has a non-finite coordinate");
     }
+    if (mesh.points[p].cwiseAbs().maxCoeff() > kMaxCoordinate) {
+      throw MeshError(mesh.source, 0,
+                      "vertex " + std::to_string(p + 1) +
+                          " has a coordinate beyond +-1e30, the largest rift accepts (areas and "
+                          "volumes would overflow); rescale the mesh");
+    }
   }
 
   std::size_t dart_count = 0;
-  for (std::size_t k = 0; k < mesh.elements.size(); ++k) {
-    const MeshElement& e = mesh.elements[k];
-    validate_element(mesh, e, k);
+  {
+    std::vector<std::uint32_t> seen(mesh.points.size(), ~0u);
+    for (std::size_t k = 0; k < mesh.elements.size(); ++k)
+      validate_element(mesh, mesh.elements[k], k, seen);
+  }
+  for (const MeshElement& e : mesh.elements) {
     dart_count += mesh.dimension == 2 ? 2 * e.count : layout_of(e.type).dart_vertex.size();
   }
 
@@ -179,10 +332,12 @@ GMap assemble_gmap(const MeshData& mesh, AssemblyReport* report) {
 
   Dart next = first;
   std::array<std::uint32_t, 8> ids{};
-  for (const MeshElement& e : mesh.elements) {
+  for (std::size_t index = 0; index < mesh.elements.size(); ++index) {
+    const MeshElement& e = mesh.elements[index];
     const std::uint32_t* v = mesh.vertices_of(e);
     if (n == 2) {
       const std::uint32_t k = e.count;
+      if (polygon_is_flat(mesh, v, k)) note(rep.flat_elements, rep.first_flat, e, index);
       for (std::uint32_t i = 0; i < k; ++i) {
         const Dart d0 = next + 2 * i;  // at v[i], on edge v[i] v[i+1]
         const Dart d1 = d0 + 1;        // at v[i+1]
@@ -197,17 +352,22 @@ GMap assemble_gmap(const MeshData& mesh, AssemblyReport* report) {
       continue;
     }
     std::copy(v, v + e.count, ids.begin());
-    if (e.type == ElementType::Tetra) {
-      const Vec3& p0 = mesh.points[ids[0]];
-      const Real volume6 =
-          (mesh.points[ids[1]] - p0).cross(mesh.points[ids[2]] - p0).dot(mesh.points[ids[3]] - p0);
-      const Real scale = (mesh.points[ids[1]] - p0).squaredNorm();
-      if (std::abs(volume6) <= 1e-14 * scale * std::sqrt(scale)) {
-        ++rep.flat_tetrahedra;
-      } else if (volume6 < 0) {
-        std::swap(ids[1], ids[2]);
-        ++rep.reoriented_tetrahedra;
-      }
+    switch (solid_shape(mesh, e.type, ids)) {
+      case Shape::kGood:
+        break;
+      case Shape::kFlat:
+        note(rep.flat_elements, rep.first_flat, e, index);
+        break;
+      case Shape::kInverted:
+        reverse_orientation(e.type, ids);
+        note(rep.reoriented_solids, rep.first_reoriented, e, index);
+        break;
+      case Shape::kTangledMostlyInverted:
+        reverse_orientation(e.type, ids);
+        [[fallthrough]];
+      case Shape::kTangled:
+        note(rep.tangled_solids, rep.first_tangled, e, index);
+        break;
     }
     const SolidLayout& layout = layout_of(e.type);
     const auto faces = element_faces(e.type);

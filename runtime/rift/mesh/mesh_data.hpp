@@ -10,6 +10,14 @@
 
 namespace rift {
 
+/// The largest coordinate magnitude a mesh may have. Areas, volumes, masses and
+/// stiffnesses are products of two or three lengths (and material constants):
+/// with |x| <= 1e30 they stay far below the double limit (1.8e308), whereas a
+/// coordinate of 1e300 squares to infinity and turns masses into NaN. No
+/// physical mesh comes near 1e30 in any length unit. Readers refuse larger
+/// coordinates at their line; the assembler checks again after placement.
+inline constexpr double kMaxCoordinate = 1e30;
+
 enum class ElementType : std::uint8_t {
   Polygon,  ///< 2D: any polygon with >= 3 vertices (triangles and quads included)
   Tetra,    ///< 3D: 4 vertices, VTK ordering

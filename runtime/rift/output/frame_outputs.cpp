@@ -8,7 +8,10 @@
 namespace rift {
 
 FrameOutputs::FrameOutputs(OutputConfig config)
-    : config_(std::move(config)), extractor_(config_.frame), renderer_(config_.render) {
+    : config_(std::move(config)),
+      extractor_(config_.frame),
+      vtu_(config_.vtu_encoding),
+      renderer_(config_.render) {
   if (config_.png_every < 1) throw std::invalid_argument("png_every must be at least 1");
   ensure_directory(config_.directory);
   if (config_.vtu) pvd_.emplace(config_.directory / (config_.name + ".pvd"));

@@ -33,6 +33,7 @@ struct OutputConfig {
   std::filesystem::path directory = "out";
   std::string name = "frames";  ///< base name of the .pvd and .csv files
   bool vtu = true;
+  VtuEncoding vtu_encoding = VtuEncoding::kAppendedBinary;
   bool obj = false;
   bool png = true;
   int png_every = 1;  ///< render every k-th frame written

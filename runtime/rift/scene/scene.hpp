@@ -51,6 +51,7 @@ struct SceneOutput {
   int every = 10;   ///< a frame every `every` steps
   std::vector<std::string> formats{"vtu", "csv"};  ///< among vtu, obj, png, csv
   int png_every = 0;                               ///< a PNG every k-th frame (0: same as frames)
+  bool vtu_ascii = false;  ///< vtu_encoding = "ascii"; default "binary" (appended raw)
   int width = 800, height = 600;
 };
 

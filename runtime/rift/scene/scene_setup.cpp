@@ -157,7 +157,11 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
       }
     }
   }
-  for (const auto& [lo, hi] : scene.pins.boxes) {
+  for (const auto& box : scene.pins.boxes) {
+    // Named rather than structured bindings: C++20 lets a lambda capture
+    // those, clang 14 does not yet.
+    const Vec3& lo = box.first;
+    const Vec3& hi = box.second;
     std::size_t in_box = 0;
     m.for_each_cell(Orbit::cell(0, n), [&](Dart d) {
       const Vec3& p = position[d];
@@ -179,6 +183,18 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
   }
   sim->initialise();
   rep.total_mass = sim->total_mass();
+  for (const auto& model : sim->force_models()) {
+    if (model->active_matches() > 0) continue;
+    std::string criteria;
+    for (const ComponentUse& u : scene.criteria)
+      criteria += (criteria.empty() ? "" : ", ") + u.name;
+    rep.warnings.push_back(
+        "interaction '" + model->name() + "' matches no element of the mesh '" + scene.mesh.source +
+        "' (its pattern needs other elements): it exerts no force" +
+        (criteria.empty()
+             ? std::string()
+             : ", and criteria that read its forces (of: " + criteria + ") cannot fire"));
+  }
   return sim;
 }
 

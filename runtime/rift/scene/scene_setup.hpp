@@ -16,6 +16,10 @@ struct SetupReport {
   AssemblyReport assembly;
   std::size_t pinned_vertices = 0;
   Real total_mass = 0;
+  /// Components that cannot act on this mesh (an interaction whose pattern
+  /// matches no element, such as `corotational`, a tetrahedron, on hexahedra):
+  /// its forces stay zero, and so do the criteria that read them.
+  std::vector<std::string> warnings;
 };
 
 struct SetupOptions {
