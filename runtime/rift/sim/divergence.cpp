@@ -117,10 +117,13 @@ void DivergenceMonitor::check(const Simulation& sim) {
     }
   }
   top_speed = std::sqrt(top_speed);
-  const std::string when = fmt::format("at step {} (t = {:.6g} s)", sim.steps_done(), sim.time());
+  // Formatted only on failure: a passing check allocates nothing.
+  auto when = [&] {
+    return fmt::format("at step {} (t = {:.6g} s)", sim.steps_done(), sim.time());
+  };
   if (bad != kNoSlot) {
     throw SimulationError(
-        fmt::format("the simulation exploded {}: non-finite position or velocity at {}; {}", when,
+        fmt::format("the simulation exploded {}: non-finite position or velocity at {}; {}", when(),
                     describe_vertex(sim, bad), suggested_fix(sim)));
   }
   if (!(sim.settings().divergence_factor > 0)) return;
@@ -131,7 +134,7 @@ void DivergenceMonitor::check(const Simulation& sim) {
         "scene's energy scale (initial energy {:.3g} J, {:.3g} kg free to fall under gravity, "
         "work of prescribed vertices {:.3g} J); the most energetic is {} "
         "({:.3g} J, {:.3g} m/s); {}",
-        when, kinetic, bound, sim.settings().divergence_factor, initial_energy_, free_mass_,
+        when(), kinetic, bound, sim.settings().divergence_factor, initial_energy_, free_mass_,
         constrained_work_, describe_vertex(sim, most_energetic), top_energy,
         v[most_energetic].norm(), suggested_fix(sim)));
   }
@@ -141,7 +144,7 @@ void DivergenceMonitor::check(const Simulation& sim) {
     throw SimulationError(fmt::format(
         "the simulation diverged {}: {} moves at {:.3g} m/s, {:.3g} m in one step, farther than "
         "the whole body ({:.3g} m across); {}",
-        when, describe_vertex(sim, fastest), top_speed, top_speed * dt, length_,
+        when(), describe_vertex(sim, fastest), top_speed, top_speed * dt, length_,
         suggested_fix(sim)));
   }
 }
