@@ -4,30 +4,17 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
+#include "rift/core/interrupt.hpp"
 #include "rift/output/frame_outputs.hpp"
 #include "rift/scene/scene_setup.hpp"
 
 namespace rift::cli {
 
 namespace {
-
-volatile std::sig_atomic_t g_interrupted = 0;
-void on_interrupt(int) {
-  g_interrupted = 1;
-}
-
-// Restores the previous SIGINT handler when the run ends.
-struct InterruptGuard {
-  using Handler = void (*)(int);
-  Handler previous;
-  InterruptGuard() : previous(std::signal(SIGINT, on_interrupt)) { g_interrupted = 0; }
-  ~InterruptGuard() { std::signal(SIGINT, previous); }
-};
 
 std::size_t count_elements(const GMap& map) {
   return map.count_cells(Orbit::all(map.dimension() - 1));
@@ -118,15 +105,18 @@ int run_run(const RunOptions& options, const PackRegistry& packs) {
     }
   };
 
-  InterruptGuard guard;
+  // Ctrl-C raises a flag that the step polls (rift/core/interrupt.hpp): a
+  // frame being written is always finished, and a step stops part-way.
+  InterruptHandler interrupt_handler;
   Progress progress(steps, verbose && Progress::stderr_is_terminal());
   const auto start = std::chrono::steady_clock::now();
   write_frame();
   std::string failure;
   std::int64_t done = 0;
   double total_step_ms = 0;
+  bool interrupted = false, interrupted_mid_step = false;
   try {
-    for (done = 0; done < steps && !g_interrupted;) {
+    for (done = 0; done < steps && !interrupt_requested();) {
       const auto t0 = std::chrono::steady_clock::now();
       sim->step();
       step_ms =
@@ -137,7 +127,12 @@ int run_run(const RunOptions& options, const PackRegistry& packs) {
       progress.update(done, fmt::format("step {}/{}  t={:.4g}s  tears={}", done, steps, sim->time(),
                                         sim->tears()));
     }
-    if (g_interrupted && done % scene.output.every != 0) write_frame();
+    interrupted = interrupt_requested();
+    // The state after the last finished step, unless a frame already shows it.
+    if (interrupted && done % scene.output.every != 0) write_frame();
+  } catch (const Interrupted&) {
+    // A step abandoned part-way is not a state worth a frame.
+    interrupted = interrupted_mid_step = true;
   } catch (const SimulationError& e) {
     failure = e.what();
   }
@@ -151,11 +146,14 @@ int run_run(const RunOptions& options, const PackRegistry& packs) {
                outputs.frames_written(), config.directory.string());
     return 1;
   }
+  if (interrupted_mid_step && verbose) {
+    fmt::print(stderr, "rift: interrupted during step {}; it was abandoned part-way\n", done + 1);
+  }
   if (verbose) {
     fmt::print(stderr,
                "rift: {} {} steps ({:.4g} s simulated) in {} — {:.3f} ms/step, {} tears, {} "
                "vertices\n",
-               g_interrupted ? "interrupted after" : "done:", done, sim->time(),
+               interrupted ? "interrupted after" : "done:", done, sim->time(),
                format_duration(wall), done > 0 ? total_step_ms / static_cast<double>(done) : 0.0,
                sim->tears(), map.count_cells_of_dimension(0));
     fmt::print(stderr, "rift: {} frames in {}/ (open {}.pvd in ParaView{}{})\n",
@@ -163,7 +161,7 @@ int run_run(const RunOptions& options, const PackRegistry& packs) {
                config.png ? ", PNG renders frame_*.png" : "",
                config.csv_columns.empty() ? "" : fmt::format(", statistics {}.csv", scene.name));
   }
-  return g_interrupted ? 130 : 0;
+  return interrupted ? 130 : 0;
 }
 
 }  // namespace rift::cli

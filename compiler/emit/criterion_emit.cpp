@@ -96,6 +96,9 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
   w.open("void " + cls +
          "::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {");
   w.open("g.for_each_cell(" + orbit_code(crit.orbit.dims) + ", [&](rift::Dart " + d + ") {");
+  // One relaxed load per cell: Ctrl-C is seen inside a long pass (a cell's
+  // measure may traverse a large face).
+  w.line("rift::throw_if_interrupted();");
   write_lets(w, crit.lets, ctx);
   write_sourced(w, lhs.loc,
                 "const rift::Real measure = " +

@@ -108,7 +108,8 @@ class Emitter {
     if (mean) out += " std::int64_t " + n + " = 0;";
     out += " " + ctx_.map + ".for_each_sub_orbit(" + dart_path(e, ctx_) + ", " +
            orbit_code(e.outer.dims) + ", " + orbit_code(e.orbit.dims) +
-           ", [&]([[maybe_unused]] rift::Dart " + ctx_.dart(e.var) + ") { " + step + " });";
+           ", [&]([[maybe_unused]] rift::Dart " + ctx_.dart(e.var) +
+           ") { rift::throw_if_interrupted(); " + step + " });";
     if (mean) {
       out += " return " + n + " > 0 ? " + t + "(" + acc + " / static_cast<rift::Real>(" + n +
              ")) : " + t + "(" + zero_of(acc_type) + ");";

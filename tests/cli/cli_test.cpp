@@ -10,9 +10,11 @@
 
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <iterator>
 #include <sstream>
 #include <thread>
@@ -52,6 +54,40 @@ Result run(const std::string& exe, const std::string& args) {
 
 Result sim(const std::string& args) {
   return run(RIFT_TEST_SIM, args);
+}
+
+void expect_no_temporary_files(const fs::path& dir) {
+  for (const auto& entry : fs::directory_iterator(dir))
+    EXPECT_NE(entry.path().extension(), ".tmp") << entry.path();
+}
+
+/// Every frame the PVD lists parses; returns how many.
+int readable_frames(const fs::path& dir, const std::string& name) {
+  pugi::xml_document pvd;
+  if (!pvd.load_file((dir / (name + ".pvd")).c_str())) return -1;
+  int frames = 0;
+  for (pugi::xml_node ds : pvd.child("VTKFile").child("Collection").children("DataSet")) {
+    pugi::xml_document vtu;
+    if (!vtu.load_file((dir / ds.attribute("file").value()).c_str())) return -1;
+    ++frames;
+  }
+  return frames;
+}
+
+/// Column `column` of every row of a CSV written by rift run.
+std::vector<double> csv_column(const fs::path& file, int column) {
+  std::ifstream in(file);
+  std::vector<double> values;
+  std::string line;
+  std::getline(in, line);  // header
+  while (std::getline(in, line)) {
+    std::stringstream row(line);
+    std::string cell;
+    for (int c = 0; c <= column; ++c)
+      std::getline(row, cell, ',');
+    values.push_back(std::stod(cell));
+  }
+  return values;
 }
 
 class Cli : public ::testing::Test {
@@ -258,7 +294,10 @@ TEST_F(Cli, ExplosionStopsAndKeepsFramesReadable) {
   const std::string scene = write("boom.toml", text);
   Result r = sim("run " + scene + " --out " + (dir_ / "o").string() + " --quiet");
   EXPECT_EQ(r.code, 1) << r.output;
-  EXPECT_NE(r.output.find("exploded at step"), std::string::npos) << r.output;
+  // Caught by the energy bound long before a value becomes non-finite.
+  EXPECT_NE(r.output.find("diverged at step"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("of element"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("dt = 0.0125"), std::string::npos) << r.output;
   pugi::xml_document pvd;
   ASSERT_TRUE(pvd.load_file((dir_ / "o" / "boom.pvd").c_str()));
   int frames = 0;
@@ -299,6 +338,7 @@ TEST_F(Cli, CtrlCFinishesTheFrameAndClosesTheFiles) {
     ++frames;
   }
   EXPECT_GE(frames, 4);
+  expect_no_temporary_files(dir_ / "o");
   // The CSV has a row for every frame, the last one included.
   std::ifstream csv(dir_ / "o" / "long.csv");
   int rows = -1;
@@ -312,6 +352,263 @@ TEST_F(Cli, RiftWithoutPacksExplains) {
   Result r = run(RIFT_EXE, "run " + scene);
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.output.find("unknown interaction 'test_springs'"), std::string::npos) << r.output;
+}
+
+// Issue 13's first case: a co-rotational beam (block:tet:8x8x50 over the unit
+// cube, E = 1 MPa, 1 kg) stepped with RK4 at dt = 1e-4 s. Unchecked, its
+// kinetic energy passes 1e15 J at step 5; checked, the run stops at step 3
+// (3.4e4 J against a bound of 1.7e3 J) and keeps frames 0-2.
+const char* kStiffBeam = R"([mesh]
+source = "block:tet:8x8x50"
+
+[simulation]
+integrator = "rk4"
+dt = 0.0001
+steps = 50
+gravity = [0, 0, -9.81]
+
+[mass]
+total = 1.0
+
+[pin]
+box = { min = [-1, -1, -0.001], max = [2, 2, 0.001] }
+
+[[interaction]]
+name = "corotational"
+young = 1.0e6
+poisson = 0.3
+
+[output]
+every = 1
+formats = ["vtu", "csv"]
+)";
+
+TEST_F(Cli, StiffBeamWithRk4StopsAtTheFirstStepPastTheBound) {
+  const std::string scene = write("beam.toml", kStiffBeam);
+  Result r = run(RIFT_EXE, "run " + scene + " --out " + (dir_ / "o").string() + " --quiet");
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_NE(r.output.find("diverged at step 3 (t = 0.0003 s)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("of element"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("dt = 2.5e-05"), std::string::npos) << r.output;
+  EXPECT_EQ(readable_frames(dir_ / "o", "beam"), 3);
+  expect_no_temporary_files(dir_ / "o");
+  // The energies before the stop stayed small: stopped early, not at overflow.
+  const std::vector<double> energy = csv_column(dir_ / "o" / "beam.csv", 2);
+  ASSERT_EQ(energy.size(), 3u);
+  EXPECT_LT(energy.back(), 1.0);
+
+  // Without the check (divergence_factor = 0) the same run explodes on.
+  std::string text = kStiffBeam;
+  text.replace(text.find("steps = 50"), 10, "steps = 5\ndivergence_factor = 0");
+  text.replace(text.find("formats = [\"vtu\", \"csv\"]"), 24, "formats = [\"csv\"]");
+  r = run(RIFT_EXE,
+          "run " + write("beam0.toml", text) + " --out " + (dir_ / "u").string() + " --quiet");
+  EXPECT_EQ(r.code, 0) << r.output;
+  const std::vector<double> unchecked = csv_column(dir_ / "u" / "beam0.csv", 2);
+  ASSERT_EQ(unchecked.size(), 6u);
+  EXPECT_GT(unchecked[5], 1e12);
+}
+
+// Issue 13's second case: a 30 x 30 cloth torn at every vertex whose force
+// sum passes 1 mN; split vertices are light and RK4 with the damping passes
+// its limit. Unchecked it reaches 1e200 J by step 50 and ends "done".
+const char* kTornCloth = R"([mesh]
+source = "grid:quad:30x30"
+rotate = [90, 0, 0]
+
+[simulation]
+integrator = "rk4"
+dt = 0.0005
+steps = 50
+gravity = [0, 0, -9.81]
+
+[mass]
+total = 0.1
+
+[pin]
+corners = ["top-left", "top-right"]
+
+[[interaction]]
+name = "stretch"
+stiffness = 60.0
+damping = 0.1
+
+[[interaction]]
+name = "shear"
+stiffness = 43.0
+damping = 0.1
+
+[[interaction]]
+name = "bend"
+stiffness = 10.0
+damping = 0.1
+
+[[criterion]]
+name = "vertex_sum"
+threshold = 0.001
+
+[output]
+every = 1
+formats = ["vtu", "csv"]
+)";
+
+TEST_F(Cli, HeavilyTornClothStopsWhenTheEnergyPassesTheBound) {
+  Result r = run(RIFT_EXE, "run " + write("torn.toml", kTornCloth) + " --out " +
+                               (dir_ / "o").string() + " --quiet");
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_NE(r.output.find("diverged at step 5 "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("the most energetic is vertex"), std::string::npos) << r.output;
+  EXPECT_EQ(readable_frames(dir_ / "o", "torn"), 5);
+  expect_no_temporary_files(dir_ / "o");
+
+  std::string text = kTornCloth;
+  text.replace(text.find("steps = 50"), 10, "steps = 50\ndivergence_factor = 0");
+  text.replace(text.find("formats = [\"vtu\", \"csv\"]"), 24, "formats = [\"csv\"]");
+  r = run(RIFT_EXE, "run " + write("torn0.toml", text) + " --out " + (dir_ / "u").string());
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("done: 50 steps"), std::string::npos) << r.output;
+  const std::vector<double> unchecked = csv_column(dir_ / "u" / "torn0.csv", 2);
+  ASSERT_EQ(unchecked.size(), 51u);
+  EXPECT_GT(unchecked.back(), 1e100);
+}
+
+// A step of minutes: a 30,000-gon whose vertex_stress criterion sums over
+// the whole face for every vertex. Ctrl-C one second into the first step
+// stops it part-way, with the first frame intact and no temporary file.
+TEST_F(Cli, CtrlCInsideALongStepStopsAtOnce) {
+  {
+    std::ofstream obj(dir_ / "polygon.obj");
+    const int n = 30000;
+    for (int i = 0; i < n; ++i) {
+      const double a = 2 * 3.141592653589793 * i / n;
+      obj << "v " << std::cos(a) << " " << std::sin(a) << " 0\n";
+    }
+    obj << "f";
+    for (int i = 1; i <= n; ++i)
+      obj << " " << i;
+    obj << "\n";
+  }
+  const std::string scene = write("polygon.toml", R"([mesh]
+source = "polygon.obj"
+
+[simulation]
+steps = 3
+
+[mass]
+total = 0.1
+
+[[interaction]]
+name = "stretch"
+stiffness = 60.0
+
+[[criterion]]
+name = "vertex_stress"
+threshold = 100
+
+[output]
+every = 1
+formats = ["vtu", "csv"]
+)");
+  const std::string out = (dir_ / "o").string();
+  const std::string log = (dir_ / "log.txt").string();
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    if (!std::freopen(log.c_str(), "w", stderr)) _exit(126);
+    execl(RIFT_EXE, RIFT_EXE, "run", scene.c_str(), "--out", out.c_str(),
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // The first frame is written just before the first step starts.
+  for (int k = 0; k < 1200 && !fs::exists(dir_ / "o" / "polygon.pvd"); ++k)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  std::this_thread::sleep_for(std::chrono::seconds(1));
+  const auto sent = std::chrono::steady_clock::now();
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  const double latency =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
+  std::cout << "interrupt latency inside a step: " << latency << " s\n";
+  std::ifstream in(log);
+  const std::string output((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_TRUE(WIFEXITED(status)) << output;
+  EXPECT_EQ(WEXITSTATUS(status), 130) << output;
+  EXPECT_NE(output.find("interrupted during step 1"), std::string::npos) << output;
+  // The step itself lasts minutes; polling stops it within a fraction of a
+  // second (the bound leaves room for a loaded machine).
+  EXPECT_LT(latency, 5.0) << output;
+  EXPECT_EQ(readable_frames(dir_ / "o", "polygon"), 1);
+  expect_no_temporary_files(dir_ / "o");
+}
+
+// Frames are large and written every step: interrupts land while files are
+// written, and every file the run leaves is complete.
+TEST_F(Cli, CtrlCWhileWritingFramesLeavesNoTemporaryFile) {
+  std::string text = kCloth;
+  text.replace(text.find("steps = 60"), 10, "steps = 100000");
+  text.replace(text.find("every = 20"), 10, "every = 1");
+  text.replace(text.find("png_size = [320, 240]"), 21, "png_size = [1600, 1200]");
+  const std::string scene = write("frames.toml", text);
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    fs::path out = dir_ / "o";
+    out += std::to_string(attempt);  // (GCC 12 -Wrestrict misfires on "o" + string)
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      execl(RIFT_TEST_SIM, RIFT_TEST_SIM, "run", scene.c_str(), "--out", out.c_str(), "--quiet",
+            static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    for (int k = 0; k < 400 && !fs::exists(out / "frame_000002.vtu"); ++k)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    std::this_thread::sleep_for(std::chrono::milliseconds(7 * attempt));
+    kill(pid, SIGINT);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 130);
+    EXPECT_GE(readable_frames(out, "frames"), 3);
+    expect_no_temporary_files(out);
+  }
+}
+
+std::string file_text(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// The same tearing scene twice: every frame byte-identical, the statistics
+// too once the timing column (step_ms, the last) is dropped.
+TEST_F(Cli, TheSameSceneTwiceGivesByteIdenticalOutputs) {
+  // Fig. 11 tears at its pins within its first 300 steps.
+  const std::string scene = std::string(RIFT_SOURCE_DIR) + "/examples/paper/fig11.toml";
+  for (const char* out : {"a", "b"}) {
+    const Result r =
+        run(RIFT_EXE, "run " + scene + " --steps 300 --out " + (dir_ / out).string() + " --quiet");
+    ASSERT_EQ(r.code, 0) << r.output;
+  }
+  int compared = 0;
+  for (const auto& entry : fs::directory_iterator(dir_ / "a")) {
+    const fs::path name = entry.path().filename();
+    std::string a = file_text(entry.path()), b = file_text(dir_ / "b" / name);
+    if (name.extension() == ".csv") {
+      auto drop_last_column = [](const std::string& csv) {
+        std::string out;
+        std::stringstream in(csv);
+        for (std::string line; std::getline(in, line);)
+          out += line.substr(0, line.rfind(',')) + "\n";
+        return out;
+      };
+      a = drop_last_column(a);
+      b = drop_last_column(b);
+    }
+    EXPECT_EQ(a, b) << name;
+    ++compared;
+  }
+  EXPECT_GE(compared, 10);  // 4 VTU, 4 PNG, the PVD and the CSV
+  const std::vector<double> tears = csv_column(dir_ / "a" / "fig11.csv", 4);
+  EXPECT_GT(tears.back(), 0) << "the scene should tear";
 }
 
 }  // namespace

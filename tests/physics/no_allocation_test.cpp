@@ -69,6 +69,20 @@ TEST(NoAllocation, EvaluatingACriterionThatDoesNotHoldAllocatesNothing) {
             0);
 }
 
+// rift run --check validates the whole map after every rewrite: on a valid
+// map the check is flat passes over kept scratch arrays, no string, no new.
+TEST(NoAllocation, CheckingAValidMapAllocatesNothing) {
+  for (const char* mesh : {"grid:mix:20x20", "block:tet:4x4x4", "block:hex:4x4x4"}) {
+    GMap map = assemble_gmap(make_generated_mesh(mesh));
+    map.add_embedding<Real>("corner_value", Orbit{1}, MergePolicy::kKeepFirst, 0.0);
+    ASSERT_TRUE(map.check_validity(5).empty()) << mesh;  // warm-up
+    const long before = g_allocations.load();
+    const bool valid = map.check_validity(5).empty();
+    EXPECT_EQ(g_allocations.load() - before, 0) << mesh;
+    EXPECT_TRUE(valid) << mesh;
+  }
+}
+
 TEST(NoAllocation, TheCounterSeesAllocations) {
   const long before = g_allocations.load();
   auto* p = new std::vector<int>(100);

@@ -64,6 +64,36 @@ TEST(GMapValidity, DetectsEmbeddingNotSharedAlongOrbit) {
   EXPECT_NE(problems.front().find("embedding on <1,2>"), std::string::npos) << problems.front();
 }
 
+TEST(GMapValidity, DetectsTwoOrbitsSharingASlot) {
+  GMap map(2);
+  const Dart a = test::make_polygon(map, 3);
+  const Dart b = test::make_polygon(map, 3);
+  map.add_embedding<Vec3>("position", Orbit{1, 2});
+  OrbitAttachment& att = *map.attachment_of("position");
+  // Vertex b (darts b and alpha_1(b)) moved into the slot of vertex a: each
+  // orbit is constant and every count is right, but one slot holds two orbits.
+  const Slot shared = att.slot(a);
+  att.assign(b, shared);
+  att.assign(map.alpha(b, 1), shared);
+  const auto problems = map.check_validity();
+  ASSERT_FALSE(problems.empty());
+  EXPECT_NE(problems.front().find("two orbits share slot " + std::to_string(shared)),
+            std::string::npos)
+      << problems.front();
+}
+
+TEST(GMapValidity, DetectsADartOutsideItsOrbitsSlot) {
+  GMap map(2);
+  const Dart a = test::make_polygon(map, 4);
+  map.add_embedding<Real>("area", Orbit{0, 1});
+  OrbitAttachment& att = *map.attachment_of("area");
+  const Slot spare = att.allocate_slot();
+  att.assign(a, spare);  // one dart of the face now elsewhere
+  const auto problems = map.check_validity(20);
+  ASSERT_FALSE(problems.empty());
+  EXPECT_NE(problems.front().find("hold different values"), std::string::npos) << problems.front();
+}
+
 TEST(GMapValidity, SewKeepsEmbeddingsShared) {
   GMap map(2);
   const Dart a = test::make_polygon(map, 3);

@@ -85,7 +85,10 @@ TEST(Tearing, StiffThresholdNeverTears) {
 }
 
 TEST(Explosion, NonFinitePositionsStopWithTheStep) {
-  SimulationSettings settings{IntegratorKind::kExplicitEuler, 0.5, Vec3(0, -9.81, 0), 0, false};
+  // Divergence factor 0: only the finite check (the energy check would stop
+  // this at step 1, tests/sim/divergence_test.cpp).
+  SimulationSettings settings{
+      IntegratorKind::kExplicitEuler, 0.5, Vec3(0, -9.81, 0), 0, false, 0.0};
   Simulation sim(assemble_gmap(make_grid(GridKind::Quad, 3, 3)), settings);
   sim.set_total_mass(0.001);
   sim.add_force_model(std::make_unique<test::HalfEdgeSprings>(1e6, 0.0));

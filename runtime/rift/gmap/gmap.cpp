@@ -202,78 +202,85 @@ void GMap::assign_missing_slots(OrbitAttachment& att) {
 
 // ---- validity -------------------------------------------------------------------------
 
+// One flat pass per condition, with no allocation once the scratch arrays
+// are warm: messages are formatted only for violations, so the check is cheap
+// enough to run after every rewrite (rift run --check) and still complete.
 std::vector<std::string> GMap::check_validity(std::size_t limit) const {
   std::vector<std::string> problems;
-  auto report = [&](std::string msg) {
-    if (problems.size() < limit) problems.push_back(std::move(msg));
-  };
+  auto full = [&] { return problems.size() >= limit; };
   const std::size_t n = alive_.size();
-  for (std::size_t k = 0; k < n && problems.size() < limit; ++k) {
+
+  // Links: every alpha_i is an involution on live darts.
+  for (std::size_t k = 0; k < n && !full(); ++k) {
+    if (!alive_[k]) continue;
     const Dart d = static_cast<Dart>(k);
-    if (!alive_[d]) continue;
-    for (int i = 0; i <= dimension_; ++i) {
+    for (int i = 0; i <= dimension_ && !full(); ++i) {
       const Dart e = alpha_[i][d];
       if (e >= n || !alive_[e]) {
-        report("alpha_" + std::to_string(i) + "(" + std::to_string(d) + ") = " + std::to_string(e) +
-               " is not a live dart");
+        problems.push_back("alpha_" + std::to_string(i) + "(" + std::to_string(d) +
+                           ") = " + std::to_string(e) + " is not a live dart");
       } else if (alpha_[i][e] != d) {
-        report("alpha_" + std::to_string(i) + " is not an involution at dart " + std::to_string(d));
+        problems.push_back("alpha_" + std::to_string(i) + " is not an involution at dart " +
+                           std::to_string(d));
       }
     }
-    if (!problems.empty()) continue;  // the composition test needs sound links
+  }
+  if (!problems.empty()) return problems;  // the composition test needs sound links
+
+  // alpha_i o alpha_j is an involution for i + 2 <= j.
+  for (std::size_t k = 0; k < n && !full(); ++k) {
+    if (!alive_[k]) continue;
+    const Dart d = static_cast<Dart>(k);
     for (int i = 0; i + 2 <= dimension_; ++i) {
-      for (int j = i + 2; j <= dimension_; ++j) {
-        const Dart e = alpha_[j][alpha_[i][alpha_[j][alpha_[i][d]]]];
-        if (e != d) {
-          report("alpha_" + std::to_string(i) + " o alpha_" + std::to_string(j) +
-                 " is not an involution at dart " + std::to_string(d));
+      for (int j = i + 2; j <= dimension_ && !full(); ++j) {
+        if (alpha_[j][alpha_[i][alpha_[j][alpha_[i][d]]]] != d) {
+          problems.push_back("alpha_" + std::to_string(i) + " o alpha_" + std::to_string(j) +
+                             " is not an involution at dart " + std::to_string(d));
         }
       }
     }
   }
   if (!problems.empty()) return problems;
 
+  // Embeddings: every live dart has a slot, constant along its orbit, each
+  // slot's dart count is right, and one orbit only holds each slot.
   for (const auto& att : attachments_) {
+    if (full()) break;
     const Orbit o = att->orbit();
-    std::vector<std::uint32_t> count(att->slot_capacity(), 0);
-    for (std::size_t k = 0; k < n && problems.size() < limit; ++k) {
+    const Slot* slot = att->slot_data();
+    const std::size_t slots = att->slot_capacity();
+    validity_count_.assign(slots, 0);
+    validity_first_.assign(slots, kNoDart);
+    auto where = [&] { return "embedding on " + o.str() + ": "; };
+    for (std::size_t k = 0; k < n && !full(); ++k) {
+      if (!alive_[k]) continue;
       const Dart d = static_cast<Dart>(k);
-      if (!alive_[d]) continue;
-      const Slot s = att->slot(d);
-      const std::string emb = "embedding on " + o.str();
-      if (s == kNoSlot || s >= att->slot_capacity()) {
-        report(emb + ": dart " + std::to_string(d) + " has no value");
+      const Slot s = slot[d];
+      if (s == kNoSlot || s >= slots) {
+        problems.push_back(where() + "dart " + std::to_string(d) + " has no value");
         continue;
       }
-      ++count[s];
+      if (validity_count_[s]++ == 0) validity_first_[s] = d;
       for (int i = 0; i <= dimension_; ++i) {
-        if (o.contains(i) && att->slot(alpha_[i][d]) != s) {
-          report(emb + ": darts " + std::to_string(d) + " and " + std::to_string(alpha_[i][d]) +
-                 " of one orbit hold different values");
+        if (o.contains(i) && slot[alpha_[i][d]] != s && !full()) {
+          problems.push_back(where() + "darts " + std::to_string(d) + " and " +
+                             std::to_string(alpha_[i][d]) + " of one orbit hold different values");
         }
       }
     }
-    for (Slot s = 0; s < count.size() && problems.size() < limit; ++s) {
-      if (count[s] != att->darts_in_slot(s)) {
-        report("embedding on " + o.str() + ": slot " + std::to_string(s) + " is used by " +
-               std::to_string(count[s]) + " darts but counts " +
-               std::to_string(att->darts_in_slot(s)));
+    if (!problems.empty()) break;  // the orbit sizes below need constant slots
+    for (Slot s = 0; s < slots && !full(); ++s) {
+      if (validity_count_[s] != att->darts_in_slot(s)) {
+        problems.push_back(where() + "slot " + std::to_string(s) + " is used by " +
+                           std::to_string(validity_count_[s]) + " darts but counts " +
+                           std::to_string(att->darts_in_slot(s)));
+      } else if (validity_count_[s] > 0 &&
+                 orbit_size(validity_first_[s], o) != validity_count_[s]) {
+        // The orbit of the slot's first dart is constant, hence inside the
+        // slot: a slot with more darts holds a second orbit too.
+        problems.push_back(where() + "two orbits share slot " + std::to_string(s));
       }
     }
-  }
-  // Darts of two different orbits sharing a slot would alias their values.
-  for (const auto& att : attachments_) {
-    if (!problems.empty()) break;
-    const Orbit o = att->orbit();
-    std::vector<std::uint8_t> seen(att->slot_capacity(), 0);
-    for_each_cell(o, [&](Dart d) {
-      const Slot s = att->slot(d);
-      if (s == kNoSlot || s >= seen.size()) return;
-      if (seen[s]) {
-        report("embedding on " + o.str() + ": two orbits share slot " + std::to_string(s));
-      }
-      seen[s] = 1;
-    });
   }
   return problems;
 }

@@ -208,6 +208,9 @@ class GMap {
   mutable std::size_t scratch_depth_ = 0;
   // partner_[x] during sewing; kNoDart everywhere between calls.
   mutable std::vector<Dart> partner_;
+  // check_validity's per-slot dart counts and first darts, kept between calls.
+  mutable std::vector<std::uint32_t> validity_count_;
+  mutable std::vector<Dart> validity_first_;
 
   std::vector<std::unique_ptr<OrbitAttachment>> attachments_;
 };
@@ -272,21 +275,35 @@ void GMap::for_each_in_orbit(Dart d, Orbit o, F&& f) const {
   for (Dart x : visited)
     unmark(x, m);
   free_mark(m);
-  // Callbacks run after the walk so that they may change marks freely.
+  // Callbacks run after the walk so that they may change marks freely. The
+  // scratch buffer is released even when f throws.
+  struct ScratchGuard {
+    const GMap& map;
+    ~ScratchGuard() { map.release_scratch(); }
+  } guard{*this};
   const std::size_t count = visited.size();
   for (std::size_t k = 0; k < count; ++k)
     f(visited[k]);
-  release_scratch();
 }
 
 template <class F>
 void GMap::for_each_sub_orbit(Dart d, Orbit o, Orbit sub, F&& f) const {
   const Mark m = reserve_mark();
+  // When f throws (an interrupt), the mark is cleared by a full sweep.
+  struct MarkGuard {
+    const GMap& map;
+    Mark m;
+    bool done = false;
+    ~MarkGuard() {
+      if (!done) map.free_mark(m);
+    }
+  } guard{*this, m};
   for_each_in_orbit(d, o, [&](Dart x) {
     if (is_marked(x, m)) return;
     mark_orbit(x, sub, m);
     f(x);
   });
+  guard.done = true;
   // Every dart of a sub-orbit lies in <o>(d) when sub is contained in o;
   // otherwise marks may spill outside, so clear by sweeping what was marked.
   if ((sub.mask() & ~o.mask()) == 0) {
@@ -297,7 +314,13 @@ void GMap::for_each_sub_orbit(Dart d, Orbit o, Orbit sub, F&& f) const {
 
 template <class F>
 void GMap::for_each_cell(Orbit o, F&& f) const {
-  const Mark m = reserve_mark();
+  // The mark is released even when f throws (an interrupt inside a pass).
+  struct MarkGuard {
+    const GMap& map;
+    Mark m;
+    ~MarkGuard() { map.free_mark(m); }
+  } guard{*this, reserve_mark()};
+  const Mark m = guard.m;
   const std::size_t n = alive_.size();
   for (std::size_t i = 0; i < n; ++i) {
     const Dart d = static_cast<Dart>(i);
@@ -305,8 +328,6 @@ void GMap::for_each_cell(Orbit o, F&& f) const {
     mark_orbit(d, o, m);
     f(d);
   }
-  unmark_all(m);
-  free_mark(m);
 }
 
 template <class T>

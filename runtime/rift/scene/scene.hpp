@@ -67,6 +67,8 @@ struct Scene {
   Real dt = 1e-3;
   std::int64_t steps = 1000;
   Vec3 gravity = Vec3(0, 0, -9.81);
+  /// Safety factor of the divergence check (rift/sim/divergence.hpp); 0: off.
+  Real divergence_factor = 100;
   std::optional<Real> total_mass;
   std::optional<Real> density;
   ScenePins pins;

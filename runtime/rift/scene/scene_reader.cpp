@@ -206,7 +206,7 @@ class SceneReader {
   }
 
   void read_simulation(const toml::table& t, Scene& scene) const {
-    check_keys(t, {"integrator", "dt", "steps", "gravity"}, "[simulation]");
+    check_keys(t, {"integrator", "dt", "steps", "gravity", "divergence_factor"}, "[simulation]");
     if (auto* n = t.get("integrator")) {
       const std::string name = string(*n, "integrator");
       auto kind = parse_integrator(name);
@@ -219,6 +219,11 @@ class SceneReader {
     if (auto* n = t.get("dt")) scene.dt = positive_real(*n, "dt");
     if (auto* n = t.get("steps")) scene.steps = integer(*n, "steps", 1, std::int64_t(1) << 40);
     if (auto* n = t.get("gravity")) scene.gravity = vec3(*n, "gravity");
+    if (auto* n = t.get("divergence_factor")) {
+      scene.divergence_factor = real(*n, "divergence_factor");
+      if (!(scene.divergence_factor >= 0))
+        fail(*n, "'divergence_factor' must be 0 (off) or positive");
+    }
   }
 
   void read_mass(const toml::table& t, Scene& scene) const {

@@ -109,6 +109,7 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
   settings.integrator = scene.integrator;
   settings.dt = scene.dt;
   settings.gravity = scene.gravity;
+  settings.divergence_factor = scene.divergence_factor;
   settings.max_tears_per_step = scene.tearing.max_per_step;
   settings.check_each_rewrite = options.check_each_rewrite;
   auto sim = std::make_unique<Simulation>(std::move(map), settings);

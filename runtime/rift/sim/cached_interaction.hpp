@@ -14,9 +14,11 @@
 // inlined: no virtual call and no traversal per element.
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <utility>
 
+#include "rift/core/interrupt.hpp"
 #include "rift/sim/force_model.hpp"
 #include "rift/sim/match_cache.hpp"
 
@@ -51,14 +53,22 @@ class CachedInteraction final : public ForceModel {
 
   void add_forces(const ForceInput& in, Vec3* f, bool store) override {
     using Match = typename Kernel::Match;
-    if constexpr (requires(Kernel & k, std::span<const Match> ms) {
-                    k.add_forces_all(ms, in, f, store);
-                  }) {
-      // Generated kernels run the whole pass themselves (columns read once).
-      kernel_.add_forces_all(std::span<const Match>(cache_.matches()), in, f, store);
-    } else {
-      for (const auto& m : cache_.matches())
-        kernel_.add_forces(m, in, f, store);
+    const std::span<const Match> all(cache_.matches());
+    // The pass runs in blocks so that an interrupt is seen within one block
+    // (a few thousand matches: microseconds), not one whole pass.
+    for (std::size_t first = 0; first < all.size(); first += kInterruptBlock) {
+      throw_if_interrupted();
+      const std::span<const Match> block =
+          all.subspan(first, std::min(kInterruptBlock, all.size() - first));
+      if constexpr (requires(Kernel & k, std::span<const Match> ms) {
+                      k.add_forces_all(ms, in, f, store);
+                    }) {
+        // Generated kernels run the whole block themselves (columns read once).
+        kernel_.add_forces_all(block, in, f, store);
+      } else {
+        for (const auto& m : block)
+          kernel_.add_forces(m, in, f, store);
+      }
     }
   }
 
@@ -73,6 +83,7 @@ class CachedInteraction final : public ForceModel {
   const MatchCache<typename Kernel::Match>& cache() const { return cache_; }
 
  private:
+  static constexpr std::size_t kInterruptBlock = 4096;
   Kernel kernel_;
   MatchCache<typename Kernel::Match> cache_;
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "rift/core/interrupt.hpp"
 #include "rift/sim/mass_model.hpp"
 
 namespace rift {
@@ -124,6 +125,10 @@ void Simulation::accelerations(const std::vector<Vec3>& x, const std::vector<Vec
 
 void Simulation::step() {
   if (!initialised_) initialise();
+  throw_if_interrupted();
+  // The scales of the divergence check come from the state first stepped
+  // (after any deformation or velocity a caller imposed after initialise).
+  if (!divergence_.started()) divergence_.start(*this);
   std::vector<Vec3>& x = position_.values();
   std::vector<Vec3>& v = velocity_.values();
   // Forces at the current state are stored in their orbits (criteria read
@@ -137,7 +142,7 @@ void Simulation::step() {
                    x, v, settings_.dt, &a0_);
   time_ += settings_.dt;
   ++steps_;
-  check_finite();
+  divergence_.check(*this);
 }
 
 std::size_t Simulation::apply_criteria() {
@@ -162,6 +167,7 @@ std::size_t Simulation::apply_criteria() {
         applied >= static_cast<std::size_t>(settings_.max_tears_per_step)) {
       break;
     }
+    throw_if_interrupted();
     if (!map_.is_alive(c.at)) continue;  // removed by an earlier rewrite this step
     if (!criteria_[c.criterion]->apply(map_, c, touched_)) continue;
     ++applied;
@@ -182,27 +188,6 @@ std::size_t Simulation::apply_criteria() {
     tears_ += applied;
   }
   return applied;
-}
-
-void Simulation::check_finite() const {
-  const OrbitAttachment& att = position_.attachment();
-  const auto& x = position_.values();
-  const auto& v = velocity_.values();
-  for (Slot s = 0; s < x.size(); ++s) {
-    if (!att.slot_alive(s) || (x[s].allFinite() && v[s].allFinite())) continue;
-    // Name the first element around the exploded vertex for the message.
-    std::string where = "vertex slot " + std::to_string(s);
-    const Embedding<std::int64_t> element = map_.embedding<std::int64_t>("element_index");
-    const Embedding<std::int64_t> point = map_.embedding<std::int64_t>("point_index");
-    map_.for_each_dart([&](Dart d) {
-      if (position_.slot(d) != s || where.find("element") != std::string::npos) return;
-      where = "vertex " + (point ? std::to_string(point[d]) : std::to_string(d));
-      if (element) where += " of element " + std::to_string(element[d]);
-    });
-    throw SimulationError("the simulation exploded at step " + std::to_string(steps_) +
-                          " (t = " + std::to_string(time_) + "): non-finite position at " + where +
-                          "; try a smaller dt or a stiffer integrator");
-  }
 }
 
 void Simulation::on_topology_changed(std::span<const Dart> touched) {

@@ -11,6 +11,7 @@
 
 #include "rift/gmap/gmap.hpp"
 #include "rift/pack/criterion.hpp"
+#include "rift/sim/divergence.hpp"
 #include "rift/sim/force_model.hpp"
 #include "rift/sim/integrator.hpp"
 
@@ -24,6 +25,10 @@ struct SimulationSettings {
   int max_tears_per_step = 0;
   /// Check the G-map's validity after every rewrite (rift run --check).
   bool check_each_rewrite = false;
+  /// Safety factor S of the divergence check (divergence.hpp): the run stops
+  /// when the kinetic energy exceeds S times the scene's energy scale or a
+  /// vertex crosses the whole body in one step. 0 keeps only the finite check.
+  Real divergence_factor = 100;
 };
 
 /// A simulation that cannot go on: exploded state or an invalid map.
@@ -80,7 +85,10 @@ class Simulation {
   ///  3. if the map changed: masses of touched vertices and matches around
   ///     them are updated, and forces recomputed;
   ///  4. the integrator advances positions and velocities by dt, and a
-  ///     non-finite position stops the simulation with a SimulationError.
+  ///     diverged state (divergence.hpp) stops the simulation with a
+  ///     SimulationError.
+  /// Throws Interrupted (rift/core/interrupt.hpp) part-way when an interrupt
+  /// was requested; the state is then not that of a finished step.
   void step();
 
   /// After rewrites: recompute the masses of the vertices of `touched`
@@ -102,6 +110,10 @@ class Simulation {
   const Embedding<Real>& vertex_mass() const { return vertex_mass_; }
   /// Total internal force on each vertex slot at the start of the last step.
   const std::vector<Vec3>& internal_forces() const { return start_forces_; }
+  /// The divergence check (its scales are set at the first step).
+  const DivergenceMonitor& divergence() const { return divergence_; }
+  /// 1 / mass by vertex slot; 0 for pinned (prescribed) vertices and free slots.
+  const std::vector<Real>& inverse_masses() const { return inverse_mass_; }
 
   Real kinetic_energy() const;
   /// Gravity plus every interaction's elastic energy.
@@ -116,7 +128,6 @@ class Simulation {
   void refresh_inverse_masses(std::span<const Dart> region);
   void refresh_inverse_mass(Slot s);
   std::size_t apply_criteria();
-  void check_finite() const;
 
   GMap map_;
   SimulationSettings settings_;
@@ -136,6 +147,7 @@ class Simulation {
   Real time_ = 0;
   std::size_t steps_ = 0;
   bool initialised_ = false;
+  DivergenceMonitor divergence_;
 };
 
 template <class Pred>

@@ -1,0 +1,146 @@
+// The divergence check (rift/sim/divergence.hpp): an unstable explicit step
+// stops at the first step whose kinetic energy passes the scene's bound,
+// with the step, vertex and fix named; legitimate motions that gain energy
+// (free fall, released elastic energy, a thrown body) never trip it.
+#include "rift/sim/divergence.hpp"
+
+#include <gtest/gtest.h>
+
+#include "rift/mesh/assemble.hpp"
+#include "rift/mesh/generators.hpp"
+#include "rift/sim/simulation.hpp"
+#include "test_spring_model.hpp"
+
+namespace rift {
+namespace {
+
+Simulation springs(IntegratorKind kind, Real dt, Real stiffness, Vec3 gravity, int n = 6,
+                   Real damping = 0) {
+  Simulation sim(assemble_gmap(make_grid(GridKind::Mix, n, n)), {kind, dt, gravity});
+  sim.set_total_mass(0.1);
+  sim.add_force_model(std::make_unique<test::HalfEdgeSprings>(stiffness, damping));
+  return sim;
+}
+
+TEST(Divergence, UnstableEulerStopsAtTheFirstStepPastTheBound) {
+  // A stretched, undamped, stiff mesh under explicit Euler gains energy by
+  // a constant factor per step.
+  Simulation sim = springs(IntegratorKind::kExplicitEuler, 2e-3, 2000, Vec3::Zero());
+  sim.initialise();
+  for (Vec3& x : sim.position().values())
+    x *= 1.05;
+  std::vector<Real> energies;
+  std::string message;
+  try {
+    for (int s = 0; s < 10000; ++s) {
+      sim.step();
+      energies.push_back(sim.kinetic_energy());
+    }
+  } catch (const SimulationError& e) {
+    message = e.what();
+  }
+  ASSERT_FALSE(message.empty()) << "never stopped";
+  const Real bound = sim.divergence().energy_bound(sim);
+  EXPECT_GT(bound, 0);
+  EXPECT_GT(sim.kinetic_energy(), bound) << message;
+  // Every step before the one that stopped was under the (growing) bound.
+  EXPECT_EQ(energies.size() + 1, sim.steps_done());
+  for (Real e : energies)
+    EXPECT_LE(e, bound);
+  EXPECT_NE(message.find("diverged at step " + std::to_string(sim.steps_done())), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("kinetic energy"), std::string::npos) << message;
+  EXPECT_NE(message.find("vertex"), std::string::npos) << message;
+  EXPECT_NE(message.find("dt = 0.0005"), std::string::npos) << message;
+  // Long before the numbers overflow.
+  EXPECT_LT(sim.kinetic_energy(), 1e6 * bound);
+}
+
+TEST(Divergence, LegitimateMotionsNeverTripIt) {
+  // Free fall for 10 s: kinetic energy grows as t^2, the bound with it.
+  {
+    Simulation sim(assemble_gmap(make_grid(GridKind::Quad, 2, 2)),
+                   {IntegratorKind::kRK4, 1e-2, Vec3(0, 0, -9.81)});
+    sim.set_total_mass(1.0);
+    for (int s = 0; s < 1000; ++s)
+      ASSERT_NO_THROW(sim.step()) << s;
+  }
+  // A stretched mesh released with RK4 (stable dt): elastic energy turns
+  // into motion, the total stays that of the start.
+  {
+    Simulation sim = springs(IntegratorKind::kRK4, 1e-3, 60, Vec3::Zero());
+    sim.initialise();
+    for (Vec3& x : sim.position().values())
+      x *= 1.3;
+    for (int s = 0; s < 2000; ++s)
+      ASSERT_NO_THROW(sim.step()) << s;
+  }
+  // A body thrown upwards fast, under gravity, with springs.
+  {
+    Simulation sim = springs(IntegratorKind::kSymplecticEuler, 1e-3, 60, Vec3(0, 0, -9.81));
+    sim.initialise();
+    for (Vec3& v : sim.velocity().values())
+      v = Vec3(3, 0, 40);
+    for (int s = 0; s < 3000; ++s)
+      ASSERT_NO_THROW(sim.step()) << s;
+  }
+}
+
+TEST(Divergence, NonFiniteStateNamesTheVertex) {
+  Simulation sim = springs(IntegratorKind::kRK4, 1e-3, 60, Vec3(0, 0, -9.81));
+  sim.step();
+  sim.velocity().values()[3] = Vec3(0, std::nan(""), 0);
+  try {
+    sim.step();
+    FAIL() << "a NaN velocity went through";
+  } catch (const SimulationError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("exploded at step 2"), std::string::npos) << m;
+    EXPECT_NE(m.find("non-finite"), std::string::npos) << m;
+    EXPECT_NE(m.find("vertex"), std::string::npos) << m;
+  }
+}
+
+TEST(Divergence, WithoutAnEnergyScaleTheSpeedCheckStillHolds) {
+  // At rest, no gravity, no strain: the energy scale is 0 and only the speed
+  // check (a vertex crossing the whole body in one step) can trip.
+  Simulation sim = springs(IntegratorKind::kRK4, 1e-3, 0, Vec3::Zero());
+  sim.step();
+  EXPECT_EQ(sim.divergence().energy_bound(sim), 0);
+  const Real across = sim.divergence().length_scale();
+  ASSERT_GT(across, 0);
+  sim.velocity().values()[5] = Vec3(0.5 * across / 1e-3, 0, 0);  // half the body per step
+  EXPECT_NO_THROW(sim.step());
+  sim.velocity().values()[5] = Vec3(3 * across / 1e-3, 0, 0);
+  try {
+    sim.step();
+    FAIL() << "a vertex crossed the body three times in one step";
+  } catch (const SimulationError& e) {
+    EXPECT_NE(std::string(e.what()).find("farther than the whole body"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(Divergence, FactorZeroKeepsOnlyTheFiniteCheck) {
+  Simulation sim(assemble_gmap(make_grid(GridKind::Mix, 6, 6)),
+                 {IntegratorKind::kExplicitEuler, 2e-3, Vec3::Zero(), 0, false, 0.0});
+  sim.set_total_mass(0.1);
+  sim.add_force_model(std::make_unique<test::HalfEdgeSprings>(2000, 0));
+  sim.initialise();
+  for (Vec3& x : sim.position().values())
+    x *= 1.05;
+  // Grows far past any bound without stopping, until the numbers overflow.
+  bool stopped = false;
+  for (int s = 0; s < 100000 && !stopped; ++s) {
+    try {
+      sim.step();
+    } catch (const SimulationError& e) {
+      stopped = true;
+      EXPECT_NE(std::string(e.what()).find("non-finite"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_TRUE(stopped);
+}
+
+}  // namespace
+}  // namespace rift
