@@ -12,6 +12,7 @@
 #include "rift/gmap/gmap.hpp"
 #include "rift/pack/criterion.hpp"
 #include "rift/sim/force_model.hpp"
+#include "rift/sim/implicit_euler.hpp"
 #include "rift/sim/integrator.hpp"
 
 namespace rift {
@@ -24,6 +25,8 @@ struct SimulationSettings {
   int max_tears_per_step = 0;
   /// Check the G-map's validity after every rewrite (rift run --check).
   bool check_each_rewrite = false;
+  /// Solver settings of integrator = implicit_euler (the scene's [implicit]).
+  ImplicitSettings implicit = {};
 };
 
 /// A simulation that cannot go on: exploded state or an invalid map.
@@ -102,6 +105,9 @@ class Simulation {
   const Embedding<Real>& vertex_mass() const { return vertex_mass_; }
   /// Total internal force on each vertex slot at the start of the last step.
   const std::vector<Vec3>& internal_forces() const { return start_forces_; }
+  /// The implicit integrator, when settings().integrator is implicit_euler.
+  const ImplicitEuler* implicit() const { return implicit_.get(); }
+  ImplicitEuler* implicit() { return implicit_.get(); }
 
   Real kinetic_energy() const;
   /// Gravity plus every interaction's elastic energy.
@@ -113,12 +119,16 @@ class Simulation {
   void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& a,
                      bool store);
   void refresh_inverse_masses();
+  void implicit_step();  // simulation_implicit.cpp
   std::size_t apply_criteria();
   void check_finite() const;
 
   GMap map_;
   SimulationSettings settings_;
   Integrator integrator_;
+  std::unique_ptr<ImplicitEuler> implicit_;  // integrator = implicit_euler
+  std::vector<char> is_free_;                // implicit: inverse mass > 0
+  std::vector<Vec3> scratch_a_;              // implicit: accelerations, unused
   std::vector<std::unique_ptr<ForceModel>> models_;
   Embedding<Vec3> position_, velocity_;
   Embedding<Real> vertex_mass_, corner_mass_;
