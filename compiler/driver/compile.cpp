@@ -10,6 +10,8 @@
 #include "check/types.hpp"
 #include "check/warnings.hpp"
 #include "emit/pack_emit.hpp"
+#include "lower/derivative.hpp"
+#include "lower/kernel_plan.hpp"
 #include "parse/loader.hpp"
 #include "resolve/resolve.hpp"
 
@@ -22,6 +24,17 @@ struct Checked {
   std::vector<check::CheckedRule> rules;
   std::vector<check::CheckedInteraction> interactions;
 };
+
+void require_jacobians(const Checked& checked, diag::Diagnostics& diags) {
+  for (const check::CheckedInteraction& ci : checked.interactions) {
+    const lower::DerivativePlan d =
+        lower::plan_derivative(*ci.interaction, lower::plan_kernel(ci, checked.symbols));
+    if (!d.available) {
+      diags.error(d.where, "interaction '" + ci.interaction->name.text +
+                               "' has no Jacobian (--require-jacobians): " + d.why);
+    }
+  }
+}
 
 void run_checks(const ast::Program& program, diag::Diagnostics& diags, Checked& out) {
   // Semantic checks on a partly parsed pack would mostly report the holes
@@ -135,6 +148,7 @@ Result compile(const Options& options) {
       parse::load_program(options.inputs, sources, diags, options.include_dirs);
   Checked checked;
   run_checks(program, diags, checked);
+  if (options.require_jacobians && !diags.has_errors()) require_jacobians(checked, diags);
   if (!diags.has_errors() && !options.out_dir.empty()) {
     generate(program, checked, sources, options.out_dir, options.depfile, diags);
   }
@@ -148,6 +162,7 @@ Result compile_text(const std::string& path, const std::string& text, const Opti
   const ast::Program program = parse::load_text(path, text, sources, diags);
   Checked checked;
   run_checks(program, diags, checked);
+  if (options.require_jacobians && !diags.has_errors()) require_jacobians(checked, diags);
   return finish(diags);
 }
 

@@ -15,6 +15,8 @@ struct Options {
   std::vector<std::string> disabled_warnings;
   std::vector<std::string> include_dirs;  // searched for includes after the including file's folder
   bool warnings_as_errors = false;
+  /// Every interaction must have Jacobians (implicit integration).
+  bool require_jacobians = false;
 };
 
 struct Result {

@@ -108,8 +108,8 @@ class Emitter {
     std::string out = "[&]() { " + t + " " + acc + " = " + init + ";";
     if (mean) out += " std::int64_t " + n + " = 0;";
     out += " " + ctx_.map + ".for_each_sub_orbit(" + dart_path(e, ctx_) + ", " +
-           orbit_code(e.outer.dims) + ", " + orbit_code(e.orbit.dims) + ", [&]([[maybe_unused]] rift::Dart " +
-           ctx_.dart(e.var) + ") { " + step + " });";
+           orbit_code(e.outer.dims) + ", " + orbit_code(e.orbit.dims) +
+           ", [&]([[maybe_unused]] rift::Dart " + ctx_.dart(e.var) + ") { " + step + " });";
     if (mean) {
       out += " return " + n + " > 0 ? " + t + "(" + acc + " / static_cast<rift::Real>(" + n +
              ")) : " + t + "(" + zero_of(acc_type) + ");";
@@ -174,6 +174,7 @@ class Emitter {
     };
     if (f == "vec3") return "rift::Vec3(" + join() + ")";
     if (f == "mat3") return "(rift::Mat3() << " + join() + ").finished()";
+    if (f == "stop_gradient") return x[0];
     if (f == "identity") return "rift::Mat3(rift::Mat3::Identity())";
     if (f == "real") return "static_cast<rift::Real>(" + x[0] + ")";
     if (f == "int") return "static_cast<std::int64_t>(" + x[0] + ")";

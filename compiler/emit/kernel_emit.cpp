@@ -7,8 +7,10 @@
 #include <algorithm>
 
 #include "check/kernels.hpp"
+#include "emit/derivative_emit.hpp"
 #include "emit/emit_context.hpp"
 #include "emit/names.hpp"
+#include "lower/derivative.hpp"
 #include "lower/kernel_plan.hpp"
 
 namespace rift::emit {
@@ -53,6 +55,7 @@ std::string orbit_text(const std::vector<int>& dims) {
 struct KernelModel {
   const ast::Interaction* inter = nullptr;
   lower::KernelPlan plan;
+  lower::DerivativePlan derivative;  // Jacobians for implicit integrators
   std::set<std::string> embeddings;  // every embedding the kernel binds
   std::string cls;                   // StretchKernel
 };
@@ -61,6 +64,7 @@ KernelModel model_of(const check::CheckedInteraction& ci, const PackModel& model
   KernelModel k;
   k.inter = ci.interaction;
   k.plan = lower::plan_kernel(ci, *model.symbols);
+  k.derivative = lower::plan_derivative(*ci.interaction, k.plan);
   k.cls = kernel_class(ci.interaction->name.text);
   for (const lower::SlotUse& s : k.plan.slots)
     k.embeddings.insert(s.via);
@@ -270,6 +274,124 @@ void write_add_forces_all(Writer& w, const KernelModel& k, const PackModel& mode
   w.line();
 }
 
+/// The Jacobian vertex (0..k-1) of a position or velocity read.
+int jacobian_vertex(const KernelModel& k, const ast::Expr& read) {
+  int node = -1;
+  for (std::size_t v = 0; v < k.plan.nodes.size(); ++v) {
+    if (k.plan.nodes[v] == read.node) node = static_cast<int>(v);
+  }
+  std::vector<int> orbit = read.embedding->orbit.dims;
+  std::sort(orbit.begin(), orbit.end());
+  const int slot = k.plan.find(node, read.hops, orbit);
+  const auto& vs = k.derivative.vertex_slots;
+  return static_cast<int>(std::find(vs.begin(), vs.end(), slot) - vs.begin());
+}
+
+int jacobian_vertex_of_slot(const KernelModel& k, int slot) {
+  const auto& vs = k.derivative.vertex_slots;
+  return static_cast<int>(std::find(vs.begin(), vs.end(), slot) - vs.begin());
+}
+
+/// Tangent lets (one per active let, after the force computation's lets),
+/// then `per_force(i, tangent)` for each force with a nonzero tangent.
+template <class PerForce>
+void write_tangents(Writer& w, const KernelModel& k, const ExprContext& primal,
+                    PerForce&& per_force) {
+  TangentContext t;
+  t.primal = &primal;
+  t.lets = &k.inter->lets;
+  t.active_let = &k.derivative.active_let;
+  t.state_tangent = [&k](const ast::Expr& read) {
+    const std::string j = std::to_string(jacobian_vertex(k, read));
+    return std::string(read.name == check::kPositionEmbedding ? "tx[" : "tv[") + j + "]";
+  };
+  for (std::size_t i = 0; i < k.inter->lets.size(); ++i) {
+    if (!k.derivative.active_let[i]) continue;
+    const ast::Let& l = k.inter->lets[i];
+    std::string code = tangent_expr(*l.value, t);
+    if (code.empty()) code = cpp_type(l.value->type) + "(" + cpp_type(l.value->type) + "::Zero())";
+    write_sourced(w, l.value->loc,
+                  "[[maybe_unused]] const " + cpp_type(l.value->type) + " " +
+                      tangent_name(l.name.text) + " = " + code + ";");
+  }
+  for (std::size_t i = 0; i < k.inter->forces.size(); ++i) {
+    const std::string code = tangent_expr(*k.inter->forces[i].value, t);
+    if (!code.empty()) per_force(i, code);
+  }
+}
+
+void write_vertex_slots(Writer& w, const KernelModel& k) {
+  w.open("void " + k.cls + "::vertex_slots(const Match& m, rift::Slot* out) const {");
+  for (std::size_t j = 0; j < k.derivative.vertex_slots.size(); ++j) {
+    w.line("out[" + std::to_string(j) + "] = m." + slot_field(k.derivative.vertex_slots[j]) + ";");
+  }
+  w.close();
+  w.line();
+}
+
+// Dense blocks by forward mode: one tangent pass per direction (a
+// coordinate of one vertex's position or velocity), each giving one column
+// of the blocks of every force. Directions the forces do not depend on
+// (velocities of an undamped law) are skipped.
+void write_jacobian(Writer& w, const KernelModel& k) {
+  const ExprContext ctx = loop_context(k);
+  const int n = static_cast<int>(k.derivative.vertex_slots.size());
+  const std::string kk = std::to_string(n * n), k3 = std::to_string(3 * n);
+  w.open("void " + k.cls +
+         "::jacobian([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, "
+         "rift::Mat3* dfdx, rift::Mat3* dfdv) {");
+  w.open("for (int b = 0; b < " + kk + "; ++b) {");
+  w.line("dfdx[b].setZero();");
+  w.line("dfdv[b].setZero();");
+  w.close();
+  write_loop_prologue(w, k, ctx, "return;");
+  const std::string first = k.derivative.depends_on_x ? "0" : k3;
+  const std::string last = k.derivative.depends_on_v ? std::to_string(6 * n) : k3;
+  w.open("for (int dir = " + first + "; dir < " + last + "; ++dir) {");
+  w.line("const bool wrt_x = dir < " + k3 + ";");
+  w.line("const int j = (dir % " + k3 + ") / 3, c = dir % 3;");
+  w.line("rift::Vec3 tx[" + std::to_string(n) + "], tv[" + std::to_string(n) + "];");
+  w.open("for (int v = 0; v < " + std::to_string(n) + "; ++v) {");
+  w.line("tx[v].setZero();");
+  w.line("tv[v].setZero();");
+  w.close();
+  w.line("(wrt_x ? tx : tv)[j][c] = 1;");
+  write_tangents(w, k, ctx, [&](std::size_t i, const std::string& code) {
+    const int vi = jacobian_vertex_of_slot(k, k.plan.forces[i].vertex_slot);
+    w.line("(wrt_x ? dfdx : dfdv)[" + std::to_string(vi * n) + " + j].col(c) += rift::Vec3(" +
+           code + ");");
+  });
+  w.close();
+  w.close();
+  w.line();
+}
+
+// J·p in one tangent pass seeded with p's values at the match's vertices.
+void write_jacobian_product(Writer& w, const KernelModel& k) {
+  const ExprContext ctx = loop_context(k);
+  const int n = static_cast<int>(k.derivative.vertex_slots.size());
+  w.open("void " + k.cls +
+         "::jacobian_product([[maybe_unused]] const Match& m, [[maybe_unused]] const "
+         "rift::ForceInput& in, [[maybe_unused]] const rift::Vec3* px, [[maybe_unused]] const "
+         "rift::Vec3* pv, rift::Vec3* out) {");
+  write_loop_prologue(w, k, ctx, "return;");
+  std::string tx = "[[maybe_unused]] const rift::Vec3 tx[" + std::to_string(n) + "] = {";
+  std::string tv = "[[maybe_unused]] const rift::Vec3 tv[" + std::to_string(n) + "] = {";
+  for (int j = 0; j < n; ++j) {
+    const std::string at =
+        "m." + slot_field(k.derivative.vertex_slots[static_cast<std::size_t>(j)]);
+    tx += (j ? ", " : "") + std::string("px[") + at + "]";
+    tv += (j ? ", " : "") + std::string("pv[") + at + "]";
+  }
+  w.line(tx + "};");
+  w.line(tv + "};");
+  write_tangents(w, k, ctx, [&](std::size_t i, const std::string& code) {
+    w.line("out[m." + slot_field(k.plan.forces[i].vertex_slot) + "] += rift::Vec3(" + code + ");");
+  });
+  w.close();
+  w.line();
+}
+
 void write_reset(Writer& w, const KernelModel& k) {
   w.open("void " + k.cls + "::reset_stored([[maybe_unused]] const Match& m) {");
   for (const lower::ForceStore& fs : k.plan.forces) {
@@ -345,6 +467,25 @@ void declare_kernel(Writer& w, const check::CheckedInteraction& ci, const PackMo
       "bool store);");
   w.line("void reset_stored(const Match& m);");
   w.line("rift::Real energy(const Match& m, const rift::ForceInput& in) const;");
+  if (k.derivative.available) {
+    w.line("/// Jacobians derived by riftc (forward mode): the match's vertices, the blocks");
+    w.line("/// df_i/dx_j and df_i/dv_j (row-major), and the product J p.");
+    w.line("static constexpr int kJacobianVertices = " +
+           std::to_string(k.derivative.vertex_slots.size()) + ";");
+    w.line("void vertex_slots(const Match& m, rift::Slot* out) const;");
+    w.line(
+        "void jacobian(const Match& m, const rift::ForceInput& in, rift::Mat3* dfdx, rift::Mat3* "
+        "dfdv);");
+    w.line(
+        "void jacobian_product(const Match& m, const rift::ForceInput& in, const rift::Vec3* px, "
+        "const rift::Vec3* pv, rift::Vec3* out);");
+  } else {
+    w.line("/// Why riftc formed no Jacobian (an implicit integrator reports it).");
+    w.line("static constexpr const char* kJacobianUnavailable = " +
+           quote(w.where(k.derivative.where) + "interaction '" + inter.name.text +
+                 "' has no Jacobian: " + k.derivative.why) +
+           ";");
+  }
   w.line();
   w.middle(" private:");
   w.line(
@@ -376,6 +517,11 @@ void emit_kernel(Writer& w, const check::CheckedInteraction& ci, const PackModel
   write_add_forces_all(w, k, model);
   write_reset(w, k);
   write_energy(w, k);
+  if (k.derivative.available) {
+    write_vertex_slots(w, k);
+    write_jacobian(w, k);
+    write_jacobian_product(w, k);
+  }
 }
 
 }  // namespace rift::emit

@@ -29,6 +29,8 @@ class Writer {
   void resume();
 
   const std::string& str() const { return out_; }
+  /// "file:line:column: " of a location in a .rules file ("" when invalid).
+  std::string where(const diag::Location& loc) const;
 
  private:
   std::string output_name_;
