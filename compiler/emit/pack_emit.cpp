@@ -113,8 +113,8 @@ void write_header(Writer& w, const PackModel& m) {
            "std::vector<rift::Dart>* touched = nullptr);");
   });
   w.line();
-  for (const check::CheckedInteraction& ci : *m.interactions)
-    declare_kernel(w, ci, m);
+  for (const lower::InteractionPlan& ip : *m.interaction_plans)
+    declare_kernel(w, ip, m);
   for_each_criterion(m, [&](const ast::Criterion& c) { declare_criterion(w, c, m); });
   for (const check::CheckedRule& cr : *m.rules)
     declare_rule_class(w, cr.rule->name.text, cr.graph.hooks.size());
@@ -342,8 +342,8 @@ GeneratedPack generate_pack(const PackModel& m, const diag::SourceManager& sourc
   for (const check::CheckedRule& cr : *m.rules)
     emit_rule(w, cr, m);
   for_each_script(m, [&](const ast::Script& s) { emit_script(w, s, m); });
-  for (const check::CheckedInteraction& ci : *m.interactions)
-    emit_kernel(w, ci, m);
+  for (const lower::InteractionPlan& ip : *m.interaction_plans)
+    emit_kernel(w, ip, m);
   for_each_criterion(m, [&](const ast::Criterion& c) { emit_criterion(w, c, m); });
   for (const check::CheckedRule& cr : *m.rules)
     emit_rule_class(w, cr.rule->name.text, cr.rule->params);

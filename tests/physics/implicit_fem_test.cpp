@@ -25,8 +25,7 @@ std::unique_ptr<Simulation> beam(IntegratorKind kind, Real dt) {
   setup.settings.gravity = Vec3(0, 0, -9.81);
   setup.settings.implicit.cg_tolerance = 1e-8;
   setup.settings.implicit.cg_max_iterations = 1000;
-  setup.interactions = {
-      {"corotational", {{"young", 1e9}, {"poisson", 0.3}, {"damping", 0.02}}}};
+  setup.interactions = {{"corotational", {{"young", 1e9}, {"poisson", 0.3}, {"damping", 0.02}}}};
   setup.prepare = [](Simulation& sim) {
     sim.set_density(1000);
     sim.pin_where([](const Vec3& p) { return p.x() < 1e-9; });

@@ -77,8 +77,8 @@ class Simulation {
   ///  1. every interaction computes its forces at the current state and
   ///     stores them in its orbits; they are gathered per vertex;
   ///  2. every criterion is evaluated on those forces; the candidates are
-  ///     applied in a deterministic order (criterion order, then larger
-  ///     measure first, then smaller dart), each matched again just before it
+  ///     applied in a deterministic order (criterion order, then most
+  ///     critical first, then smaller dart), each matched again just before it
   ///     applies, up to max_tears_per_step;
   ///  3. if the map changed: masses of touched vertices and matches around
   ///     them are updated, and forces recomputed;
