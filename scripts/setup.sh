@@ -13,6 +13,7 @@ packages=(
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libpugixml-dev
   libpng-dev zlib1g-dev
   clang-format clang-tidy
+  clang libclang-rt-14-dev
 )
 
 missing=()

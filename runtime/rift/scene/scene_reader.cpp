@@ -4,11 +4,14 @@
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <set>
+#include <string_view>
 
 #include "rift/core/input_error.hpp"
 #include "rift/mesh/generators.hpp"
 #include "rift/scene/scene.hpp"
+#include "rift/scene/scene_reader.hpp"
 #include "rift/scene/suggest.hpp"
 
 namespace rift {
@@ -21,13 +24,14 @@ int line_of(const toml::node& node) {
 
 class SceneReader {
  public:
-  SceneReader(std::string path, const Catalog& catalog)
-      : path_(std::move(path)), catalog_(catalog) {}
+  /// `text`: the scene's TOML; none: read the file `path`.
+  SceneReader(std::string path, std::optional<std::string_view> text, const Catalog& catalog)
+      : path_(std::move(path)), text_(text), catalog_(catalog) {}
 
   Scene read() {
     toml::table root;
     try {
-      root = toml::parse_file(path_);
+      root = text_ ? toml::parse(*text_, path_) : toml::parse_file(path_);
     } catch (const toml::parse_error& e) {
       throw InputError(path_, static_cast<int>(e.source().begin.line),
                        "not valid TOML: " + std::string(e.description()));
@@ -428,6 +432,7 @@ class SceneReader {
   }
 
   std::string path_;
+  std::optional<std::string_view> text_;
   const Catalog& catalog_;
 };
 
@@ -451,7 +456,11 @@ bool ComponentUse::boolean(const std::string& param) const {
 Scene read_scene(const std::string& path, const Catalog& catalog) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, 0, "no such scene file");
-  return SceneReader(path, catalog).read();
+  return SceneReader(path, std::nullopt, catalog).read();
+}
+
+Scene read_scene_text(const std::string& path, std::string_view text, const Catalog& catalog) {
+  return SceneReader(path, text, catalog).read();
 }
 
 }  // namespace rift

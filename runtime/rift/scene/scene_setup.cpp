@@ -158,7 +158,11 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
       }
     }
   }
-  for (const auto& [lo, hi] : scene.pins.boxes) {
+  for (const auto& box : scene.pins.boxes) {
+    // Named rather than structured bindings: C++20 lets a lambda capture
+    // those, clang 14 does not yet.
+    const Vec3& lo = box.first;
+    const Vec3& hi = box.second;
     std::size_t in_box = 0;
     m.for_each_cell(Orbit::cell(0, n), [&](Dart d) {
       const Vec3& p = position[d];

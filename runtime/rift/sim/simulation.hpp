@@ -119,6 +119,8 @@ class Simulation {
   void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& a,
                      bool store);
   void refresh_inverse_masses();
+  void refresh_inverse_masses(std::span<const Dart> region);
+  void refresh_inverse_mass(Slot s);
   void implicit_step();  // simulation_implicit.cpp
   std::size_t apply_criteria();
   void check_finite() const;
