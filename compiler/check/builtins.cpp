@@ -42,6 +42,8 @@ const std::map<std::string, std::vector<Signature>, std::less<>>& table() {
     m["max_eigenvalue"] = {{{M}, R}};
     m["max_eigenvector"] = {{{M}, V}};
     m["eigenvalues"] = {{{M}, V}};
+    // Its argument's value, held constant when riftc differentiates forces.
+    m["stop_gradient"] = {{{R}, R}, {{V}, V}, {{M}, M}};
     return m;
   }();
   return t;

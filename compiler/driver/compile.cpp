@@ -10,7 +10,9 @@
 #include "check/types.hpp"
 #include "check/warnings.hpp"
 #include "emit/pack_emit.hpp"
+#include "lower/derivative.hpp"
 #include "lower/interaction_plan.hpp"
+#include "lower/kernel_plan.hpp"
 #include "parse/loader.hpp"
 #include "resolve/resolve.hpp"
 
@@ -23,6 +25,17 @@ struct Checked {
   std::vector<check::CheckedRule> rules;
   std::vector<check::CheckedInteraction> interactions;
 };
+
+void require_jacobians(const Checked& checked, diag::Diagnostics& diags) {
+  for (const check::CheckedInteraction& ci : checked.interactions) {
+    const lower::DerivativePlan d =
+        lower::plan_derivative(*ci.interaction, lower::plan_kernel(ci, checked.symbols));
+    if (!d.available) {
+      diags.error(d.where, "interaction '" + ci.interaction->name.text +
+                               "' has no Jacobian (--require-jacobians): " + d.why);
+    }
+  }
+}
 
 void run_checks(const ast::Program& program, diag::Diagnostics& diags, Checked& out) {
   // Semantic checks on a partly parsed pack would mostly report the holes
@@ -144,6 +157,7 @@ Result compile(const Options& options) {
       parse::load_program(options.inputs, sources, diags, options.include_dirs);
   Checked checked;
   run_checks(program, diags, checked);
+  if (options.require_jacobians && !diags.has_errors()) require_jacobians(checked, diags);
   if (!diags.has_errors() && !options.out_dir.empty()) {
     generate(program, checked, sources, options, diags);
   }
@@ -157,6 +171,7 @@ Result compile_text(const std::string& path, const std::string& text, const Opti
   const ast::Program program = parse::load_text(path, text, sources, diags);
   Checked checked;
   run_checks(program, diags, checked);
+  if (options.require_jacobians && !diags.has_errors()) require_jacobians(checked, diags);
   if (!diags.has_errors() && !options.out_dir.empty()) {
     generate(program, checked, sources, options, diags);
   }

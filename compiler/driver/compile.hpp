@@ -19,6 +19,8 @@ struct Options {
   std::vector<std::string> include_dirs;  // searched for includes after the including file's folder
   bool warnings_as_errors = false;
   bool line_directives = true;  // #line directives into the .rules files
+  /// Every interaction must have Jacobians (implicit integration).
+  bool require_jacobians = false;
 };
 
 struct Result {

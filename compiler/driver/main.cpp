@@ -23,6 +23,10 @@ options:
   --no-line-directives
                   no #line directives into the .rules files: the output then
                   does not change when lines are added to them (diffable)
+  --require-jacobians
+                  an error when an interaction's forces cannot be differentiated
+                  (for packs meant for integrator = "implicit_euler"); without
+                  it such an interaction only lacks Jacobians
   -Wno-NAME       disable warning NAME
   -Werror         treat warnings as errors
   --list-warnings print the names of all warnings
@@ -67,6 +71,8 @@ int main(int argc, char** argv) {
     } else if (arg == "-I" || (arg.rfind("-I", 0) == 0 && arg.size() > 2)) {
       if (arg == "-I" && k + 1 >= argc) return usage_error("-I needs a directory");
       options.include_dirs.push_back(arg == "-I" ? std::string(argv[++k]) : arg.substr(2));
+    } else if (arg == "--require-jacobians") {
+      options.require_jacobians = true;
     } else if (arg == "-Werror") {
       options.warnings_as_errors = true;
     } else if (arg.rfind("-Wno-", 0) == 0) {

@@ -174,6 +174,7 @@ class Emitter {
     };
     if (f == "vec3") return "rift::Vec3(" + join() + ")";
     if (f == "mat3") return "(rift::Mat3() << " + join() + ").finished()";
+    if (f == "stop_gradient") return x[0];
     if (f == "identity") return "rift::Mat3(rift::Mat3::Identity())";
     if (f == "real") return "static_cast<rift::Real>(" + x[0] + ")";
     if (f == "int") return "static_cast<std::int64_t>(" + x[0] + ")";

@@ -149,6 +149,8 @@ class Renderer {
         return std::string("(rift::Mat3() << ") + join() + ").finished()";
       case B::Identity:
         return "rift::Mat3::Identity()";
+      case B::StopGradient:
+        return x[0];
       case B::Real:
         return std::string("static_cast<rift::Real>(") + x[0] + ")";
       case B::Int:

@@ -7,9 +7,12 @@
 // allocation, no virtual call) that the force pass and energy() share.
 #include <algorithm>
 
+#include "check/kernels.hpp"
+#include "emit/derivative_emit.hpp"
 #include "emit/emit_context.hpp"
 #include "emit/ir_render.hpp"
 #include "emit/names.hpp"
+#include "lower/derivative.hpp"
 #include "lower/interaction_plan.hpp"
 
 namespace rift::emit {
@@ -71,8 +74,9 @@ struct Kernel {
   const ast::Interaction* inter = nullptr;
   std::string cls;
   std::vector<std::string> slots;
-  std::set<std::string> columns;  // embeddings the body reads through column pointers
-  bool reads_state = false;       // the body reads ForceInput (positions, velocities)
+  std::set<std::string> columns;     // embeddings the body reads through column pointers
+  bool reads_state = false;          // the body reads ForceInput (positions, velocities)
+  lower::DerivativePlan derivative;  // Jacobians for implicit integrators
 };
 
 Kernel kernel_of(const InteractionPlan& plan) {
@@ -81,6 +85,7 @@ Kernel kernel_of(const InteractionPlan& plan) {
   k.inter = plan.interaction;
   k.cls = kernel_class(k.inter->name.text);
   k.slots = slot_names(plan.kernel);
+  k.derivative = lower::plan_derivative(*k.inter, plan.kernel);
   const ir::Body& b = plan.body;
   auto scan = [&](ir::ExprId root) {
     if (root == ir::kNoExpr) return;
@@ -342,6 +347,165 @@ void write_add_forces_all(Writer& w, const Kernel& k) {
   w.line();
 }
 
+// ---- Jacobians (lower/derivative.*, emit/derivative_emit.*). The tangents
+// are rendered from the checked AST (the pass was written before the IR
+// landed); the primal lets and whens come from the IR, in source order.
+
+/// The slot of an AST read of the force loop.
+int slot_of(const Kernel& k, const ast::Expr& read) {
+  const lower::KernelPlan& plan = k.plan->kernel;
+  int node = -1;
+  for (std::size_t v = 0; v < plan.nodes.size(); ++v) {
+    if (plan.nodes[v] == read.node) node = static_cast<int>(v);
+  }
+  std::vector<int> orbit = read.embedding->orbit.dims;
+  std::sort(orbit.begin(), orbit.end());
+  return plan.find(node, read.hops, orbit);
+}
+
+int jacobian_vertex_of_slot(const Kernel& k, int slot) {
+  const auto& vs = k.derivative.vertex_slots;
+  return static_cast<int>(std::find(vs.begin(), vs.end(), slot) - vs.begin());
+}
+
+/// AST expressions of the force loop as C++ (primal values inside tangents).
+ExprContext ast_loop_context(const Kernel& k) {
+  ExprContext ctx;
+  ctx.dart = [](const std::string& node) { return dart_name(node); };
+  ctx.args = "p_";
+  ctx.params = "pack_";
+  ctx.read = [&k](const ast::Expr& e) {
+    const std::string at = std::string("m.") + k.slots[static_cast<std::size_t>(slot_of(k, e))];
+    if (e.name == check::kPositionEmbedding) return std::string("in.x[") + at + "]";
+    if (e.name == check::kVelocityEmbedding) return std::string("in.v[") + at + "]";
+    return std::string("c.") + member_name(e.name) + "[" + at + "]";
+  };
+  return ctx;
+}
+
+/// The primal body (lets and whens in source order); `on_fail` runs where a
+/// `when` fails.
+void write_primal(Writer& w, const Kernel& k, const std::string& on_fail) {
+  const ir::Body& b = k.plan->body;
+  const RenderContext ctx = loop_context(k);
+  if (!k.columns.empty()) w.line("[[maybe_unused]] const Columns c = columns();");
+  for (const ir::Stmt& s : b.stmts) {
+    if (s.kind == ir::Stmt::Kind::When) {
+      write_sourced(w, s.loc, "if (!" + render(b.graph, s.cond, ctx) + ") " + on_fail);
+      continue;
+    }
+    const ir::Let& l = b.lets[static_cast<std::size_t>(s.let)];
+    write_sourced(w, l.loc,
+                  "[[maybe_unused]] const " + cpp_type(b.graph[l.value].type) + " " +
+                      let_name(l.name) + " = " + render(b.graph, l.value, ctx) + ";");
+  }
+}
+
+/// Tangent lets (one per active let), then `per_force(i, tangent)` for each
+/// force with a nonzero tangent; tx[j], tv[j] are the tangents of vertex j.
+template <class PerForce>
+void write_tangents(Writer& w, const Kernel& k, const ExprContext& primal, PerForce&& per_force) {
+  TangentContext t;
+  t.primal = &primal;
+  t.lets = &k.inter->lets;
+  t.active_let = &k.derivative.active_let;
+  t.state_tangent = [&k](const ast::Expr& read) {
+    const std::string j = std::to_string(jacobian_vertex_of_slot(k, slot_of(k, read)));
+    return std::string(read.name == check::kPositionEmbedding ? "tx[" : "tv[") + j + "]";
+  };
+  for (std::size_t i = 0; i < k.inter->lets.size(); ++i) {
+    if (!k.derivative.active_let[i]) continue;
+    const ast::Let& l = k.inter->lets[i];
+    std::string code = tangent_expr(*l.value, t);
+    const std::string type = cpp_type(l.value->type);
+    if (code.empty()) code = type + "(" + type + "::Zero())";
+    write_sourced(
+        w, l.value->loc,
+        "[[maybe_unused]] const " + type + " " + tangent_name(l.name.text) + " = " + code + ";");
+  }
+  for (std::size_t i = 0; i < k.inter->forces.size(); ++i) {
+    const std::string code = tangent_expr(*k.inter->forces[i].value, t);
+    if (!code.empty()) per_force(i, code);
+  }
+}
+
+void write_vertex_slots(Writer& w, const Kernel& k) {
+  w.open("void " + k.cls + "::vertex_slots(const Match& m, rift::Slot* out) const {");
+  for (std::size_t j = 0; j < k.derivative.vertex_slots.size(); ++j) {
+    w.line("out[" + std::to_string(j) + "] = m." +
+           k.slots[static_cast<std::size_t>(k.derivative.vertex_slots[j])] + ";");
+  }
+  w.close();
+  w.line();
+}
+
+// Dense blocks by forward mode: one tangent pass per direction (a
+// coordinate of one vertex's position or velocity), each giving one column
+// of the blocks of every force. Directions the forces do not depend on
+// (velocities of an undamped law) are skipped.
+void write_jacobian(Writer& w, const Kernel& k) {
+  const ExprContext ctx = ast_loop_context(k);
+  const ir::Body& b = k.plan->body;
+  const int n = static_cast<int>(k.derivative.vertex_slots.size());
+  const std::string kk = std::to_string(n * n), k3 = std::to_string(3 * n);
+  w.open("void " + k.cls +
+         "::jacobian([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, "
+         "rift::Mat3* dfdx, rift::Mat3* dfdv) {");
+  w.open("for (int b = 0; b < " + kk + "; ++b) {");
+  w.line("dfdx[b].setZero();");
+  w.line("dfdv[b].setZero();");
+  w.close();
+  write_primal(w, k, "return;");
+  const std::string first = k.derivative.depends_on_x ? "0" : k3;
+  const std::string last = k.derivative.depends_on_v ? std::to_string(6 * n) : k3;
+  w.open("for (int dir = " + first + "; dir < " + last + "; ++dir) {");
+  w.line("const bool wrt_x = dir < " + k3 + ";");
+  w.line("const int j = (dir % " + k3 + ") / 3, c3 = dir % 3;");
+  w.line("rift::Vec3 tx[" + std::to_string(n) + "], tv[" + std::to_string(n) + "];");
+  w.open("for (int v = 0; v < " + std::to_string(n) + "; ++v) {");
+  w.line("tx[v].setZero();");
+  w.line("tv[v].setZero();");
+  w.close();
+  w.line("(wrt_x ? tx : tv)[j][c3] = 1;");
+  write_tangents(w, k, ctx, [&](std::size_t i, const std::string& code) {
+    const int vi = jacobian_vertex_of_slot(k, b.forces[i].vertex_slot);
+    w.line("(wrt_x ? dfdx : dfdv)[" + std::to_string(vi * n) + " + j].col(c3) += rift::Vec3(" +
+           code + ");");
+  });
+  w.close();
+  w.close();
+  w.line();
+}
+
+// J·p in one tangent pass seeded with p's values at the match's vertices.
+void write_jacobian_product(Writer& w, const Kernel& k) {
+  const ExprContext ctx = ast_loop_context(k);
+  const ir::Body& b = k.plan->body;
+  const int n = static_cast<int>(k.derivative.vertex_slots.size());
+  w.open("void " + k.cls +
+         "::jacobian_product([[maybe_unused]] const Match& m, [[maybe_unused]] const "
+         "rift::ForceInput& in, [[maybe_unused]] const rift::Vec3* px, [[maybe_unused]] const "
+         "rift::Vec3* pv, rift::Vec3* out) {");
+  write_primal(w, k, "return;");
+  std::string tx = "[[maybe_unused]] const rift::Vec3 tx[" + std::to_string(n) + "] = {";
+  std::string tv = "[[maybe_unused]] const rift::Vec3 tv[" + std::to_string(n) + "] = {";
+  for (int j = 0; j < n; ++j) {
+    const std::string at =
+        "m." +
+        k.slots[static_cast<std::size_t>(k.derivative.vertex_slots[static_cast<std::size_t>(j)])];
+    tx += (j ? ", " : "") + std::string("px[") + at + "]";
+    tv += (j ? ", " : "") + std::string("pv[") + at + "]";
+  }
+  w.line(tx + "};");
+  w.line(tv + "};");
+  write_tangents(w, k, ctx, [&](std::size_t i, const std::string& code) {
+    w.line("out[m." + k.slots[static_cast<std::size_t>(b.forces[i].vertex_slot)] +
+           "] += rift::Vec3(" + code + ");");
+  });
+  w.close();
+  w.line();
+}
+
 void write_reset(Writer& w, const Kernel& k) {
   const ir::Body& b = k.plan->body;
   w.open("void " + k.cls + "::reset_stored(" +
@@ -414,6 +578,25 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
       "bool store);");
   w.line("void reset_stored(const Match& m);");
   w.line("rift::Real energy(const Match& m, const rift::ForceInput& in) const;");
+  if (k.derivative.available) {
+    w.line("/// Jacobians derived by riftc (forward mode): the match's vertices, the blocks");
+    w.line("/// df_i/dx_j and df_i/dv_j (row-major), and the product J p.");
+    w.line("static constexpr int kJacobianVertices = " +
+           std::to_string(k.derivative.vertex_slots.size()) + ";");
+    w.line("void vertex_slots(const Match& m, rift::Slot* out) const;");
+    w.line(
+        "void jacobian(const Match& m, const rift::ForceInput& in, rift::Mat3* dfdx, rift::Mat3* "
+        "dfdv);");
+    w.line(
+        "void jacobian_product(const Match& m, const rift::ForceInput& in, const rift::Vec3* px, "
+        "const rift::Vec3* pv, rift::Vec3* out);");
+  } else {
+    w.line("/// Why riftc formed no Jacobian (an implicit integrator reports it).");
+    w.line("static constexpr const char* kJacobianUnavailable = " +
+           quote(w.where(k.derivative.where) + "interaction '" + inter.name.text +
+                 "' has no Jacobian: " + k.derivative.why) +
+           ";");
+  }
   w.line();
   w.middle(" private:");
   w.line("/// The columns the body reads, loaded once per pass.");
@@ -466,6 +649,11 @@ void emit_kernel(Writer& w, const InteractionPlan& plan, const PackModel& model)
   write_add_forces_all(w, k);
   write_reset(w, k);
   write_energy(w, k);
+  if (k.derivative.available) {
+    write_vertex_slots(w, k);
+    write_jacobian(w, k);
+    write_jacobian_product(w, k);
+  }
 }
 
 }  // namespace rift::emit

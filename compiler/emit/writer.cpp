@@ -45,4 +45,10 @@ std::string quote(std::string_view text) {
   return out + "\"";
 }
 
+std::string Writer::where(const diag::Location& loc) const {
+  if (!loc.valid()) return "";
+  return sources_->file(loc.file).path + ":" + std::to_string(loc.begin.line) + ":" +
+         std::to_string(loc.begin.column) + ": ";
+}
+
 }  // namespace rift::emit

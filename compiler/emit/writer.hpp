@@ -32,6 +32,8 @@ class Writer {
   void set_line_directives(bool on) { line_directives_ = on; }
 
   const std::string& str() const { return out_; }
+  /// "file:line:column: " of a location in a .rules file ("" when invalid).
+  std::string where(const diag::Location& loc) const;
 
  private:
   std::string output_name_;

@@ -9,7 +9,7 @@ namespace rift::ir {
 
 namespace {
 
-constexpr std::array<std::pair<Builtin, std::string_view>, 33> kBuiltins = {{
+constexpr std::array<std::pair<Builtin, std::string_view>, 34> kBuiltins = {{
     {Builtin::Sqrt, "sqrt"},
     {Builtin::Exp, "exp"},
     {Builtin::Log, "log"},
@@ -43,6 +43,7 @@ constexpr std::array<std::pair<Builtin, std::string_view>, 33> kBuiltins = {{
     {Builtin::MaxEigenvalue, "max_eigenvalue"},
     {Builtin::MaxEigenvector, "max_eigenvector"},
     {Builtin::Eigenvalues, "eigenvalues"},
+    {Builtin::StopGradient, "stop_gradient"},
 }};
 
 constexpr std::array<std::pair<Aggregate, std::string_view>, 5> kAggregates = {{

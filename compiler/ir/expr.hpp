@@ -106,6 +106,7 @@ enum class Builtin : std::uint8_t {
   MaxEigenvalue,
   MaxEigenvector,
   Eigenvalues,
+  StopGradient,  // its operand's value, held constant by differentiation
 };
 
 /// Aggregations of Collect and Fold.

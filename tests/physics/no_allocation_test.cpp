@@ -37,9 +37,12 @@ void operator delete[](void* p, std::size_t) noexcept {
 namespace rift::physics_test {
 namespace {
 
-long allocations_during_steps(GridKind kind, const std::vector<Use>& criteria, int steps) {
+long allocations_during_steps(GridKind kind, const std::vector<Use>& criteria, int steps,
+                              IntegratorKind integrator = IntegratorKind::kRK4,
+                              JacobianMode jacobian = JacobianMode::kAssembled) {
   SimSetup setup;
-  setup.settings = {IntegratorKind::kRK4, 5e-4, Vec3(0, 0, -9.81), 0, false};
+  setup.settings = {integrator, 5e-4, Vec3(0, 0, -9.81), 0, false};
+  setup.settings.implicit.jacobian = jacobian;
   setup.interactions = {{"stretch", {{"stiffness", 60.0}, {"damping", 0.1}}},
                         {"shear", {{"stiffness", 43.0}, {"damping", 0.1}}},
                         {"bend", {{"stiffness", 10.0}, {"damping", 0.1}}}};
@@ -62,6 +65,17 @@ TEST(NoAllocation, Rk4StepsOfTheClothAllocateNothing) {
   for (GridKind kind : {GridKind::Quad, GridKind::Tri, GridKind::Mix}) {
     EXPECT_EQ(allocations_during_steps(kind, {}, 100), 0) << static_cast<int>(kind);
   }
+}
+
+TEST(NoAllocation, ImplicitEulerStepsOfTheClothAllocateNothing) {
+  // Element Jacobians, block Jacobi and CG: every buffer keeps its capacity.
+  for (GridKind kind : {GridKind::Quad, GridKind::Tri, GridKind::Mix}) {
+    EXPECT_EQ(allocations_during_steps(kind, {}, 20, IntegratorKind::kImplicitEuler), 0)
+        << static_cast<int>(kind);
+  }
+  EXPECT_EQ(allocations_during_steps(GridKind::Mix, {}, 20, IntegratorKind::kImplicitEuler,
+                                     JacobianMode::kMatrixFree),
+            0);
 }
 
 TEST(NoAllocation, EvaluatingACriterionThatDoesNotHoldAllocatesNothing) {

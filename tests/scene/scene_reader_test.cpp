@@ -118,8 +118,8 @@ TEST_F(SceneFiles, WrongValuesAreRejectedWithWhatIsExpected) {
   EXPECT_EQ(with("threshold = 0.5", "threshold = \"high\""),
             ":24: error: 'threshold' must be a number, not a string");
   EXPECT_EQ(with("rk4", "rk5"),
-            ":7: error: unknown integrator 'rk5': expected euler, symplectic_euler or rk4 (did "
-            "you mean 'rk4'?)");
+            ":7: error: unknown integrator 'rk5': expected euler, symplectic_euler, rk4 or "
+            "implicit_euler (did you mean 'rk4'?)");
   EXPECT_EQ(with("\"grid:quad:10x10\"", "\"missing.obj\""),
             ":3: error: mesh file '" + (dir_ / "missing.obj").string() + "' does not exist");
   EXPECT_EQ(with("\"grid:quad:10x10\"", "\"grid:quad:0x10\""),
@@ -139,6 +139,50 @@ TEST_F(SceneFiles, WrongValuesAreRejectedWithWhatIsExpected) {
             "or bottom-right");
   EXPECT_EQ(with("\"png\"", "\"gif\""),
             ":28: error: unknown output format 'gif': expected vtu, obj, png or csv");
+}
+
+TEST_F(SceneFiles, ImplicitSolverKeys) {
+  auto implicit = [&](const std::string& table) {
+    std::string text = kGood;
+    text.replace(text.find("\"rk4\""), 5, "\"implicit_euler\"");
+    text.replace(text.find("[mass]"), 6, "[implicit]\n" + table + "\n\n[mass]");
+    return text;
+  };
+  const Scene s = read_scene(write(implicit("cg_tolerance = 1e-5\ncg_max_iterations = 40\n"
+                                            "preconditioner = \"incomplete_cholesky\"\n"
+                                            "newton_iterations = 3\njacobian = \"matrix_free\"")),
+                             test_catalog());
+  EXPECT_EQ(s.integrator, IntegratorKind::kImplicitEuler);
+  EXPECT_EQ(s.implicit.cg_tolerance, 1e-5);
+  EXPECT_EQ(s.implicit.cg_max_iterations, 40);
+  EXPECT_EQ(s.implicit.preconditioner, PreconditionerKind::kIncompleteCholesky);
+  EXPECT_EQ(s.implicit.newton_iterations, 3);
+  EXPECT_EQ(s.implicit.jacobian, JacobianMode::kMatrixFree);
+  // Defaults without the table.
+  std::string plain = kGood;
+  plain.replace(plain.find("\"rk4\""), 5, "\"implicit_euler\"");
+  const Scene d = read_scene(write(plain), test_catalog());
+  EXPECT_EQ(d.implicit.preconditioner, PreconditionerKind::kJacobi);
+  EXPECT_EQ(d.implicit.newton_iterations, 1);
+
+  EXPECT_EQ(error(implicit("preconditioner = \"ilu\"")),
+            ":13: error: unknown preconditioner 'ilu': expected none, jacobi or "
+            "incomplete_cholesky");
+  EXPECT_EQ(error(implicit("cg_tolerance = 2.0")),
+            ":13: error: 'cg_tolerance' is a relative residual: below 1");
+  EXPECT_EQ(error(implicit("cg_iterations = 5")),
+            ":13: error: unknown key 'cg_iterations' in [implicit] (did you mean "
+            "'cg_max_iterations'?)");
+  EXPECT_EQ(error(implicit("newton_iterations = 0")),
+            ":13: error: 'newton_iterations' must be between 1 and 1000, not 0");
+  EXPECT_EQ(error(implicit("jacobian = \"dense\"")),
+            ":13: error: unknown jacobian 'dense': expected assembled or matrix_free");
+  // [implicit] with an explicit integrator is a mistake worth naming.
+  std::string rk4 = kGood;
+  rk4.replace(rk4.find("[mass]"), 6, "[implicit]\ncg_tolerance = 1e-4\n\n[mass]");
+  EXPECT_EQ(error(rk4),
+            ":12: error: [implicit] sets the solver of integrator = \"implicit_euler\", but the "
+            "scene's integrator is 'rk4'");
 }
 
 TEST_F(SceneFiles, MissingPiecesAndBrokenToml) {

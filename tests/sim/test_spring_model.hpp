@@ -53,10 +53,54 @@ class HalfEdgeSprings final : public ForceModel {
 
   std::size_t active_matches() const override { return springs_.size(); }
 
+  // Analytic Jacobians (hand-derived, to test the implicit integrator apart
+  // from riftc's derivatives). With d = x_b - x_a, l = |d|, u = d / l,
+  // P = I - u uᵀ, w = v_b - v_a and t = k (l - L) + c w·u, f_a = t u = -f_b:
+  //   ∂f_a/∂x_b = u (k u + c P w / l)ᵀ + t P / l = K,   ∂f_a/∂x_a = -K,
+  //   ∂f_a/∂v_b = c u uᵀ,                              ∂f_a/∂v_a = -c u uᵀ,
+  // and f_b = -f_a gives the other row.
+  int jacobian_vertices() const override { return 2; }
+
+  void jacobians(const ForceInput& in, Slot* slots, Mat3* dfdx, Mat3* dfdv) override {
+    for (std::size_t i = 0; i < springs_.size(); ++i) {
+      Mat3 kx, kv;
+      blocks(in, i, kx, kv);
+      slots[2 * i] = springs_[i].a;
+      slots[2 * i + 1] = springs_[i].b;
+      Mat3* jx = dfdx + 4 * i;
+      Mat3* jv = dfdv + 4 * i;
+      jx[0] = -kx, jx[1] = kx, jx[2] = kx, jx[3] = -kx;  // (a,a) (a,b) (b,a) (b,b)
+      jv[0] = -kv, jv[1] = kv, jv[2] = kv, jv[3] = -kv;
+    }
+  }
+
+  void add_jacobian_product(const ForceInput& in, const Vec3* px, const Vec3* pv,
+                            Vec3* out) override {
+    for (std::size_t i = 0; i < springs_.size(); ++i) {
+      Mat3 kx, kv;
+      blocks(in, i, kx, kv);
+      const Slot a = springs_[i].a, b = springs_[i].b;
+      const Vec3 df = kx * (px[b] - px[a]) + kv * (pv[b] - pv[a]);
+      out[a] += df;
+      out[b] -= df;
+    }
+  }
+
  private:
   struct Spring {
     Slot a, b;
   };
+  void blocks(const ForceInput& in, std::size_t i, Mat3& kx, Mat3& kv) const {
+    const Spring& s = springs_[i];
+    const Vec3 d = in.x[s.b] - in.x[s.a];
+    const Real len = d.norm();
+    const Vec3 u = d / len;
+    const Vec3 w = in.v[s.b] - in.v[s.a];
+    const Mat3 p = Mat3::Identity() - u * u.transpose();
+    const Real tension = k_ * (len - rest_[i]) + c_ * w.dot(u);
+    kx = u * (k_ * u + c_ * p * w / len).transpose() + tension * p / len;
+    kv = c_ * u * u.transpose();
+  }
   std::string name_ = "test_half_edge_springs";
   Real k_, c_;
   Embedding<Vec3> position_;

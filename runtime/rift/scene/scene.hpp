@@ -10,6 +10,7 @@
 
 #include "rift/embed/value.hpp"
 #include "rift/scene/catalog.hpp"
+#include "rift/sim/implicit_euler.hpp"
 #include "rift/sim/integrator.hpp"
 
 namespace rift {
@@ -65,6 +66,8 @@ struct Scene {
   SceneMesh mesh;
   IntegratorKind integrator = IntegratorKind::kRK4;
   Real dt = 1e-3;
+  ImplicitSettings implicit;  ///< [implicit], for integrator = "implicit_euler"
+  int implicit_line = 0;      ///< line of [implicit], 0 when absent
   std::int64_t steps = 1000;
   Vec3 gravity = Vec3(0, 0, -9.81);
   /// Safety factor of the divergence check (rift/sim/divergence.hpp); 0: off.

@@ -39,12 +39,13 @@ class SceneReader {
     Scene scene;
     scene.path = path_;
     scene.name = std::filesystem::path(path_).stem().string();
-    check_keys(
-        root,
-        {"mesh", "simulation", "mass", "pin", "interaction", "criterion", "tearing", "output"},
-        "the scene");
+    check_keys(root,
+               {"mesh", "simulation", "implicit", "mass", "pin", "interaction", "criterion",
+                "tearing", "output"},
+               "the scene");
     read_mesh(require_table(root, "mesh", "the scene"), scene.mesh);
     if (auto* t = optional_table(root, "simulation")) read_simulation(*t, scene);
+    if (auto* t = optional_table(root, "implicit")) read_implicit(*t, scene);
     if (auto* t = optional_table(root, "mass")) read_mass(*t, scene);
     if (auto* t = optional_table(root, "pin")) read_pins(*t, scene.pins);
     read_components(root, "interaction", catalog_.interactions, scene.interactions);
@@ -57,6 +58,12 @@ class SceneReader {
     }
     scene.output.dir = "out/" + scene.name;
     if (auto* t = optional_table(root, "output")) read_output(*t, scene.output);
+    if (scene.implicit_line > 0 && scene.integrator != IntegratorKind::kImplicitEuler) {
+      fail(scene.implicit_line,
+           "[implicit] sets the solver of integrator = \"implicit_euler\", but the scene's "
+           "integrator is '" +
+               std::string(to_string(scene.integrator)) + "'");
+    }
     if (scene.interactions.empty()) {
       throw InputError(path_, 0,
                        "the scene has no [[interaction]]: nothing would move but gravity");
@@ -211,8 +218,9 @@ class SceneReader {
       const std::string name = string(*n, "integrator");
       auto kind = parse_integrator(name);
       if (!kind) {
-        fail(*n, "unknown integrator '" + name + "': expected euler, symplectic_euler or rk4" +
-                     did_you_mean(name, {"euler", "symplectic_euler", "rk4"}));
+        fail(*n, "unknown integrator '" + name +
+                     "': expected euler, symplectic_euler, rk4 or implicit_euler" +
+                     did_you_mean(name, {"euler", "symplectic_euler", "rk4", "implicit_euler"}));
       }
       scene.integrator = *kind;
     }
@@ -223,6 +231,46 @@ class SceneReader {
       scene.divergence_factor = real(*n, "divergence_factor");
       if (!(scene.divergence_factor >= 0))
         fail(*n, "'divergence_factor' must be 0 (off) or positive");
+    }
+  }
+
+  void read_implicit(const toml::table& t, Scene& scene) const {
+    check_keys(t,
+               {"cg_tolerance", "cg_max_iterations", "preconditioner", "newton_iterations",
+                "newton_tolerance", "jacobian"},
+               "[implicit]");
+    ImplicitSettings& s = scene.implicit;
+    scene.implicit_line = line_of(t);
+    if (auto* n = t.get("cg_tolerance")) {
+      s.cg_tolerance = positive_real(*n, "cg_tolerance");
+      if (s.cg_tolerance >= 1) fail(*n, "'cg_tolerance' is a relative residual: below 1");
+    }
+    if (auto* n = t.get("cg_max_iterations")) {
+      s.cg_max_iterations = static_cast<int>(integer(*n, "cg_max_iterations", 1, 1 << 30));
+    }
+    if (auto* n = t.get("preconditioner")) {
+      const std::string name = string(*n, "preconditioner");
+      auto kind = parse_preconditioner(name);
+      if (!kind) {
+        fail(*n, "unknown preconditioner '" + name +
+                     "': expected none, jacobi or incomplete_cholesky" +
+                     did_you_mean(name, {"none", "jacobi", "incomplete_cholesky"}));
+      }
+      s.preconditioner = *kind;
+    }
+    if (auto* n = t.get("newton_iterations")) {
+      s.newton_iterations = static_cast<int>(integer(*n, "newton_iterations", 1, 1000));
+    }
+    if (auto* n = t.get("newton_tolerance"))
+      s.newton_tolerance = positive_real(*n, "newton_tolerance");
+    if (auto* n = t.get("jacobian")) {
+      const std::string name = string(*n, "jacobian");
+      auto mode = parse_jacobian_mode(name);
+      if (!mode) {
+        fail(*n, "unknown jacobian '" + name + "': expected assembled or matrix_free" +
+                     did_you_mean(name, {"assembled", "matrix_free"}));
+      }
+      s.jacobian = *mode;
     }
   }
 

@@ -108,6 +108,7 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
   SimulationSettings settings;
   settings.integrator = scene.integrator;
   settings.dt = scene.dt;
+  settings.implicit = scene.implicit;
   settings.gravity = scene.gravity;
   settings.divergence_factor = scene.divergence_factor;
   settings.max_tears_per_step = scene.tearing.max_per_step;
@@ -177,7 +178,13 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
   rep.pinned_vertices = pinned;
 
   for (const ComponentUse& u : scene.interactions) {
-    sim->add_force_model(packs.pack_of_interaction(u.name, n)->make_interaction(u));
+    auto model = packs.pack_of_interaction(u.name, n)->make_interaction(u);
+    if (scene.integrator == IntegratorKind::kImplicitEuler && model->jacobian_vertices() <= 0) {
+      throw InputError(scene.path, u.line,
+                       "integrator = \"implicit_euler\" needs the Jacobians of interaction '" +
+                           u.name + "', which has none: " + model->jacobian_unavailable_reason());
+    }
+    sim->add_force_model(std::move(model));
   }
   for (const ComponentUse& u : scene.criteria) {
     sim->add_criterion(packs.pack_of_criterion(u.name, n)->make_criterion(u));

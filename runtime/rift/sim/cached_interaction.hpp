@@ -12,6 +12,17 @@
 //
 // The force loop is a flat loop over the cached matches with the kernel
 // inlined: no virtual call and no traversal per element.
+//
+// A kernel with Jacobians (riftc derives them from the rule) also supplies:
+//
+//   static constexpr int kJacobianVertices;  // vertices per match, k
+//   void vertex_slots(const Match&, Slot* out) const;              // k slots
+//   void jacobian(const Match&, const ForceInput&, Mat3* dfdx, Mat3* dfdv);  // k² blocks each
+//   void jacobian_product(const Match&, const ForceInput&, const Vec3* px,
+//                         const Vec3* pv, Vec3* out);  // out += Jx px + Jv pv
+//
+// and a kernel without them may give `static constexpr const char*
+// kJacobianUnavailable` (riftc's located reason).
 #pragma once
 
 #include <algorithm>
@@ -80,6 +91,42 @@ class CachedInteraction final : public ForceModel {
   }
 
   std::size_t active_matches() const override { return cache_.size(); }
+
+  int jacobian_vertices() const override {
+    if constexpr (requires { Kernel::kJacobianVertices; }) {
+      return Kernel::kJacobianVertices;
+    } else {
+      return 0;
+    }
+  }
+
+  std::string jacobian_unavailable_reason() const override {
+    if constexpr (requires { Kernel::kJacobianUnavailable; }) {
+      return std::string(Kernel::kJacobianUnavailable);
+    } else {
+      return ForceModel::jacobian_unavailable_reason();
+    }
+  }
+
+  void jacobians(const ForceInput& in, Slot* slots, Mat3* dfdx, Mat3* dfdv) override {
+    if constexpr (requires { Kernel::kJacobianVertices; }) {
+      constexpr int k = Kernel::kJacobianVertices;
+      std::size_t i = 0;
+      for (const auto& m : cache_.matches()) {
+        kernel_.vertex_slots(m, slots + i * k);
+        kernel_.jacobian(m, in, dfdx + i * k * k, dfdv + i * k * k);
+        ++i;
+      }
+    }
+  }
+
+  void add_jacobian_product(const ForceInput& in, const Vec3* px, const Vec3* pv,
+                            Vec3* out) override {
+    if constexpr (requires { Kernel::kJacobianVertices; }) {
+      for (const auto& m : cache_.matches())
+        kernel_.jacobian_product(m, in, px, pv, out);
+    }
+  }
   const MatchCache<typename Kernel::Match>& cache() const { return cache_; }
 
  private:

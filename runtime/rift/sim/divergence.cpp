@@ -40,6 +40,8 @@ std::string suggested_fix(const Simulation& sim) {
   if (implicit && s.integrator != *implicit) {
     fix +=
         " or the unconditionally stable integrator ([simulation] integrator = \"implicit_euler\")";
+  } else if (implicit) {
+    fix += "; implicit_euler diverged: more [implicit] newton_iterations or a tighter cg_tolerance";
   }
   return fix;
 }

@@ -44,6 +44,32 @@ class ForceModel {
 
   /// Number of support orbits whose pattern currently matches.
   virtual std::size_t active_matches() const = 0;
+
+  // --- Jacobians, for implicit integrators (docs/physics.md, implicit step) ---
+  //
+  // An interaction with Jacobians is a sum of element forces, each match
+  // acting on `jacobian_vertices()` vertex slots. Per match it gives the
+  // blocks ∂f_i/∂x_j and ∂f_i/∂v_j (3×3, i and j over its vertices, row-major
+  // i·k + j) at a state. The implicit solver stores them per match (see
+  // rift/sim/element_matrix.hpp for why), so the system's pattern is the
+  // match cache itself and follows it after a tear.
+
+  /// Vertices per match k, or 0 when this interaction has no Jacobian.
+  virtual int jacobian_vertices() const { return 0; }
+  /// Why there is no Jacobian, for the message when an implicit integrator
+  /// is asked of this interaction (riftc's located reason for generated ones).
+  virtual std::string jacobian_unavailable_reason() const {
+    return "interaction '" + name() + "' does not provide Jacobians";
+  }
+  /// For every match m (0 <= m < active_matches()): writes its k vertex
+  /// slots at slots[m k ...], and its blocks at dfdx[m k² ...] and
+  /// dfdv[m k² ...]. A slot of kNoSlot marks an unused vertex (its blocks 0).
+  virtual void jacobians(const ForceInput& /*in*/, Slot* /*slots*/, Mat3* /*dfdx*/,
+                         Mat3* /*dfdv*/) {}
+  /// Matrix-free product: out += (∂f/∂x) px + (∂f/∂v) pv at the state `in`
+  /// (all arrays indexed by vertex slot).
+  virtual void add_jacobian_product(const ForceInput& /*in*/, const Vec3* /*px*/,
+                                    const Vec3* /*pv*/, Vec3* /*out*/) {}
 };
 
 }  // namespace rift

@@ -1,11 +1,14 @@
 #include "rift/sim/integrator.hpp"
 
+#include <stdexcept>
+
 namespace rift {
 
 std::optional<IntegratorKind> parse_integrator(std::string_view name) {
   if (name == "euler" || name == "explicit_euler") return IntegratorKind::kExplicitEuler;
   if (name == "symplectic_euler" || name == "symplectic") return IntegratorKind::kSymplecticEuler;
   if (name == "rk4") return IntegratorKind::kRK4;
+  if (name == "implicit_euler") return IntegratorKind::kImplicitEuler;
   return std::nullopt;
 }
 
@@ -17,6 +20,8 @@ std::string_view to_string(IntegratorKind kind) {
       return "symplectic_euler";
     case IntegratorKind::kRK4:
       return "rk4";
+    case IntegratorKind::kImplicitEuler:
+      return "implicit_euler";
   }
   return "?";
 }
@@ -43,6 +48,9 @@ void Integrator::step(const AccelerationFn& accel, std::vector<Vec3>& x, std::ve
       return;
     case IntegratorKind::kRK4:
       break;
+    case IntegratorKind::kImplicitEuler:
+      // Needs Jacobians, not accelerations: Simulation runs ImplicitEuler.
+      throw std::logic_error("Integrator::step cannot run implicit_euler");
   }
 
   // Classical RK4 on y = (x, v), y' = (v, a(x, v)), accumulated on the fly

@@ -14,9 +14,10 @@ enum class IntegratorKind {
   kExplicitEuler,    ///< x += dt v(t); v += dt a(t). First order; gains energy.
   kSymplecticEuler,  ///< v += dt a(t); x += dt v(t+dt). First order; bounded energy.
   kRK4,              ///< classical Runge-Kutta on (x, v). Fourth order (the paper's choice).
+  kImplicitEuler,    ///< backward Euler with Jacobians (ImplicitEuler, not this class).
 };
 
-/// "euler", "symplectic_euler" (or "symplectic"), "rk4".
+/// "euler", "symplectic_euler" (or "symplectic"), "rk4", "implicit_euler".
 std::optional<IntegratorKind> parse_integrator(std::string_view name);
 std::string_view to_string(IntegratorKind kind);
 

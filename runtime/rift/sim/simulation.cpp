@@ -71,6 +71,13 @@ void Simulation::initialise() {
     if (f.orbit() == Orbit::cell(0, map_.dimension())) vertex_force_ = f;
   }
   refresh_inverse_masses();
+  if (settings_.integrator == IntegratorKind::kImplicitEuler) {
+    implicit_ = std::make_unique<ImplicitEuler>(settings_.implicit);
+    std::vector<ForceModel*> models;
+    for (auto& model : models_)
+      models.push_back(model.get());
+    implicit_->set_models(models);
+  }
   initialised_ = true;
 }
 
@@ -137,9 +144,13 @@ void Simulation::step() {
   tears_last_step_ = criteria_.empty() ? 0 : apply_criteria();
   if (tears_last_step_ > 0) accelerations(x, v, a0_, true);
   start_forces_ = forces_;  // later stages overwrite forces_
-  integrator_.step([this](const std::vector<Vec3>& xs, const std::vector<Vec3>& vs,
-                          std::vector<Vec3>& as) { accelerations(xs, vs, as, false); },
-                   x, v, settings_.dt, &a0_);
+  if (implicit_) {
+    implicit_step();
+  } else {
+    integrator_.step([this](const std::vector<Vec3>& xs, const std::vector<Vec3>& vs,
+                            std::vector<Vec3>& as) { accelerations(xs, vs, as, false); },
+                     x, v, settings_.dt, &a0_);
+  }
   time_ += settings_.dt;
   ++steps_;
   divergence_.check(*this);
@@ -211,6 +222,7 @@ void Simulation::on_topology_changed(std::span<const Dart> touched) {
   map_.free_mark(m);
   for (auto& model : models_)
     model->rematch(map_, region_);
+  if (implicit_) implicit_->topology_changed();
   refresh_inverse_masses(region_);
 }
 

@@ -13,6 +13,7 @@
 #include "rift/pack/criterion.hpp"
 #include "rift/sim/divergence.hpp"
 #include "rift/sim/force_model.hpp"
+#include "rift/sim/implicit_euler.hpp"
 #include "rift/sim/integrator.hpp"
 
 namespace rift {
@@ -29,6 +30,8 @@ struct SimulationSettings {
   /// when the kinetic energy exceeds S times the scene's energy scale or a
   /// vertex crosses the whole body in one step. 0 keeps only the finite check.
   Real divergence_factor = 100;
+  /// Solver settings of integrator = implicit_euler (the scene's [implicit]).
+  ImplicitSettings implicit = {};
 };
 
 /// A simulation that cannot go on: exploded state or an invalid map.
@@ -114,6 +117,9 @@ class Simulation {
   const DivergenceMonitor& divergence() const { return divergence_; }
   /// 1 / mass by vertex slot; 0 for pinned (prescribed) vertices and free slots.
   const std::vector<Real>& inverse_masses() const { return inverse_mass_; }
+  /// The implicit integrator, when settings().integrator is implicit_euler.
+  const ImplicitEuler* implicit() const { return implicit_.get(); }
+  ImplicitEuler* implicit() { return implicit_.get(); }
 
   Real kinetic_energy() const;
   /// Gravity plus every interaction's elastic energy.
@@ -127,11 +133,15 @@ class Simulation {
   void refresh_inverse_masses();
   void refresh_inverse_masses(std::span<const Dart> region);
   void refresh_inverse_mass(Slot s);
+  void implicit_step();  // simulation_implicit.cpp
   std::size_t apply_criteria();
 
   GMap map_;
   SimulationSettings settings_;
   Integrator integrator_;
+  std::unique_ptr<ImplicitEuler> implicit_;  // integrator = implicit_euler
+  std::vector<char> is_free_;                // implicit: inverse mass > 0
+  std::vector<Vec3> scratch_a_;              // implicit: accelerations, unused
   std::vector<std::unique_ptr<ForceModel>> models_;
   Embedding<Vec3> position_, velocity_;
   Embedding<Real> vertex_mass_, corner_mass_;

@@ -1,0 +1,66 @@
+// One implicit Euler step of a co-rotational tetrahedral beam of about
+// 19 000 tetrahedra (block:tet:8x8x50, issue 10; SOFA reports ~42 ms per
+// step for 18 954 tetrahedra with EulerImplicitSolver + CG, 10 iterations).
+// CG runs exactly 10 iterations (its tolerance is out of reach). Counters:
+// tetrahedra, and the fractions of the step spent assembling the element
+// Jacobians (with the block-Jacobi update), in A·p products, and in the
+// preconditioner. See docs/physics.md "The implicit step" for the figures.
+#include <benchmark/benchmark.h>
+
+#include "../physics/physics_setup.hpp"
+#include "rift/mesh/load_map.hpp"
+
+namespace {
+
+using rift::Real;
+using rift::Vec3;
+
+void BM_ImplicitCorotationalBeam(benchmark::State& state, rift::PreconditionerKind p) {
+  using namespace rift::physics_test;
+  rift::GMap map = rift::load_map("block:tet:8x8x50");
+  // 0.16 m x 0.16 m x 1 m, clamped at z = 0, sagging along -y.
+  for (Vec3& x : map.embedding<Vec3>("position").values())
+    x = Vec3(0.16 * x.x(), 0.16 * x.y(), x.z());
+  SimSetup setup;
+  setup.settings.integrator = rift::IntegratorKind::kImplicitEuler;
+  setup.settings.dt = 0.01;
+  setup.settings.gravity = Vec3(0, -9.81, 0);
+  setup.settings.implicit.cg_max_iterations = 10;
+  setup.settings.implicit.cg_tolerance = 1e-30;
+  setup.settings.implicit.preconditioner = p;
+  setup.interactions = {{"corotational", {{"young", 1e6}, {"poisson", 0.3}}}};
+  setup.prepare = [](rift::Simulation& sim) {
+    sim.set_density(1000);
+    sim.pin_where([](const Vec3& x) { return x.z() < 1e-9; });
+  };
+  auto sim = simulate(std::move(map), setup);
+  for (int s = 0; s < 5; ++s)
+    sim->step();
+  rift::ImplicitEuler& implicit = *sim->implicit();
+  implicit.reset_times();
+  for (auto _ : state) {
+    sim->step();
+    benchmark::DoNotOptimize(sim->position().values().data());
+    benchmark::ClobberMemory();
+  }
+  for (const Vec3& x : sim->position().values()) {
+    if (!x.allFinite()) {
+      state.SkipWithError("the beam exploded");
+      break;
+    }
+  }
+  const rift::ImplicitTimes& t = implicit.times();
+  state.counters["tets"] = static_cast<double>(sim->force_models()[0]->active_matches());
+  state.counters["cg_iterations"] = implicit.last().cg_iterations;
+  state.counters["assembly"] = t.assembly / t.total;
+  state.counters["products"] = t.products / t.total;
+  state.counters["preconditioner"] = t.preconditioner / t.total;
+}
+
+BENCHMARK_CAPTURE(BM_ImplicitCorotationalBeam, jacobi, rift::PreconditionerKind::kJacobi)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ImplicitCorotationalBeam, incomplete_cholesky,
+                  rift::PreconditionerKind::kIncompleteCholesky)
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace

@@ -1,0 +1,66 @@
+// implicit_euler through criteria and rewrites: the hanging cloth of
+// topology_test torn by the global edge criterion gives, at a small step,
+// the same tears as RK4 (each step's Jacobian pattern follows the map).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "tearing_support.hpp"
+
+namespace rift::tearing_test {
+namespace {
+
+std::string hanging_cloth(const std::string& integrator) {
+  return "[mesh]\nsource = \"grid:quad:6x6\"\nrotate = [90, 0, 0]\n"
+         "[simulation]\nintegrator = \"" +
+         integrator +
+         "\"\ndt = 0.0001\nsteps = 4000\n"
+         "[mass]\ntotal = 0.1\n[pin]\ncorners = [\"top-left\", \"top-right\"]\n"
+         "[[interaction]]\nname = \"stretch\"\nstiffness = 60.0\ndamping = 0.1\n"
+         "[[interaction]]\nname = \"shear\"\nstiffness = 43.0\ndamping = 0.1\n"
+         "[[interaction]]\nname = \"bend\"\nstiffness = 10.0\ndamping = 0.1\n"
+         "[[criterion]]\nname = \"global_edge\"\nthreshold = 0.06\n" +
+         (integrator == "implicit_euler" ? "[implicit]\ncg_tolerance = 1e-10\n" : "");
+}
+
+struct Tears {
+  std::vector<std::size_t> step_of_tear;  // the step of each tear, in order
+  std::vector<Vec3> splits;               // rounded to 1 mm, sorted
+  std::size_t vertices = 0;
+};
+
+Tears run(const std::string& integrator) {
+  auto sim = simulate("cloth_" + integrator, hanging_cloth(integrator));
+  Tears t;
+  for (int s = 0; s < 4000; ++s) {
+    sim->step();
+    for (std::size_t k = 0; k < sim->tears_last_step(); ++k)
+      t.step_of_tear.push_back(sim->steps_done());
+  }
+  EXPECT_TRUE(sim->map().check_validity().empty());
+  for (Vec3 p : split_positions(*sim))
+    t.splits.push_back((p * 1e3).array().round() / 1e3);
+  std::sort(t.splits.begin(), t.splits.end(), [](const Vec3& a, const Vec3& b) {
+    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+  });
+  t.vertices = counts(sim->map()).vertices;
+  return t;
+}
+
+TEST(ImplicitTearing, HangingClothTearsAsWithRk4AtASmallStep) {
+  const Tears rk4 = run("rk4");
+  const Tears implicit = run("implicit_euler");
+  ASSERT_GE(rk4.step_of_tear.size(), 2u) << "the cloth never tore";
+  ASSERT_EQ(implicit.step_of_tear.size(), rk4.step_of_tear.size());
+  // First order in dt: each tear within 2 % of RK4's step.
+  for (std::size_t k = 0; k < rk4.step_of_tear.size(); ++k) {
+    EXPECT_NEAR(static_cast<double>(implicit.step_of_tear[k]),
+                static_cast<double>(rk4.step_of_tear[k]), 0.02 * rk4.step_of_tear[k] + 2)
+        << "tear " << k;
+  }
+  EXPECT_EQ(implicit.vertices, rk4.vertices);
+  EXPECT_EQ(implicit.splits.size(), rk4.splits.size());
+}
+
+}  // namespace
+}  // namespace rift::tearing_test
