@@ -50,6 +50,20 @@ void Simulation::add_criterion(std::unique_ptr<Criterion> criterion) {
   criteria_.push_back(std::move(criterion));
 }
 
+void Simulation::set_handles(std::unique_ptr<Handles> handles) {
+  if (initialised_) throw std::logic_error("set_handles after initialise");
+  handles_ = std::move(handles);
+}
+
+void Simulation::add_external_force(std::unique_ptr<ExternalForce> force) {
+  if (initialised_) throw std::logic_error("add_external_force after initialise");
+  external_.push_back(std::move(force));
+}
+
+void Simulation::set_contact(std::unique_ptr<Contact> contact) {
+  contact_ = std::move(contact);
+}
+
 void Simulation::set_total_mass(Real total_mass) {
   if (!(total_mass > 0)) throw std::invalid_argument("the total mass must be positive");
   assign_corner_masses_by_total(map_, total_mass, corner_mass_, position_);
@@ -81,12 +95,15 @@ void Simulation::refresh_inverse_masses() {
   const auto& pinned = pinned_.values();
   for (Slot s = 0; s < slots; ++s) {
     if (att.slot_alive(s) && !pinned[s] && mass[s] > 0) inverse_mass_[s] = 1 / mass[s];
+    if (handles_ && handles_->holds(s, time_)) inverse_mass_[s] = 0;
   }
-  // Pinned vertices never move.
+  // Pinned vertices never move; held ones move as their handle says.
+  auto& x = position_.values();
   auto& v = velocity_.values();
   for (Slot s = 0; s < slots; ++s) {
     if (inverse_mass_[s] == 0) v[s] = Vec3::Zero();
   }
+  if (handles_) handles_->impose(att, time_, settings_.dt, x, v);
 }
 
 void Simulation::accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
@@ -100,6 +117,21 @@ void Simulation::accelerations(const std::vector<Vec3>& x, const std::vector<Vec
     // Same orbit as position, so the same slots.
     std::vector<Vec3>& out = vertex_force_.values();
     std::copy(forces_.begin(), forces_.begin() + std::min(n, out.size()), out.begin());
+  }
+  if (!external_.empty()) {
+    // After vertex_force: criteria see internal forces only.
+    const ExternalInput ext{time_, x.data(), v.data(), vertex_mass_.values().data(), n};
+    if (store) {
+      // Kept apart for the external work.
+      external_forces_.assign(n, Vec3::Zero());
+      for (auto& e : external_)
+        e->add_forces(map_, ext, external_forces_.data());
+      for (std::size_t s = 0; s < n; ++s)
+        forces_[s] += external_forces_[s];
+    } else {
+      for (auto& e : external_)
+        e->add_forces(map_, ext, forces_.data());
+    }
   }
   a.resize(n);
   const Vec3 g = settings_.gravity;
@@ -119,11 +151,22 @@ void Simulation::step() {
   tears_last_step_ = criteria_.empty() ? 0 : apply_criteria();
   if (tears_last_step_ > 0) accelerations(x, v, a0_, true);
   start_forces_ = forces_;  // later stages overwrite forces_
+  if (handles_) {
+    handles_->reactions(position_.attachment(), time_, start_forces_, vertex_mass_.values(),
+                        settings_.gravity, reactions_);
+  }
+  x_before_ = x;
   integrator_.step([this](const std::vector<Vec3>& xs, const std::vector<Vec3>& vs,
                           std::vector<Vec3>& as) { accelerations(xs, vs, as, false); },
                    x, v, settings_.dt, &a0_);
+  const Real t0 = time_;
   time_ += settings_.dt;
   ++steps_;
+  // Prescribed motions, then contacts, at the end of the step.
+  if (handles_ && handles_->releases_between(t0, time_)) refresh_inverse_masses();
+  if (handles_) handles_->impose(position_.attachment(), time_, settings_.dt, x, v);
+  if (contact_) contact_->project(position_.attachment(), time_, inverse_mass_, x, v);
+  account_external_work(x);
   check_finite();
 }
 
@@ -169,6 +212,24 @@ std::size_t Simulation::apply_criteria() {
     tears_ += applied;
   }
   return applied;
+}
+
+void Simulation::account_external_work(const std::vector<Vec3>& x) {
+  // W += sum over vertices of (external force + handle reaction) . dx, with
+  // the forces at the start of the step (first order in dt).
+  const bool any_external = !external_forces_.empty();
+  if (!any_external && !handles_) return;
+  const OrbitAttachment& att = position_.attachment();
+  const std::size_t n = std::min(x.size(), x_before_.size());
+  const auto& mass = vertex_mass_.values();
+  for (Slot s = 0; s < n; ++s) {
+    if (!att.slot_alive(s)) continue;
+    Vec3 f = any_external && s < external_forces_.size() ? external_forces_[s] : Vec3::Zero();
+    if (handles_ && inverse_mass_[s] == 0 && handles_->holds(s, time_ - settings_.dt)) {
+      f += -(start_forces_[s] + mass[s] * settings_.gravity);  // the handle's reaction
+    }
+    external_work_ += f.dot(x[s] - x_before_[s]);
+  }
 }
 
 void Simulation::check_finite() const {
