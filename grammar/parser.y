@@ -262,11 +262,13 @@ rule
       ctx.rule.params = $3;
       ctx.lets = &ctx.rule.lets;
       ctx.whens = &ctx.rule.whens;
+      ctx.body = &ctx.rule.body;
     }
     LBRACE rule_stmts RBRACE {
       ctx.file.rules.push_back(std::move(ctx.rule));
       ctx.lets = nullptr;
       ctx.whens = nullptr;
+      ctx.body = nullptr;
     }
   ;
 
@@ -314,10 +316,14 @@ rule_stmt
 /* let and when: shared by rules, interactions and criteria */
 body_stmt
   : LET ident ASSIGN expr SEMI {
-      if (ctx.lets) ctx.lets->push_back(rift::ast::Let{$2, $4});
+      if (ctx.lets) {
+        if (ctx.body) ctx.body->push_back({rift::ast::BodyStmt::Kind::Let, ctx.lets->size()});
+        ctx.lets->push_back(rift::ast::Let{$2, $4});
+      }
     }
   | WHEN expr SEMI {
       if (ctx.whens) {
+        if (ctx.body) ctx.body->push_back({rift::ast::BodyStmt::Kind::When, ctx.whens->size()});
         ctx.whens->push_back($2);
       } else {
         ctx.diags.error(@1, "'when' is not allowed here; a criterion states its condition with 'measure'");
@@ -376,11 +382,13 @@ interaction
       ctx.interaction.params = $6;
       ctx.lets = &ctx.interaction.lets;
       ctx.whens = &ctx.interaction.whens;
+      ctx.body = &ctx.interaction.body;
     }
     LBRACE interaction_stmts RBRACE {
       ctx.file.interactions.push_back(std::move(ctx.interaction));
       ctx.lets = nullptr;
       ctx.whens = nullptr;
+      ctx.body = nullptr;
     }
   ;
 
@@ -481,6 +489,7 @@ criterion
       ctx.criterion.params = $8;
       ctx.lets = &ctx.criterion.lets;
       ctx.whens = nullptr;
+      ctx.body = nullptr;
     }
     LBRACE criterion_stmts RBRACE {
       ctx.file.criteria.push_back(std::move(ctx.criterion));
@@ -537,6 +546,7 @@ script
       ctx.script.hooks = $5;
       ctx.lets = nullptr;
       ctx.whens = nullptr;
+      ctx.body = nullptr;
     }
     LBRACE script_stmts RBRACE {
       ctx.file.scripts.push_back(std::move(ctx.script));

@@ -51,6 +51,14 @@ struct Let {
   mutable int uses = 0;  // counted by resolve/ for -Wunused-variable
 };
 
+/// One `let` or `when` of a body, in the order the file writes them: a guard
+/// runs before the lets that follow it (`when n > 0; let q = 1 / n;`).
+struct BodyStmt {
+  enum class Kind { Let, When };
+  Kind kind = Kind::Let;
+  std::size_t index = 0;  // into the body's `lets` or `whens`
+};
+
 /// A parameter of a rule (given by its caller) or of an interaction or a
 /// criterion (given by the scene: default, bound and description allowed).
 struct Param {
@@ -74,6 +82,7 @@ struct Rule {
   Pattern right;
   std::vector<Let> lets;
   std::vector<ExprPtr> whens;
+  std::vector<BodyStmt> body;  // lets and whens in source order
   std::vector<Assign> updates;
 };
 
@@ -96,6 +105,7 @@ struct Interaction {
   Pattern pattern;
   std::vector<Let> lets;
   std::vector<ExprPtr> whens;
+  std::vector<BodyStmt> body;  // lets and whens in source order
   std::vector<Assign> forces;
   ExprPtr energy;
 };

@@ -10,6 +10,7 @@
 #include "check/types.hpp"
 #include "check/warnings.hpp"
 #include "emit/pack_emit.hpp"
+#include "lower/interaction_plan.hpp"
 #include "parse/loader.hpp"
 #include "resolve/resolve.hpp"
 
@@ -95,6 +96,11 @@ void generate(const ast::Program& program, const Checked& checked,
   model.symbols = &checked.symbols;
   model.rules = &checked.rules;
   model.interactions = &checked.interactions;
+  // lower: every interaction to its kernel and its body in the IR.
+  std::vector<lower::InteractionPlan> interaction_plans;
+  for (const check::CheckedInteraction& ci : checked.interactions)
+    interaction_plans.push_back(lower::plan_interaction(ci, checked.symbols));
+  model.interaction_plans = &interaction_plans;
   model.pack = program.files.empty() ? "pack" : program.files.front().pack.text;
   model.pack_namespace = "rift::packs::" + model.pack;
   const emit::GeneratedPack pack = emit::generate_pack(model, sources);
@@ -148,7 +154,31 @@ Result compile_text(const std::string& path, const std::string& text, const Opti
   const ast::Program program = parse::load_text(path, text, sources, diags);
   Checked checked;
   run_checks(program, diags, checked);
+  if (!diags.has_errors() && !options.out_dir.empty()) {
+    generate(program, checked, sources, options.out_dir, options.depfile, diags);
+  }
   return finish(diags);
+}
+
+Lowered lower_text(const std::string& path, const std::string& text) {
+  struct State {
+    diag::SourceManager sources;
+    diag::Diagnostics diags{sources};
+    ast::Program program;
+    Checked checked;
+  };
+  auto state = std::make_shared<State>();
+  state->program = parse::load_text(path, text, state->sources, state->diags);
+  run_checks(state->program, state->diags, state->checked);
+  Lowered out;
+  out.ok = !state->diags.has_errors();
+  out.diagnostics = state->diags.render();
+  if (out.ok) {
+    for (const check::CheckedInteraction& ci : state->checked.interactions)
+      out.interactions.push_back(lower::plan_interaction(ci, state->checked.symbols));
+  }
+  out.keep_alive = state;
+  return out;
 }
 
 }  // namespace rift::driver

@@ -3,8 +3,11 @@
 // driver renders them once at the end.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
+
+#include "lower/interaction_plan.hpp"
 
 namespace rift::driver {
 
@@ -26,5 +29,16 @@ Result compile(const Options& options);
 
 /// Compiles in-memory text as if it were the file `path` (tests, fuzzing).
 Result compile_text(const std::string& path, const std::string& text, const Options& options);
+
+/// A program through the front end and `lower`, for passes that work on the
+/// IR (ir/expr.hpp, ir/body.hpp) and for tests.
+struct Lowered {
+  bool ok = false;                                   // no error: the plans below are complete
+  std::string diagnostics;                           // rendered
+  std::vector<lower::InteractionPlan> interactions;  // in declaration order
+  std::shared_ptr<const void> keep_alive;            // the AST and checks the plans point into
+};
+
+Lowered lower_text(const std::string& path, const std::string& text);
 
 }  // namespace rift::driver

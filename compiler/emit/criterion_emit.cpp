@@ -101,11 +101,16 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
                 "const rift::Real measure = " +
                     convert(emit_expr(lhs, ctx), lhs.type, ast::Type::Real) + ";");
   write_sourced(w, rhs.loc,
-                "if (!(measure " + crit.measure->op + " " +
-                    convert(emit_expr(rhs, ctx), rhs.type, ast::Type::Real) + ")) return;");
+                "const rift::Real threshold = " +
+                    convert(emit_expr(rhs, ctx), rhs.type, ast::Type::Real) + ";");
+  w.line("if (!(measure " + crit.measure->op + " threshold)) return;");
   w.line("rift::TearCandidate c;");
   w.line("c.at = " + d + ";");
-  w.line("c.measure = measure;");
+  // Candidates are applied largest first: the margin by which the measure
+  // passed, oriented by the comparison, puts the most critical first whether
+  // the criterion is written with > or <.
+  const bool above = crit.measure->op == ">" || crit.measure->op == ">=";
+  w.line(std::string("c.measure = ") + (above ? "measure - threshold;" : "threshold - measure;"));
   for (const ast::ApplyArg& a : crit.apply_args) {
     if (!carried(a)) continue;
     write_sourced(w, a.value->loc, "c." + a.name.text + " = " + emit_expr(*a.value, ctx) + ";");

@@ -33,4 +33,20 @@ void write_lets(Writer& w, const std::vector<ast::Let>& lets, const ExprContext&
   }
 }
 
+void write_body(Writer& w, const std::vector<ast::Let>& lets,
+                const std::vector<ast::ExprPtr>& whens, const std::vector<ast::BodyStmt>& body,
+                const ExprContext& ctx, const std::string& on_fail) {
+  for (const ast::BodyStmt& st : body) {
+    if (st.kind == ast::BodyStmt::Kind::Let) {
+      const ast::Let& l = lets[st.index];
+      write_sourced(w, l.value->loc,
+                    "[[maybe_unused]] const " + cpp_type(l.value->type) + " " +
+                        let_name(l.name.text) + " = " + emit_expr(*l.value, ctx) + ";");
+    } else {
+      const ast::Expr& cond = *whens[st.index];
+      write_sourced(w, cond.loc, "if (!(" + emit_expr(cond, ctx) + ")) " + on_fail);
+    }
+  }
+}
+
 }  // namespace rift::emit

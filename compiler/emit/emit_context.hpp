@@ -11,6 +11,7 @@
 #include "check/topology.hpp"
 #include "emit/expr_emit.hpp"
 #include "emit/writer.hpp"
+#include "lower/interaction_plan.hpp"
 #include "lower/rule_plan.hpp"
 #include "resolve/symbols.hpp"
 
@@ -21,6 +22,8 @@ struct PackModel {
   const resolve::Symbols* symbols = nullptr;
   const std::vector<check::CheckedRule>* rules = nullptr;
   const std::vector<check::CheckedInteraction>* interactions = nullptr;
+  const std::vector<lower::InteractionPlan>* interaction_plans =
+      nullptr;                 // parallel to interactions
   std::string pack;            // the pack's name
   std::string pack_namespace;  // rift::packs::<pack>
 };
@@ -51,6 +54,11 @@ void fetch_embeddings(Writer& w, const std::set<std::string>& names,
 /// `const T l_x = ...;` for each let, each with its #line.
 void write_lets(Writer& w, const std::vector<ast::Let>& lets, const ExprContext& ctx);
 
+/// The lets and whens of a body in source order; `on_fail` runs where a when is false.
+void write_body(Writer& w, const std::vector<ast::Let>& lets,
+                const std::vector<ast::ExprPtr>& whens, const std::vector<ast::BodyStmt>& body,
+                const ExprContext& ctx, const std::string& on_fail);
+
 /// One statement whose expression comes from `loc` in a .rules file.
 void write_sourced(Writer& w, const diag::Location& loc, const std::string& statement);
 
@@ -64,8 +72,8 @@ void emit_script(Writer& w, const ast::Script& script, const PackModel& model);
 void emit_initialisers(Writer& w, const PackModel& model);
 
 /// Header declarations and source definitions of the generated classes.
-void declare_kernel(Writer& w, const check::CheckedInteraction& inter, const PackModel& model);
-void emit_kernel(Writer& w, const check::CheckedInteraction& inter, const PackModel& model);
+void declare_kernel(Writer& w, const lower::InteractionPlan& inter, const PackModel& model);
+void emit_kernel(Writer& w, const lower::InteractionPlan& inter, const PackModel& model);
 void declare_criterion(Writer& w, const ast::Criterion& crit, const PackModel& model);
 void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& model);
 /// A rule or script as a rift::Rule (arguments by position).

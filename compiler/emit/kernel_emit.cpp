@@ -2,43 +2,21 @@
 // fixed-size record of the slots the force loop reads (vertex slots index
 // the integrator's stage arrays ForceInput::x / ::v and the force array f),
 // match() walks the explicit pattern from the support dart (or from the dart
-// tagged at initialisation), and add_forces() / energy() are straight-line
-// code over those slots: no traversal, no allocation, no virtual call.
+// tagged at initialisation), and the interaction's body is rendered once, as
+// evaluate<kForces>(): straight-line code over those slots (no traversal, no
+// allocation, no virtual call) that the force pass and energy() share.
 #include <algorithm>
 
-#include "check/kernels.hpp"
 #include "emit/emit_context.hpp"
+#include "emit/ir_render.hpp"
 #include "emit/names.hpp"
-#include "lower/kernel_plan.hpp"
+#include "lower/interaction_plan.hpp"
 
 namespace rift::emit {
 
 namespace {
 
-std::string slot_field(int k) {
-  return "s" + std::to_string(k);
-}
-
-/// The raw column pointer add_forces_all() hoists out of its loop.
-std::string column_pointer(const std::string& embedding) {
-  return "c_" + embedding;
-}
-
-std::string dart_path(const std::string& node, const std::vector<int>& hops) {
-  std::string d = dart_name(node);
-  for (int h : hops)
-    d = "g.alpha(" + d + ", " + std::to_string(h) + ")";
-  return d;
-}
-
-std::string path_text(const std::string& node, const std::vector<int>& hops) {
-  std::string out = node;
-  for (int h : hops) {
-    out += '@';
-    out += std::to_string(h);
-  }
-  return out;
-}
+using lower::InteractionPlan;
 
 std::string orbit_text(const std::vector<int>& dims) {
   std::string out = "<";
@@ -50,84 +28,112 @@ std::string orbit_text(const std::vector<int>& dims) {
   return out;
 }
 
-struct KernelModel {
+std::string path_text(const std::string& node, const std::vector<int>& hops) {
+  std::string out = node;
+  for (int h : hops) {
+    out += '@';
+    out += std::to_string(h);
+  }
+  return out;
+}
+
+/// Names of the match's slots, from the orbit and the dart: `vertex_a` for
+/// the vertex of node a, `orbit0_b_1` for the orbit <0> of b@1, `dart_c`.
+/// Every embedding on that orbit is read through it.
+std::vector<std::string> slot_names(const lower::KernelPlan& plan) {
+  std::vector<std::string> names;
+  for (const lower::SlotUse& u : plan.slots) {
+    std::string name = u.vertex ? "vertex" : u.orbit.empty() ? "dart" : "orbit";
+    if (!u.vertex) {
+      for (int d : u.orbit)
+        name += std::to_string(d);
+    }
+    name += '_';
+    name += plan.nodes[static_cast<std::size_t>(u.node)];
+    for (int h : u.hops) {
+      name += '_';
+      name += std::to_string(h);
+    }
+    if (std::find(names.begin(), names.end(), name) != names.end())
+      name += std::string("_s") + std::to_string(names.size());
+    names.push_back(name);
+  }
+  return names;
+}
+
+/// The field of Result a force is returned in: `f_stretch_a`.
+std::string force_field(const ir::Body& body, const ir::Force& f) {
+  return f.embedding + "_" + body.nodes[static_cast<std::size_t>(f.node)];
+}
+
+struct Kernel {
+  const InteractionPlan* plan = nullptr;
   const ast::Interaction* inter = nullptr;
-  lower::KernelPlan plan;
-  std::set<std::string> embeddings;  // every embedding the kernel binds
-  std::string cls;                   // StretchKernel
+  std::string cls;
+  std::vector<std::string> slots;
+  std::set<std::string> columns;  // embeddings the body reads through column pointers
+  bool reads_state = false;       // the body reads ForceInput (positions, velocities)
 };
 
-KernelModel model_of(const check::CheckedInteraction& ci, const PackModel& model) {
-  KernelModel k;
-  k.inter = ci.interaction;
-  k.plan = lower::plan_kernel(ci, *model.symbols);
-  k.cls = kernel_class(ci.interaction->name.text);
-  for (const lower::SlotUse& s : k.plan.slots)
-    k.embeddings.insert(s.via);
-  for (const lower::ForceStore& f : k.plan.forces)
-    k.embeddings.insert(f.embedding);
-  std::set<std::string> loop;  // read in the force loop; the stage arrays replace these two
-  for (const auto& l : k.inter->lets)
-    embeddings_read(*l.value, loop);
-  for (const auto& e : k.inter->whens)
-    embeddings_read(*e, loop);
-  for (const auto& f : k.inter->forces)
-    embeddings_read(*f.value, loop);
-  if (k.inter->energy) embeddings_read(*k.inter->energy, loop);
-  loop.erase(check::kVelocityEmbedding);
-  k.embeddings.insert(loop.begin(), loop.end());
-  for (const ast::Init& init : k.inter->inits) {
-    embeddings_read(*init.value, k.embeddings);
-    k.embeddings.insert(init.embedding.text);
-  }
+Kernel kernel_of(const InteractionPlan& plan) {
+  Kernel k;
+  k.plan = &plan;
+  k.inter = plan.interaction;
+  k.cls = kernel_class(k.inter->name.text);
+  k.slots = slot_names(plan.kernel);
+  const ir::Body& b = plan.body;
+  auto scan = [&](ir::ExprId root) {
+    if (root == ir::kNoExpr) return;
+    ir::visit(b.graph, root, [&](const ir::Node& n) {
+      if (n.op == ir::Op::Read) k.columns.insert(n.embedding);
+      if (n.op == ir::Op::Position || n.op == ir::Op::Velocity) k.reads_state = true;
+    });
+  };
+  for (const ir::Let& l : b.lets)
+    scan(l.value);
+  for (const ir::Stmt& s : b.stmts)
+    scan(s.cond);
+  for (const ir::Force& f : b.forces)
+    scan(f.value);
+  scan(b.energy);
   return k;
 }
 
-/// Expressions of the force loop: positions and velocities from the stage
-/// arrays, every other value from its column, all through the match's slots.
-ExprContext loop_context(const KernelModel& k, bool hoisted = false) {
-  ExprContext ctx;
-  ctx.dart = [](const std::string& node) { return dart_name(node); };
+/// Render context of the force loop: stage arrays and column pointers, by slot.
+RenderContext loop_context(const Kernel& k) {
+  RenderContext ctx;
+  ctx.dart = [&k](int node) {
+    return dart_name(k.plan->body.nodes[static_cast<std::size_t>(node)]);
+  };
   ctx.args = "p_";
   ctx.params = "pack_";
-  const lower::KernelPlan* plan = &k.plan;
-  ctx.read = [plan, nodes = k.plan.nodes, hoisted](const ast::Expr& e) {
-    int node = -1;
-    for (std::size_t v = 0; v < nodes.size(); ++v) {
-      if (nodes[v] == e.node) node = static_cast<int>(v);
-    }
-    std::vector<int> orbit = e.embedding->orbit.dims;
-    std::sort(orbit.begin(), orbit.end());
-    const int slot = plan->find(node, e.hops, orbit);
-    const std::string at = "m." + slot_field(slot);
-    if (e.name == check::kPositionEmbedding) return "in.x[" + at + "]";
-    if (e.name == check::kVelocityEmbedding) return "in.v[" + at + "]";
-    if (hoisted) return column_pointer(e.name) + "[" + at + "]";
-    return embedding_var(e.name) + ".values()[" + at + "]";
+  ctx.read = [&k](const ir::Node& n) {
+    const std::string at = std::string("m.") + k.slots[static_cast<std::size_t>(n.place.slot)];
+    if (n.op == ir::Op::Position) return std::string("in.x[") + at + "]";
+    if (n.op == ir::Op::Velocity) return std::string("in.v[") + at + "]";
+    return std::string("c.") + member_name(n.embedding) + "[" + at + "]";
   };
   return ctx;
 }
 
-ExprContext init_context() {
-  ExprContext ctx;
-  ctx.dart = [](const std::string& node) { return dart_name(node); };
-  ctx.args = "p_";
-  ctx.params = "pack_";
-  return ctx;
+/// Lets reachable from `root`, through the values of other lets.
+void lets_used(const ir::Body& b, ir::ExprId root, std::vector<bool>& used) {
+  if (root == ir::kNoExpr) return;
+  ir::visit(b.graph, root, [&](const ir::Node& n) {
+    if (n.op != ir::Op::Let || n.index < 0) return;
+    const auto i = static_cast<std::size_t>(n.index);
+    if (used[i]) return;
+    used[i] = true;
+    lets_used(b, b.lets[i].value, used);
+  });
 }
 
-void bind_nodes(Writer& w, const KernelModel& k) {
-  for (std::size_t v = 0; v < k.plan.nodes.size(); ++v) {
-    w.line("[[maybe_unused]] const rift::Dart " + dart_name(k.plan.nodes[v]) + " = darts[" +
-           std::to_string(v) + "];");
-  }
-}
-
-void write_find(Writer& w, const KernelModel& k) {
-  const lower::KernelPlan& plan = k.plan;
+void write_find(Writer& w, const Kernel& k) {
+  const lower::KernelPlan& plan = k.plan->kernel;
+  auto node = [&](int v) { return dart_name(plan.nodes[static_cast<std::size_t>(v)]); };
   w.open("bool " + k.cls +
          "::find(const rift::GMap& g, rift::Dart support, rift::Dart* darts) const {");
-  const std::string hook = dart_name(plan.nodes[static_cast<std::size_t>(plan.match.hooks[0])]);
+  const std::string hook = node(plan.match.hooks[0]);
   if (k.inter->tagged) {
     w.line("const rift::Dart " + hook + " = tagged_dart(g, tag_, support, kSupport);");
     w.line("if (" + hook + " == rift::kNoDart) return false;  // created after initialisation");
@@ -135,13 +141,11 @@ void write_find(Writer& w, const KernelModel& k) {
     w.line("const rift::Dart " + hook + " = support;");
   }
   for (const lower::Follow& f : plan.match.follows) {
-    w.line("const rift::Dart " + dart_name(plan.nodes[static_cast<std::size_t>(f.to)]) +
-           " = g.alpha(" + dart_name(plan.nodes[static_cast<std::size_t>(f.from)]) + ", " +
+    w.line("const rift::Dart " + node(f.to) + " = g.alpha(" + node(f.from) + ", " +
            std::to_string(f.dim) + ");");
   }
   for (const lower::ArcCheck& a : plan.match.arc_checks) {
-    w.line("if (g.alpha(" + dart_name(plan.nodes[static_cast<std::size_t>(a.a)]) + ", " +
-           std::to_string(a.dim) + ") != " + dart_name(plan.nodes[static_cast<std::size_t>(a.b)]) +
+    w.line("if (g.alpha(" + node(a.a) + ", " + std::to_string(a.dim) + ") != " + node(a.b) +
            ") return false;");
   }
   // Injective: no dart plays two nodes (a cut edge makes a -2- b meet itself).
@@ -158,11 +162,13 @@ void write_find(Writer& w, const KernelModel& k) {
   w.line();
 }
 
-void write_initialise(Writer& w, const KernelModel& k, const PackModel& model) {
-  const std::string user = "interaction '" + k.inter->name.text + "'";
+void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
+  const InteractionPlan& plan = *k.plan;
+  const ir::Body& b = plan.body;
+  const std::string user = std::string("interaction '") + k.inter->name.text + "'";
   w.open("void " + k.cls + "::initialise(rift::GMap& g) {");
   w.line(model.pack_namespace + "::declare_embeddings(g);");
-  for (const std::string& name : k.embeddings) {
+  for (const std::string& name : plan.embeddings) {
     const ast::Embedding* emb = model.symbols->embedding(name);
     w.line(embedding_var(name) + " = require_embedding<" + storage_type(emb->type) + ">(g, " +
            quote(name) + ", " + quote(user) + ");");
@@ -174,128 +180,191 @@ void write_initialise(Writer& w, const KernelModel& k, const PackModel& model) {
     w.line("std::fill(tag_.values().begin(), tag_.values().end(), rift::Bool(false));");
     w.line("g.for_each_cell(kSupport, [&](rift::Dart d) { tag_[d] = true; });");
   }
-  const ExprContext ctx = init_context();
-  const std::string n = std::to_string(k.plan.nodes.size());
-  for (const ast::Init& init : k.inter->inits) {
-    w.line("// init " + init.embedding.text + ", once per match");
+  RenderContext ctx;
+  ctx.dart = [&b](int node) { return dart_name(b.nodes[static_cast<std::size_t>(node)]); };
+  ctx.args = "p_";
+  ctx.params = "pack_";
+  const std::string n = std::to_string(plan.kernel.nodes.size());
+  for (const lower::InitPlan& init : plan.inits) {
+    // Only the darts this init reads or writes are named.
+    std::vector<bool> used(plan.kernel.nodes.size(), false);
+    used[static_cast<std::size_t>(init.node)] = true;
+    ir::visit(b.graph, init.value, [&](const ir::Node& x) {
+      if ((x.op == ir::Op::Read || x.op == ir::Op::Collect || x.op == ir::Op::Fold) &&
+          static_cast<std::size_t>(x.place.node) < used.size()) {
+        used[static_cast<std::size_t>(x.place.node)] = true;
+      }
+    });
+    w.line("// init " + init.embedding + "(" + b.nodes[static_cast<std::size_t>(init.node)] +
+           "), once per match");
     w.open("g.for_each_cell(kSupport, [&](rift::Dart support) {");
     w.line("rift::Dart darts[" + n + "];");
     w.line("if (!find(g, support, darts)) return;");
-    bind_nodes(w, k);
-    write_sourced(w, init.value->loc,
-                  embedding_var(init.embedding.text) + "[" + dart_name(init.dart.text) + "] = " +
-                      convert(emit_expr(*init.value, ctx), init.value->type, init.target->type) +
-                      ";");
+    for (std::size_t v = 0; v < used.size(); ++v) {
+      if (!used[v]) continue;
+      w.line("const rift::Dart " + dart_name(plan.kernel.nodes[v]) + " = darts[" +
+             std::to_string(v) + "];");
+    }
+    write_sourced(w, init.loc,
+                  embedding_var(init.embedding) + "[" +
+                      dart_name(b.nodes[static_cast<std::size_t>(init.node)]) +
+                      "] = " + render(b.graph, init.value, ctx) + ";");
     w.close("});");
   }
   w.close();
   w.line();
 }
 
-void write_match(Writer& w, const KernelModel& k) {
+void write_match(Writer& w, const Kernel& k) {
+  const lower::KernelPlan& plan = k.plan->kernel;
   w.open("bool " + k.cls + "::match(const rift::GMap& g, rift::Dart support, Match& m) const {");
-  w.line("rift::Dart darts[" + std::to_string(k.plan.nodes.size()) + "];");
+  w.line("rift::Dart darts[" + std::to_string(plan.nodes.size()) + "];");
   w.line("if (!find(g, support, darts)) return false;");
-  bind_nodes(w, k);
-  for (std::size_t s = 0; s < k.plan.slots.size(); ++s) {
-    const lower::SlotUse& u = k.plan.slots[s];
-    w.line("m." + slot_field(static_cast<int>(s)) + " = " + embedding_var(u.via) + ".slot(" +
-           dart_path(k.plan.nodes[static_cast<std::size_t>(u.node)], u.hops) + ");");
+  for (std::size_t s = 0; s < plan.slots.size(); ++s) {
+    const lower::SlotUse& u = plan.slots[s];
+    std::string d = std::string("darts[") + std::to_string(u.node) + "]";
+    for (int h : u.hops)
+      d = std::string("g.alpha(") + d + ", " + std::to_string(h) + ")";
+    w.line("m." + k.slots[s] + " = " + embedding_var(u.via) + ".slot(" + d + ");");
   }
   w.line("return true;");
   w.close();
   w.line();
 }
 
-void write_loop_prologue(Writer& w, const KernelModel& k, const ExprContext& ctx,
-                         const std::string& on_fail) {
-  write_lets(w, k.inter->lets, ctx);
-  for (const auto& cond : k.inter->whens) {
-    write_sourced(w, cond->loc, "if (!(" + emit_expr(*cond, ctx) + ")) " + on_fail);
-  }
-}
-
-void write_add_forces(Writer& w, const KernelModel& k) {
-  const ExprContext ctx = loop_context(k);
-  w.open("void " + k.cls +
-         "::add_forces([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& "
-         "in, [[maybe_unused]] rift::Vec3* f, [[maybe_unused]] bool store) {");
-  write_loop_prologue(w, k, ctx, "{ if (store) reset_stored(m); return; }");
-  for (std::size_t i = 0; i < k.inter->forces.size(); ++i) {
-    const ast::Assign& a = k.inter->forces[i];
-    const lower::ForceStore& fs = k.plan.forces[i];
-    const std::string var = "force_" + std::to_string(i);
-    write_sourced(w, a.value->loc,
-                  "const rift::Vec3 " + var + " = " + emit_expr(*a.value, ctx) + ";");
-    w.line("f[m." + slot_field(fs.vertex_slot) + "] += " + var + ";");
-    w.line("if (store) " + embedding_var(fs.embedding) + ".values()[m." +
-           slot_field(fs.store_slot) + "] = " + var + ";");
+void write_columns(Writer& w, const Kernel& k) {
+  w.open(k.cls + "::Columns " + k.cls + "::columns() const {");
+  if (k.columns.empty()) {
+    w.line("return {};");
+  } else {
+    std::string init;
+    for (const std::string& name : k.columns) {
+      if (!init.empty()) init += ", ";
+      init += embedding_var(name) + ".values().data()";
+    }
+    w.line("return {" + init + "};");
   }
   w.close();
   w.line();
 }
 
-// The whole force pass in one function: column pointers are loaded once
-// instead of once per match (stores through Vec3* may alias anything, so the
-// compiler cannot hoist them itself), and the loop body is inlined.
-void write_add_forces_all(Writer& w, const KernelModel& k, const PackModel& model) {
-  const ExprContext ctx = loop_context(k, true);
-  w.open("void " + k.cls +
-         "::add_forces_all(std::span<const Match> ms, [[maybe_unused]] const rift::ForceInput& in, "
-         "[[maybe_unused]] rift::Vec3* f, [[maybe_unused]] bool store) {");
-  for (const std::string& name : k.embeddings) {
-    w.line("[[maybe_unused]] " + storage_type(model.symbols->embedding(name)->type) + "* const " +
-           column_pointer(name) + " = " + embedding_var(name) + ".values().data();");
+// The body, once: lets and whens in source order, then the forces (kForces)
+// or the energy. Both the force pass and energy() instantiate it inline.
+void write_evaluate(Writer& w, const Kernel& k) {
+  const ir::Body& b = k.plan->body;
+  const RenderContext ctx = loop_context(k);
+  const bool has_energy = b.energy != ir::kNoExpr;
+  // A let not read by every instantiation is marked so, and only then.
+  std::vector<bool> by_when(b.lets.size()), by_force(b.lets.size()), by_energy(b.lets.size());
+  for (const ir::Stmt& s : b.stmts)
+    lets_used(b, s.cond, by_when);
+  for (const ir::Force& f : b.forces)
+    lets_used(b, f.value, by_force);
+  lets_used(b, b.energy, by_energy);
+  w.line("template <bool kForces>");
+  w.open("inline bool " + k.cls + "::evaluate(" +
+         std::string(k.slots.empty() ? "const Match& /*m*/" : "const Match& m") + ", " +
+         (k.reads_state ? "const rift::ForceInput& in" : "const rift::ForceInput& /*in*/") + ", " +
+         (k.columns.empty() ? "const Columns& /*c*/" : "const Columns& c") +
+         ", Result& r) const {");
+  for (const ir::Stmt& s : b.stmts) {
+    if (s.kind == ir::Stmt::Kind::When) {
+      write_sourced(w, s.loc, "if (!" + render(b.graph, s.cond, ctx) + ") return false;");
+      continue;
+    }
+    const auto i = static_cast<std::size_t>(s.let);
+    const ir::Let& l = b.lets[i];
+    const bool in_forces = by_when[i] || by_force[i];
+    const bool in_energy = by_when[i] || by_energy[i];
+    const bool always = in_forces && (in_energy || !has_energy);
+    write_sourced(w, l.loc,
+                  std::string(always ? "" : "[[maybe_unused]] ") + "const " +
+                      cpp_type(b.graph[l.value].type) + " " + let_name(l.name) + " = " +
+                      render(b.graph, l.value, ctx) + ";");
   }
+  if (!b.forces.empty() && has_energy) {
+    w.open("if constexpr (kForces) {");
+  } else if (!b.forces.empty()) {
+    w.open("{");
+  }
+  for (const ir::Force& f : b.forces) {
+    write_sourced(w, f.loc, "r." + force_field(b, f) + " = " + render(b.graph, f.value, ctx) + ";");
+  }
+  if (has_energy) {
+    if (!b.forces.empty()) w.middle("} else {");
+    if (b.forces.empty()) w.open("if constexpr (!kForces) {");
+    write_sourced(w, k.inter->energy->loc, "r.energy = " + render(b.graph, b.energy, ctx) + ";");
+  }
+  if (!b.forces.empty() || has_energy) w.close();
+  w.line("return true;");
+  w.close();
+  w.line();
+}
+
+// The whole force pass: column pointers are loaded once instead of once per
+// match (stores through Vec3* may alias anything, so the compiler cannot
+// hoist them itself), and the body is inlined.
+void write_add_forces_all(Writer& w, const Kernel& k) {
+  const ir::Body& b = k.plan->body;
+  const bool forces = !b.forces.empty();
+  w.open("void " + k.cls +
+         "::add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, " +
+         (forces ? "rift::Vec3* f, bool store" : "rift::Vec3* /*f*/, bool /*store*/") + ") {");
+  w.line("const Columns c = columns();");
+  std::set<std::string> stores;
+  for (const ir::Force& f : b.forces)
+    stores.insert(f.embedding);
+  for (const std::string& e : stores)
+    w.line("rift::Vec3* const stored_" + e + " = " + embedding_var(e) + ".values().data();");
   w.open("for (const Match& m : ms) {");
-  std::string reset = "{ if (store) { ";
-  for (const lower::ForceStore& fs : k.plan.forces) {
-    reset += column_pointer(fs.embedding) + "[m." + slot_field(fs.store_slot) +
-             "] = rift::Vec3::Zero(); ";
-  }
-  reset += "} continue; }";
-  write_loop_prologue(w, k, ctx, reset);
-  for (std::size_t i = 0; i < k.inter->forces.size(); ++i) {
-    const ast::Assign& a = k.inter->forces[i];
-    const lower::ForceStore& fs = k.plan.forces[i];
-    const std::string var = "force_" + std::to_string(i);
-    write_sourced(w, a.value->loc,
-                  "const rift::Vec3 " + var + " = " + emit_expr(*a.value, ctx) + ";");
-    w.line("f[m." + slot_field(fs.vertex_slot) + "] += " + var + ";");
-    w.line("if (store) " + column_pointer(fs.embedding) + "[m." + slot_field(fs.store_slot) +
-           "] = " + var + ";");
+  w.line("Result r;");
+  if (forces) {
+    w.open("if (!evaluate<true>(m, in, c, r)) {");
+    w.open("if (store) {");
+    for (const ir::Force& f : b.forces) {
+      w.line("stored_" + f.embedding + "[m." + k.slots[static_cast<std::size_t>(f.store_slot)] +
+             "] = rift::Vec3::Zero();");
+    }
+    w.close();
+    w.line("continue;");
+    w.close();
+    for (const ir::Force& f : b.forces) {
+      const std::string field = std::string("r.") + force_field(b, f);
+      w.line("f[m." + k.slots[static_cast<std::size_t>(f.vertex_slot)] + "] += " + field + ";");
+      w.line("if (store) stored_" + f.embedding + "[m." +
+             k.slots[static_cast<std::size_t>(f.store_slot)] + "] = " + field + ";");
+    }
+  } else {
+    w.line("(void)evaluate<true>(m, in, c, r);");
   }
   w.close();
   w.close();
   w.line();
 }
 
-void write_reset(Writer& w, const KernelModel& k) {
-  w.open("void " + k.cls + "::reset_stored([[maybe_unused]] const Match& m) {");
-  for (const lower::ForceStore& fs : k.plan.forces) {
-    const std::string col = embedding_var(fs.embedding) + ".values()";
-    const std::string at = "m." + slot_field(fs.store_slot);
+void write_reset(Writer& w, const Kernel& k) {
+  const ir::Body& b = k.plan->body;
+  w.open("void " + k.cls + "::reset_stored(" +
+         (b.forces.empty() ? "const Match& /*m*/" : "const Match& m") + ") {");
+  for (const ir::Force& f : b.forces) {
+    const std::string col = embedding_var(f.embedding) + ".values()";
+    const std::string at = std::string("m.") + k.slots[static_cast<std::size_t>(f.store_slot)];
     w.line("if (" + at + " < " + col + ".size()) " + col + "[" + at + "] = rift::Vec3::Zero();");
   }
   w.close();
   w.line();
 }
 
-void write_energy(Writer& w, const KernelModel& k) {
-  const ExprContext ctx = loop_context(k);
-  w.open("rift::Real " + k.cls +
-         "::energy([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in) "
-         "const {");
-  if (k.inter->energy) {
-    write_loop_prologue(w, k, ctx, "return 0;");
-    write_sourced(
-        w, k.inter->energy->loc,
-        "return " +
-            convert(emit_expr(*k.inter->energy, ctx), k.inter->energy->type, ast::Type::Real) +
-            ";");
-  } else {
-    w.line("return 0;");
+void write_energy(Writer& w, const Kernel& k) {
+  if (k.plan->body.energy == ir::kNoExpr) {
+    w.line("rift::Real " + k.cls +
+           "::energy(const Match& /*m*/, const rift::ForceInput& /*in*/) const { return 0; }");
+    w.line();
+    return;
   }
+  w.open("rift::Real " + k.cls + "::energy(const Match& m, const rift::ForceInput& in) const {");
+  w.line("Result r;");
+  w.line("return evaluate<false>(m, in, columns(), r) ? r.energy : 0;");
   w.close();
   w.line();
 }
@@ -306,9 +375,10 @@ std::string tag_embedding(std::string_view interaction) {
   return std::string(interaction) + "_first_dart";
 }
 
-void declare_kernel(Writer& w, const check::CheckedInteraction& ci, const PackModel& model) {
-  const KernelModel k = model_of(ci, model);
-  const ast::Interaction& inter = *ci.interaction;
+void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& model) {
+  const Kernel k = kernel_of(plan);
+  const ast::Interaction& inter = *plan.interaction;
+  const ir::Body& b = plan.body;
   const std::string params = component_params_struct(inter.name.text);
   declare_component_params(w, params, inter.params);
   w.line("/// Interaction '" + inter.name.text + "' on " + orbit_text(inter.support.dims) +
@@ -317,16 +387,16 @@ void declare_kernel(Writer& w, const check::CheckedInteraction& ci, const PackMo
   w.middle(" public:");
   w.line("/// The slots a match caches (trivially copyable, fixed size).");
   w.open("struct Match {");
-  for (std::size_t s = 0; s < k.plan.slots.size(); ++s) {
-    const lower::SlotUse& u = k.plan.slots[s];
-    w.line("rift::Slot " + slot_field(static_cast<int>(s)) + " = rift::kNoSlot;  // " +
+  for (std::size_t s = 0; s < plan.kernel.slots.size(); ++s) {
+    const lower::SlotUse& u = plan.kernel.slots[s];
+    w.line("rift::Slot " + k.slots[s] + " = rift::kNoSlot;  // " +
            (u.vertex ? std::string("vertex") : orbit_text(u.orbit)) + " of " +
-           path_text(k.plan.nodes[static_cast<std::size_t>(u.node)], u.hops));
+           path_text(plan.kernel.nodes[static_cast<std::size_t>(u.node)], u.hops));
   }
   w.close("};");
   w.line("static constexpr rift::Orbit kSupport = " + orbit_code(inter.support.dims) + ";");
   w.line("/// Links from the support dart to the farthest dart a match reads.");
-  w.line("static constexpr int kRadius = " + std::to_string(k.plan.radius) + ";");
+  w.line("static constexpr int kRadius = " + std::to_string(plan.kernel.radius) + ";");
   w.line("static constexpr bool kTagged = " + std::string(inter.tagged ? "true" : "false") + ";");
   w.line();
   w.line("explicit " + k.cls + "(const " + params + "& p = {}, const Params& pack = {})");
@@ -338,8 +408,7 @@ void declare_kernel(Writer& w, const check::CheckedInteraction& ci, const PackMo
          " and runs the interaction's inits.");
   w.line("void initialise(rift::GMap& g);");
   w.line("bool match(const rift::GMap& g, rift::Dart support, Match& m) const;");
-  w.line("void add_forces(const Match& m, const rift::ForceInput& in, rift::Vec3* f, bool store);");
-  w.line("/// add_forces over every match, with the columns read once.");
+  w.line("/// The force pass over every match: adds each force to f (and stores it when `store`).");
   w.line(
       "void add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, "
       "bool store);");
@@ -347,14 +416,34 @@ void declare_kernel(Writer& w, const check::CheckedInteraction& ci, const PackMo
   w.line("rift::Real energy(const Match& m, const rift::ForceInput& in) const;");
   w.line();
   w.middle(" private:");
+  w.line("/// The columns the body reads, loaded once per pass.");
+  w.open("struct Columns {");
+  for (const std::string& name : k.columns) {
+    w.line("const " + storage_type(model.symbols->embedding(name)->type) + "* " +
+           member_name(name) + ";");
+  }
+  w.close("};");
+  w.line("/// What one evaluation of the body gives.");
+  w.open("struct Result {");
+  for (const ir::Force& f : b.forces)
+    w.line("rift::Vec3 " + force_field(b, f) + ";");
+  w.line("rift::Real energy = 0;");
+  w.close("};");
   w.line(
       "/// The pattern's darts from one support dart, in pattern order; false when it does not "
       "match.");
   w.line("bool find(const rift::GMap& g, rift::Dart support, rift::Dart* darts) const;");
+  w.line("Columns columns() const;");
+  w.line("/// The interaction's body; false where a `when` fails.");
+  w.line("template <bool kForces>");
+  w.line(
+      "[[gnu::always_inline]] inline bool evaluate(const Match& m, const rift::ForceInput& in, "
+      "const Columns& c, Result& r) "
+      "const;");
   w.line("std::string name_ = " + quote(inter.name.text) + ";");
   w.line(params + " p_;");
   w.line("Params pack_;");
-  for (const std::string& name : k.embeddings) {
+  for (const std::string& name : plan.embeddings) {
     w.line("rift::Embedding<" + storage_type(model.symbols->embedding(name)->type) + "> " +
            embedding_var(name) + ";");
   }
@@ -365,15 +454,16 @@ void declare_kernel(Writer& w, const check::CheckedInteraction& ci, const PackMo
   w.line();
 }
 
-void emit_kernel(Writer& w, const check::CheckedInteraction& ci, const PackModel& model) {
-  const KernelModel k = model_of(ci, model);
+void emit_kernel(Writer& w, const InteractionPlan& plan, const PackModel& model) {
+  const Kernel k = kernel_of(plan);
   w.line("// ---- interaction '" + k.inter->name.text + "'");
   w.line();
   write_find(w, k);
   write_initialise(w, k, model);
   write_match(w, k);
-  write_add_forces(w, k);
-  write_add_forces_all(w, k, model);
+  write_columns(w, k);
+  write_evaluate(w, k);
+  write_add_forces_all(w, k);
   write_reset(w, k);
   write_energy(w, k);
 }

@@ -208,14 +208,8 @@ T collect_max(const rift::GMap& g, const rift::Embedding<T>& e, rift::Dart d, ri
   return best;
 }
 
-/// R of the polar decomposition m = R S (a proper rotation, det R = +1).
-[[maybe_unused]] rift::Mat3 polar_rotation(const rift::Mat3& m) {
-  Eigen::JacobiSVD<rift::Mat3> svd(m, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  rift::Mat3 u = svd.matrixU();
-  const rift::Mat3 v = svd.matrixV();
-  if ((u * v.transpose()).determinant() < 0) u.col(2) = -u.col(2);
-  return u * v.transpose();
-}
+// rotation(F) is rift::polar_rotation (runtime/rift/core/polar.hpp), found from this
+// namespace by ordinary lookup.
 
 [[maybe_unused]] rift::Vec3 symmetric_eigenvalues(const rift::Mat3& m) {
   return Eigen::SelfAdjointEigenSolver<rift::Mat3>(m, Eigen::EigenvaluesOnly).eigenvalues();

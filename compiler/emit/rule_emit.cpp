@@ -124,10 +124,7 @@ void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) 
   // ---- precondition and values, on the match
   if (!rule.whens.empty()) {
     open_row_loop(w, g.left, false);
-    write_lets(w, rule.lets, ctx);
-    for (const auto& cond : rule.whens) {
-      write_sourced(w, cond->loc, "if (!(" + emit_expr(*cond, ctx) + ")) return false;");
-    }
+    write_body(w, rule.lets, rule.whens, rule.body, ctx, "return false;");
     w.close();
   }
   for (std::size_t k = 0; k < rule.right.assigns.size(); ++k) {

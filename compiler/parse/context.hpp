@@ -26,7 +26,8 @@ struct ParseContext {
   ast::Pattern* pattern = nullptr;        // the pattern block being read
   std::vector<ast::Let>* lets = nullptr;  // where `let` goes in the open body
   std::vector<ast::ExprPtr>* whens = nullptr;
-  bool reported_depth = false;  // "nested too deeply" is said once per file
+  std::vector<ast::BodyStmt>* body = nullptr;  // the source order of both
+  bool reported_depth = false;                 // "nested too deeply" is said once per file
 };
 
 /// Deepest expression tree the parser builds: every later pass recurses over

@@ -84,6 +84,21 @@ class Resolver {
 
   diag::Diagnostics& diags() { return diags_; }
 
+  /// Each `when` of a body sees the lets written before it, and no later one.
+  void whens(const std::vector<ast::Let>& lets, const std::vector<ast::ExprPtr>& whens,
+             const std::vector<ast::BodyStmt>& body, Scope scope) {
+    scope.lets = &lets;
+    std::size_t lets_before = 0;
+    for (const ast::BodyStmt& st : body) {
+      if (st.kind == ast::BodyStmt::Kind::Let) {
+        ++lets_before;
+        continue;
+      }
+      scope.visible_lets = lets_before;
+      expr(*whens[st.index], scope);
+    }
+  }
+
   void lets(const std::vector<ast::Let>& lets, Scope scope) {
     scope.lets = &lets;
     for (std::size_t k = 0; k < lets.size(); ++k) {
@@ -172,10 +187,9 @@ void resolve_rule(const ast::Rule& rule, Resolver& r) {
   }
   before.hidden_reason = "is created by the rule and has no value before the rewrite";
   r.lets(rule.lets, before);
+  r.whens(rule.lets, rule.whens, rule.body, before);
   before.lets = &rule.lets;
   before.visible_lets = rule.lets.size();
-  for (const auto& w : rule.whens)
-    r.expr(*w, before);
   const std::set<std::string> right = node_names(rule.right);
   for (const auto& a : rule.right.assigns) {
     const_cast<ast::Assign&>(a).target = r.embedding(a.embedding.text, a.embedding.loc);
@@ -335,10 +349,9 @@ void resolve_names(const ast::Program& program, const Symbols& symbols, diag::Di
         r.expr(*init.value, at_init);
       }
       r.lets(inter.lets, s);
+      r.whens(inter.lets, inter.whens, inter.body, s);
       s.lets = &inter.lets;
       s.visible_lets = inter.lets.size();
-      for (const auto& w : inter.whens)
-        r.expr(*w, s);
       for (const auto& f : inter.forces) {
         const_cast<ast::Assign&>(f).target = r.embedding(f.embedding.text, f.embedding.loc);
         r.node(f.node.text, f.node.loc, s);

@@ -27,6 +27,8 @@ class OrbitAttachment {
   bool slot_alive(Slot s) const { return dart_count_[s] > 0; }
   std::uint32_t darts_in_slot(Slot s) const { return dart_count_[s]; }
   std::size_t live_slots() const { return dart_count_.size() - free_slots_.size(); }
+  /// Slots no dart owns (reused first by allocate_slot).
+  const std::vector<Slot>& free_slots() const { return free_slots_; }
 
   const std::vector<std::unique_ptr<ColumnBase>>& columns() const { return columns_; }
   ColumnBase* find_column(std::string_view name) const {

@@ -14,8 +14,11 @@ namespace rift {
 struct TearCandidate {
   std::uint32_t criterion = 0;  ///< index of the criterion in the simulation
   Dart at = kNoDart;            ///< the dart the criterion was evaluated at
-  Real measure = 0;             ///< the measure that passed the threshold
-  Vec3 normal = Vec3::Zero();   ///< rule arguments, when the rule takes a plane
+  /// How far the measure passed its threshold (measure - threshold for > and
+  /// >=, threshold - measure for < and <=): larger is more critical, and
+  /// candidates are applied largest first.
+  Real measure = 0;
+  Vec3 normal = Vec3::Zero();  ///< rule arguments, when the rule takes a plane
   Vec3 point = Vec3::Zero();
 };
 

@@ -88,22 +88,41 @@ void Simulation::initialise() {
 }
 
 void Simulation::refresh_inverse_masses() {
-  const OrbitAttachment& att = position_.attachment();
-  const std::size_t slots = att.slot_capacity();
+  const std::size_t slots = position_.attachment().slot_capacity();
   inverse_mass_.assign(slots, 0);
-  const auto& mass = vertex_mass_.values();
-  const auto& pinned = pinned_.values();
-  for (Slot s = 0; s < slots; ++s) {
-    if (att.slot_alive(s) && !pinned[s] && mass[s] > 0) inverse_mass_[s] = 1 / mass[s];
-    if (handles_ && handles_->holds(s, time_)) inverse_mass_[s] = 0;
+  for (Slot s = 0; s < slots; ++s)
+    refresh_inverse_mass(s);
+  // Held vertices start where their handle puts them.
+  if (handles_) {
+    handles_->impose(position_.attachment(), time_, settings_.dt, position_.values(),
+                     velocity_.values());
   }
+}
+
+void Simulation::refresh_inverse_masses(std::span<const Dart> region) {
+  // Only the vertices a rewrite touched (a tear costs what it touches): the
+  // live darts of the region, whose vertex slots include the new ones of a
+  // split, and the slots rewrites freed, which must not move (the free list
+  // is short: slots are freed only when a whole vertex disappears).
+  const OrbitAttachment& att = position_.attachment();
+  if (inverse_mass_.size() < att.slot_capacity()) inverse_mass_.resize(att.slot_capacity(), 0);
+  for (Dart d : region) {
+    if (map_.is_alive(d)) refresh_inverse_mass(att.slot(d));
+  }
+  for (Slot s : att.free_slots())
+    refresh_inverse_mass(s);
+}
+
+void Simulation::refresh_inverse_mass(Slot s) {
+  const OrbitAttachment& att = position_.attachment();
+  const Real mass = vertex_mass_.values()[s];
+  const bool held = handles_ && att.slot_alive(s) && handles_->holds(s, time_);
+  inverse_mass_[s] = att.slot_alive(s) && !pinned_.values()[s] && !held && mass > 0 ? 1 / mass : 0;
   // Pinned vertices never move; held ones move as their handle says.
-  auto& x = position_.values();
-  auto& v = velocity_.values();
-  for (Slot s = 0; s < slots; ++s) {
-    if (inverse_mass_[s] == 0) v[s] = Vec3::Zero();
+  if (inverse_mass_[s] == 0) {
+    velocity_.values()[s] =
+        held ? handles_->target_velocity(s, time_, settings_.dt) : Vec3(Vec3::Zero());
   }
-  if (handles_) handles_->impose(att, time_, settings_.dt, x, v);
 }
 
 void Simulation::accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
@@ -274,7 +293,7 @@ void Simulation::on_topology_changed(std::span<const Dart> touched) {
   map_.free_mark(m);
   for (auto& model : models_)
     model->rematch(map_, region_);
-  refresh_inverse_masses();
+  refresh_inverse_masses(region_);
 }
 
 Real Simulation::kinetic_energy() const {

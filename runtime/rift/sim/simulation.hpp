@@ -90,8 +90,8 @@ class Simulation {
   ///  1. every interaction computes its forces at the current state and
   ///     stores them in its orbits; they are gathered per vertex;
   ///  2. every criterion is evaluated on those forces; the candidates are
-  ///     applied in a deterministic order (criterion order, then larger
-  ///     measure first, then smaller dart), each matched again just before it
+  ///     applied in a deterministic order (criterion order, then most
+  ///     critical first, then smaller dart), each matched again just before it
   ///     applies, up to max_tears_per_step;
   ///  3. if the map changed: masses of touched vertices and matches around
   ///     them are updated, and forces recomputed;
@@ -129,6 +129,8 @@ class Simulation {
   void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& a,
                      bool store);
   void refresh_inverse_masses();
+  void refresh_inverse_masses(std::span<const Dart> region);
+  void refresh_inverse_mass(Slot s);
   std::size_t apply_criteria();
   void check_finite() const;
   void account_external_work(const std::vector<Vec3>& x);

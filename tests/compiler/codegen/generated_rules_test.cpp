@@ -282,7 +282,7 @@ TEST(GeneratedCriteria, ProposeCandidatesAndApplyTheirRule) {
   std::size_t applied = 0;
   std::vector<Dart> touched;
   for (const auto& c : candidates) {
-    EXPECT_DOUBLE_EQ(c.measure, 1.0);
+    EXPECT_DOUBLE_EQ(c.measure, 0.5);  // length 1 passed the limit 0.5 by 0.5
     if (criterion.apply(g, c, touched)) ++applied;
   }
   EXPECT_EQ(applied, 1u);
@@ -297,6 +297,30 @@ TEST(GeneratedCriteria, ProposeCandidatesAndApplyTheirRule) {
   EXPECT_TRUE(candidates.empty());
 }
 
+TEST(GeneratedCriteria, MeasureWrittenWithLessThanPutsTheSmallestFirst) {
+  // Vertical edges have length 1, horizontal ones 0.5: with `length < 2` all
+  // pass, and the shorter ones are the more critical, so they must carry the
+  // larger measure (the simulation applies larger measures first, which
+  // decides which tears happen under max_per_step).
+  GMap g = grid("grid:quad:2x1");
+  g2::ShortEdgeCriterion criterion;
+  criterion.initialise(g);
+  std::vector<rift::TearCandidate> candidates;
+  criterion.collect(g, candidates);
+  ASSERT_EQ(candidates.size(), 7u);
+  auto position = g.embedding<Vec3>("position");
+  for (const auto& c : candidates) {
+    const double length = (position[g.alpha(c.at, 0)] - position[c.at]).norm();
+    EXPECT_DOUBLE_EQ(c.measure, 2.0 - length);
+  }
+  const auto most =
+      std::max_element(candidates.begin(), candidates.end(),
+                       [](const rift::TearCandidate& a, const rift::TearCandidate& b) {
+                         return a.measure < b.measure;
+                       });
+  EXPECT_DOUBLE_EQ((position[g.alpha(most->at, 0)] - position[most->at]).norm(), 0.5);
+}
+
 TEST(GeneratedPack, ListsEverythingByName) {
   const g2::Pack pack;
   EXPECT_EQ(pack.name(), "gen2d");
@@ -309,7 +333,7 @@ TEST(GeneratedPack, ListsEverythingByName) {
   EXPECT_EQ(pack.make_rule("nope"), nullptr);
   ASSERT_EQ(pack.catalog().interactions.size(), 3u);
   EXPECT_EQ(pack.catalog().interactions[0].name, "stretch");
-  ASSERT_EQ(pack.catalog().criteria.size(), 1u);
+  ASSERT_EQ(pack.catalog().criteria.size(), 2u);
   EXPECT_EQ(pack.catalog().criteria[0].name, "long_edge");
   EXPECT_EQ(g2::kDimension, 2);
   // The tag of the tagged interaction is one of the pack's embeddings.

@@ -1,0 +1,47 @@
+// Lowering of checked expressions (ast::Expr) to the typed IR (ir/expr.hpp):
+// names become Let / Param / PackParam nodes, the overload the checks chose
+// for each built-in and every int-to-real promotion become explicit, and in a
+// force loop, reads become slot reads with positions and velocities as
+// Position / Velocity nodes (the integrator's stage arrays).
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "ast/expr.hpp"
+#include "ir/expr.hpp"
+#include "lower/kernel_plan.hpp"
+
+namespace rift::lower {
+
+class ExprLowering {
+ public:
+  /// `nodes`: the body's dart names (pattern nodes); fold variables are
+  /// appended as they are met. `kernel`: set for a force loop, whose reads go
+  /// through the slots it planned.
+  ExprLowering(ir::Graph& graph, std::vector<std::string>& nodes, const KernelPlan* kernel);
+
+  /// Lets lowered so far become visible to later expressions.
+  void add_let(const ast::Let* let, int index);
+
+  ir::ExprId lower(const ast::Expr& e);
+  /// `e` converted to `to` (only int -> real converts).
+  ir::ExprId lower_as(const ast::Expr& e, ir::Type to);
+
+ private:
+  ir::ExprId convert(ir::ExprId id, ir::Type to);
+  ir::ExprId read(const ast::Expr& e);
+  ir::ExprId binary(const ast::Expr& e);
+  ir::ExprId call(const ast::Expr& e);
+  ir::ExprId fold(const ast::Expr& e);
+  int node_index(const std::string& name) const;
+  ir::Place place(const ast::Expr& e) const;
+
+  ir::Graph& g_;
+  std::vector<std::string>& nodes_;
+  const KernelPlan* kernel_;
+  std::map<const ast::Let*, int> lets_;
+};
+
+}  // namespace rift::lower

@@ -1,0 +1,94 @@
+#include "lower/interaction_plan.hpp"
+
+#include "lower/expr_lower.hpp"
+
+namespace rift::lower {
+
+namespace {
+
+void embeddings_read(const ir::Graph& g, ir::ExprId root, std::set<std::string>& out) {
+  ir::visit(g, root, [&](const ir::Node& n) {
+    if (n.op == ir::Op::Read || n.op == ir::Op::Collect) out.insert(n.embedding);
+  });
+}
+
+}  // namespace
+
+InteractionPlan plan_interaction(const check::CheckedInteraction& ci,
+                                 const resolve::Symbols& symbols) {
+  const ast::Interaction& inter = *ci.interaction;
+  InteractionPlan plan;
+  plan.interaction = &inter;
+  plan.kernel = plan_kernel(ci, symbols);
+  ir::Body& body = plan.body;
+  body.nodes = plan.kernel.nodes;
+
+  ExprLowering loop(body.graph, body.nodes, &plan.kernel);
+  for (const ast::BodyStmt& st : inter.body) {
+    ir::Stmt s;
+    if (st.kind == ast::BodyStmt::Kind::Let) {
+      const ast::Let& let = inter.lets[st.index];
+      const int index = static_cast<int>(body.lets.size());
+      body.lets.push_back({let.name.text, loop.lower(*let.value), let.value->loc});
+      loop.add_let(&let, index);
+      s.kind = ir::Stmt::Kind::Let;
+      s.let = index;
+      s.loc = let.value->loc;
+    } else {
+      const ast::Expr& cond = *inter.whens[st.index];
+      s.kind = ir::Stmt::Kind::When;
+      s.cond = loop.lower(cond);
+      s.loc = cond.loc;
+    }
+    body.stmts.push_back(s);
+  }
+  for (std::size_t k = 0; k < inter.forces.size(); ++k) {
+    const ast::Assign& a = inter.forces[k];
+    ir::Force f;
+    for (std::size_t v = 0; v < body.nodes.size(); ++v) {
+      if (body.nodes[v] == a.node.text) f.node = static_cast<int>(v);
+    }
+    f.embedding = a.embedding.text;
+    f.vertex_slot = plan.kernel.forces[k].vertex_slot;
+    f.store_slot = plan.kernel.forces[k].store_slot;
+    f.value = loop.lower_as(*a.value, ir::Type::Vec3);
+    f.loc = a.value->loc;
+    body.forces.push_back(f);
+  }
+  if (inter.energy) body.energy = loop.lower_as(*inter.energy, ir::Type::Real);
+
+  // Inits run on the initial map, reading through it rather than through slots.
+  ExprLowering at_init(body.graph, body.nodes, nullptr);
+  for (const ast::Init& init : inter.inits) {
+    InitPlan p;
+    for (std::size_t v = 0; v < body.nodes.size(); ++v) {
+      if (body.nodes[v] == init.dart.text) p.node = static_cast<int>(v);
+    }
+    p.embedding = init.embedding.text;
+    p.type = init.target->type;
+    p.value = at_init.lower_as(*init.value, p.type);
+    p.loc = init.value->loc;
+    plan.inits.push_back(p);
+    plan.embeddings.insert(p.embedding);
+    embeddings_read(body.graph, p.value, plan.embeddings);
+  }
+
+  for (const SlotUse& s : plan.kernel.slots)
+    plan.embeddings.insert(s.via);
+  for (const ForceStore& f : plan.kernel.forces)
+    plan.embeddings.insert(f.embedding);
+  auto loop_reads = [&](ir::ExprId root) {
+    if (root != ir::kNoExpr) embeddings_read(body.graph, root, plan.embeddings);
+  };
+  for (const ir::Let& l : body.lets)
+    loop_reads(l.value);
+  for (const ir::Stmt& s : body.stmts)
+    loop_reads(s.cond);
+  for (const ir::Force& f : body.forces)
+    loop_reads(f.value);
+  loop_reads(body.energy);
+  plan.embeddings.erase("");
+  return plan;
+}
+
+}  // namespace rift::lower

@@ -1,0 +1,94 @@
+// One tear as the loop pays it (issue 12, row "one tear at 1000x1000 vs
+// 10x10"): the criterion's rewrite (a spring split, both extremities), then
+// Simulation::on_topology_changed (masses of the touched vertices, inverse
+// masses, re-match of every interaction around them). The first tears on a
+// big map also pay the doubling of its dart arrays (amortised growth). Candidates are
+// collected once at set-up on a stretched cloth; each iteration applies the
+// next one. The time is the thread's CPU time of those two calls only
+// (manual time), so set-up and rebuilds when the candidates run out do not
+// count. A tear should cost what it touches: the same at 10x10 and 1000x1000.
+#include <benchmark/benchmark.h>
+
+#include <ctime>
+#include <map>
+
+#include "../physics/physics_setup.hpp"
+#include "../reference/paper_cloth.hpp"
+
+namespace {
+
+using rift::Real;
+using rift::Vec3;
+
+double thread_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+struct TearingCloth {
+  std::unique_ptr<rift::Simulation> sim;
+  std::vector<rift::TearCandidate> candidates;
+  std::size_t next = 0;
+};
+
+TearingCloth stretched_cloth(rift::GridKind kind, int n) {
+  using namespace rift::physics_test;
+  SimSetup setup;
+  setup.interactions = paper_cloth_springs();
+  setup.criteria = {{"spring_split", {{"threshold", 1e-9}}}};
+  TearingCloth c;
+  c.sim = simulate(rift::assemble_gmap(rift::reference::hanging_grid(kind, n, n)), setup);
+  move_vertices(*c.sim, [](const Vec3& p) { return Vec3(1.1 * p.x(), 1.05 * p.y(), p.z()); });
+  const auto& x = c.sim->position().values();
+  const auto& v = c.sim->velocity().values();
+  std::vector<Vec3> f(x.size(), Vec3::Zero());
+  for (const auto& m : c.sim->force_models())
+    m->add_forces({x.data(), v.data()}, f.data(), true);
+  c.sim->criteria()[0]->collect(c.sim->map(), c.candidates);
+  // Spread the tears over the cloth rather than along the dart order.
+  std::vector<rift::TearCandidate> spread;
+  for (std::size_t k = 0; k < c.candidates.size(); ++k)
+    spread.push_back(c.candidates[(k * 7919) % c.candidates.size()]);
+  c.candidates = std::move(spread);
+  return c;
+}
+
+void BM_OneTear(benchmark::State& state, rift::GridKind kind) {
+  const int n = static_cast<int>(state.range(0));
+  // Google Benchmark calls this several times; a 10^6-vertex set-up is
+  // built once per size and reused (later calls tear further candidates).
+  static std::map<int, TearingCloth> cloths;
+  if (!cloths.count(n)) cloths.emplace(n, stretched_cloth(kind, n));
+  TearingCloth& c = cloths.at(n);
+  std::vector<rift::Dart> touched;
+  std::size_t tears = 0;
+  for (auto _ : state) {
+    double spent = 0;
+    for (;;) {
+      if (c.next == c.candidates.size()) c = stretched_cloth(kind, n);
+      const rift::TearCandidate& cand = c.candidates[c.next++];
+      if (!c.sim->map().is_alive(cand.at)) continue;
+      touched.clear();
+      const double t0 = thread_seconds();
+      const bool applied = c.sim->criteria()[0]->apply(c.sim->map(), cand, touched);
+      if (applied) c.sim->on_topology_changed(touched);
+      spent += thread_seconds() - t0;
+      if (applied) break;
+    }
+    ++tears;
+    state.SetIterationTime(spent);
+  }
+  state.counters["vertices"] = static_cast<double>(c.sim->map().count_cells(rift::Orbit{1, 2}));
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(BM_OneTear, quads, rift::GridKind::Quad)
+    ->Arg(10)
+    ->Arg(100)
+    ->Arg(1000)
+    ->UseManualTime()
+    ->Unit(benchmark::kMicrosecond);
+
+BENCHMARK_MAIN();
