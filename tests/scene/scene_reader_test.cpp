@@ -138,7 +138,8 @@ TEST_F(SceneFiles, WrongValuesAreRejectedWithWhatIsExpected) {
             ":16: error: unknown corner 'top-middle': expected top-left, top-right, bottom-left "
             "or bottom-right");
   EXPECT_EQ(with("\"png\"", "\"jpg\""),
-            ":28: error: unknown output format 'jpg': expected vtu, obj, png, gif or csv");
+            ":28: error: unknown output format 'jpg': expected vtu, obj, png, gif or csv (did you "
+            "mean 'png'?)");
 }
 
 TEST_F(SceneFiles, MissingPiecesAndBrokenToml) {
@@ -266,18 +267,18 @@ TEST_F(SceneFiles, DriversAreCheckedWithFileLineAndWhatIsExpected) {
   EXPECT_EQ(with("velocity = [0, 0.1, 0]", "velocity = \"up\""),
             ":11: error: 'velocity' must be an array of 3 numbers, like [0, 0, -9.81]");
   EXPECT_EQ(with("radius = 0.1", "radius = -0.1"),
-            ":36: error: 'radius' must be positive, not -0.1");
+            ":35: error: 'radius' must be positive, not -0.1");
   EXPECT_EQ(with("radius = 0.2", "radius = -0.2"),
             ":20: error: 'radius' must be positive, not -0.2");
   EXPECT_EQ(with("select = \"bottom-left\"", "select = \"bottom-middle\""),
             ":15: error: unknown selection 'bottom-middle': expected a side (top, bottom, left, "
-            "right, front, back), a corner (top-left, top-right, bottom-left, bottom-right) or all "
-            "(did you mean 'bottom-left'?)");
+            "right, front, back), a corner (top-left, top-right, bottom-left, bottom-right) or "
+            "all");
   EXPECT_EQ(with("shape = \"plane\"", "shape = \"plain\""),
             ":40: error: unknown obstacle shape 'plain': expected plane, sphere, box or capsule "
             "(did you mean 'plane'?)");
   EXPECT_EQ(with("friction = 0.3", "friction = -0.3"),
-            ":38: error: 'friction' must not be negative, not -0.3");
+            ":37: error: 'friction' must not be negative, not -0.3");
   EXPECT_EQ(with("{ time = 1,", "{ time = 0,"), ":16: error: keyframe times must increase");
   EXPECT_EQ(with("name = \"grip\"\n", ""),
             "no error");  // a handle's name is optional
@@ -292,10 +293,10 @@ TEST_F(SceneFiles, DriversAreCheckedWithFileLineAndWhatIsExpected) {
             ":10: error: a selection takes exactly one of side, corner, vertices, box, sphere or "
             "group");
   EXPECT_EQ(with("camera = \"follow\"", "camera = \"folow\""),
-            ":62: error: unknown camera 'folow': expected fixed, follow or follow_union (did you "
+            ":57: error: unknown camera 'folow': expected fixed, follow or follow_union (did you "
             "mean 'follow'?)");
   EXPECT_EQ(with("coefficient = 0.5", "coefficient = 0"),
-            ":54: error: 'coefficient' must be positive, not 0");
+            ":49: error: 'coefficient' must be positive, not 0");
 }
 
 }  // namespace

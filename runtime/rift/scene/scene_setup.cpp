@@ -20,8 +20,11 @@ Vec3 up_of(const Scene& scene) {
 }
 
 std::string where_is(const Vec3& p) {
+  // Round-off of a rotated mesh (2e-16 for 0) would only confuse.
+  const Vec3 q =
+      p.unaryExpr([&](Real v) { return std::abs(v) < 1e-12 * (1 + p.norm()) ? 0.0 : v; });
   char text[96];
-  std::snprintf(text, sizeof text, "(%.4g, %.4g, %.4g)", p.x(), p.y(), p.z());
+  std::snprintf(text, sizeof text, "(%.4g, %.4g, %.4g)", q.x(), q.y(), q.z());
   return text;
 }
 
