@@ -10,6 +10,7 @@
 #include "cli/progress.hpp"
 #include "rift/core/interrupt.hpp"
 #include "rift/output/frame_outputs.hpp"
+#include "rift/output/scenery.hpp"
 #include "rift/scene/scene_setup.hpp"
 
 namespace rift::cli {
@@ -18,6 +19,15 @@ namespace {
 
 std::size_t count_elements(const GMap& map) {
   return map.count_cells(Orbit::all(map.dimension() - 1));
+}
+
+// Free edges (2D) or faces (3D): the boundary, which tearing lengthens.
+std::size_t count_free_sides(const GMap& map) {
+  const int n = map.dimension();
+  std::size_t sides = 0;
+  const Orbit side = n == 2 ? Orbit{0} : Orbit{0, 1};  // within one element
+  map.for_each_cell(side, [&](Dart d) { sides += map.is_free(d, n) ? 1 : 0; });
+  return sides;
 }
 
 }  // namespace
@@ -56,13 +66,34 @@ int run_run(const RunOptions& options, const PackRegistry& packs) {
   config.vtu_encoding = scene.output.vtu_ascii ? VtuEncoding::kAscii : VtuEncoding::kAppendedBinary;
   config.obj = wants("obj");
   config.png = wants("png");
+  config.gif = wants("gif");
+  config.gif_delay_ms = scene.output.gif_delay_ms;
+  switch (scene.output.camera) {
+    case CameraMode::kFixed:
+      config.camera = OutputConfig::Camera::kFixed;
+      break;
+    case CameraMode::kFollow:
+      config.camera = OutputConfig::Camera::kFollow;
+      break;
+    case CameraMode::kFollowUnion:
+      config.camera = OutputConfig::Camera::kFollowUnion;
+      break;
+  }
   config.png_every = scene.output.png_every > 0 ? scene.output.png_every : 1;
   config.render.width = scene.output.width;
   config.render.height = scene.output.height;
   config.frame.element_id = "element_index";
   // Look at the object upright: "up" is against gravity, the eye in front,
   // a little to the right and above.
-  const Vec3 up = scene.gravity.norm() > 0 ? Vec3(-scene.gravity.normalized()) : Vec3(0, 0, 1);
+  // Without gravity, a sheet flat in the x-y plane is seen from above.
+  GMap& body = sim->map();
+  Vec3 body_lo = Vec3::Constant(INFINITY), body_hi = Vec3::Constant(-INFINITY);
+  body.for_each_cell(Orbit::cell(0, body.dimension()), [&](Dart d) {
+    body_lo = body_lo.cwiseMin(sim->position()[d]);
+    body_hi = body_hi.cwiseMax(sim->position()[d]);
+  });
+  const Vec3 up =
+      scene.gravity.norm() > 0 ? Vec3(-scene.gravity.normalized()) : default_up(body_lo, body_hi);
   int up_axis = 0;
   up.cwiseAbs().maxCoeff(&up_axis);
   config.view.up = up;
@@ -72,13 +103,27 @@ int run_run(const RunOptions& options, const PackRegistry& packs) {
   direction[side_axis] = 0.45;
   direction[up_axis] = 0.35 * (up[up_axis] > 0 ? 1 : -1);
   direction[front_axis] = up_axis == 1 ? 1.0 : -1.0;
+  if (scene.gravity.norm() == 0 && up_axis == 1) {
+    // A flat sheet without gravity (a specimen on a test bench): almost
+    // straight on, so that cracks in its plane show undistorted.
+    direction = Vec3(0.12, 0.1, 1.0);
+  }
   config.view.direction = direction;
+  const std::string torn_column = sim->map().dimension() == 2 ? "torn_edges" : "torn_faces";
   if (wants("csv")) {
-    config.csv_columns = {"step",  "time",     "kinetic_energy", "potential_energy",
-                          "tears", "vertices", "elements",       "step_ms"};
+    config.csv_columns = {"step",          "time",     "kinetic_energy", "potential_energy",
+                          "tears",         "vertices", "elements",       "step_ms",
+                          "external_work", torn_column};
+    if (const Handles* handles = sim->handles()) {
+      for (std::size_t h = 0; h < handles->count(); ++h) {
+        for (const char* axis : {"_fx", "_fy", "_fz"})
+          config.csv_columns.push_back(handles->motion(static_cast<int>(h)).name + axis);
+      }
+    }
   }
   // Forces per vertex for the point data, refreshed before each frame.
   GMap& map = sim->map();
+  const std::size_t free_at_start = count_free_sides(map);
   Embedding<Vec3> force = map.add_embedding<Vec3>("force", Orbit::cell(0, map.dimension()),
                                                   MergePolicy::kSum, Vec3::Zero());
   FrameOutputs outputs(config);
@@ -92,16 +137,46 @@ int run_run(const RunOptions& options, const PackRegistry& packs) {
         setup.total_mass, steps, scene.dt, to_string(scene.integrator));
   }
   double step_ms = 0;
+  std::vector<Vec3> scenery_points;
+  std::vector<std::array<std::uint32_t, 3>> scenery_triangles;
+  FrameMesh scenery;
   auto write_frame = [&] {
     force.values() = sim->internal_forces();
     force.values().resize(force.attachment().slot_capacity(), Vec3::Zero());
-    outputs.write_frame(map, sim->time());
+    const FrameMesh* props = nullptr;
+    if (sim->contact()) {
+      Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+      map.for_each_cell(Orbit::cell(0, map.dimension()), [&](Dart d) {
+        lo = lo.cwiseMin(sim->position()[d]);
+        hi = hi.cwiseMax(sim->position()[d]);
+      });
+      scenery_points.clear();
+      scenery_triangles.clear();
+      for (const Obstacle& o : sim->contact()->obstacles())
+        tessellate(o, sim->time(), lo, hi, scenery_points, scenery_triangles);
+      make_scenery(scenery_points, scenery_triangles, scenery);
+      props = &scenery;
+    }
+    outputs.write_frame(map, sim->time(), props);
     if (!config.csv_columns.empty()) {
-      outputs.write_statistics(std::vector<double>{
-          static_cast<double>(sim->steps_done()), sim->time(), sim->kinetic_energy(),
-          sim->potential_energy(), static_cast<double>(sim->tears()),
-          static_cast<double>(map.count_cells_of_dimension(0)),
-          static_cast<double>(count_elements(map)), step_ms});
+      std::vector<double> row{static_cast<double>(sim->steps_done()),
+                              sim->time(),
+                              sim->kinetic_energy(),
+                              sim->potential_energy(),
+                              static_cast<double>(sim->tears()),
+                              static_cast<double>(map.count_cells_of_dimension(0)),
+                              static_cast<double>(count_elements(map)),
+                              step_ms,
+                              sim->external_work(),
+                              static_cast<double>(count_free_sides(map) - free_at_start)};
+      if (const Handles* handles = sim->handles()) {
+        const std::vector<Vec3>& reactions = sim->handle_reactions();
+        for (std::size_t h = 0; h < handles->count(); ++h) {
+          const Vec3 f = h < reactions.size() ? reactions[h] : Vec3::Zero();
+          row.insert(row.end(), {f.x(), f.y(), f.z()});
+        }
+      }
+      outputs.write_statistics(row);
     }
   };
 

@@ -137,8 +137,9 @@ TEST_F(SceneFiles, WrongValuesAreRejectedWithWhatIsExpected) {
   EXPECT_EQ(with("\"top-left\"", "\"top-middle\""),
             ":16: error: unknown corner 'top-middle': expected top-left, top-right, bottom-left "
             "or bottom-right");
-  EXPECT_EQ(with("\"png\"", "\"gif\""),
-            ":28: error: unknown output format 'gif': expected vtu, obj, png or csv");
+  EXPECT_EQ(with("\"png\"", "\"jpg\""),
+            ":28: error: unknown output format 'jpg': expected vtu, obj, png, gif or csv (did you "
+            "mean 'png'?)");
 }
 
 TEST_F(SceneFiles, ImplicitSolverKeys) {
@@ -202,6 +203,144 @@ TEST_F(SceneFiles, MeshPathsAreRelativeToTheScene) {
   text.replace(text.find("\"grid:quad:10x10\""), 17, "\"tri.obj\"");
   const Scene s = read_scene(write(text), test_catalog());
   EXPECT_EQ(s.mesh.source, (dir_ / "tri.obj").string());
+}
+
+const char* kDriven = R"(
+[mesh]
+source = "grid:tri:4x4"
+
+[simulation]
+gravity = [0, 0, 0]
+
+[[handle]]
+name = "grip"
+select = { side = "top", within = 0.01 }
+velocity = [0, 0.1, 0]
+release = 0.5
+
+[[handle]]
+select = "bottom-left"
+keyframes = [{ time = 0 }, { time = 1, translate = [0, 0, 0.1], rotate = [0, 0, 90] }]
+pivot = [0, 0, 0]
+
+[[load]]
+select = { sphere = { center = [0.5, 0.5, 0], radius = 0.2 } }
+force = [0, 0, 1]
+ramp = 0.25
+
+[[load]]
+acceleration = [1, 0, 0]
+per_vertex = true
+
+[[initial_velocity]]
+select = { box = { min = [0, 0, 0], max = [1, 0.5, 0] } }
+velocity = [0, 0, 2]
+
+[[obstacle]]
+shape = "sphere"
+center = [0.5, 0.5, 1]
+radius = 0.1
+velocity = [0, 0, -5]
+friction = 0.3
+
+[[obstacle]]
+shape = "plane"
+point = [0, 0, -1]
+normal = [0, 0, 1]
+
+[[notch]]
+from = [0, 0.5, 0]
+to = [0.3, 0.5, 0]
+
+[drag]
+coefficient = 0.5
+
+[[interaction]]
+name = "stretch"
+stiffness = 60
+
+[output]
+formats = ["png", "gif"]
+camera = "follow"
+)";
+
+TEST_F(SceneFiles, ReadsHandlesLoadsObstaclesAndNotches) {
+  const Scene s = read_scene(write(kDriven), test_catalog());
+  ASSERT_EQ(s.handles.size(), 2u);
+  EXPECT_EQ(s.handles[0].motion.name, "grip");
+  EXPECT_EQ(s.handles[0].select.kind, Selection::Kind::kSide);
+  EXPECT_EQ(s.handles[0].select.within, 0.01);
+  EXPECT_EQ(s.handles[0].motion.velocity, Vec3(0, 0.1, 0));
+  EXPECT_EQ(s.handles[0].motion.release, 0.5);
+  EXPECT_EQ(s.handles[1].motion.name, "handle2");
+  EXPECT_EQ(s.handles[1].select.kind, Selection::Kind::kCorner);
+  ASSERT_EQ(s.handles[1].motion.keyframes.size(), 2u);
+  EXPECT_EQ(s.handles[1].motion.keyframes[1].rotate_degrees, Vec3(0, 0, 90));
+  // Halfway: half the translation and a quarter turn's half about the pivot.
+  const Vec3 half = s.handles[1].motion.place(Vec3(1, 0, 0), 0.5);
+  EXPECT_NEAR(half.x(), std::sqrt(0.5), 1e-12);
+  EXPECT_NEAR(half.y(), std::sqrt(0.5), 1e-12);
+  EXPECT_NEAR(half.z(), 0.05, 1e-12);
+  ASSERT_EQ(s.loads.size(), 2u);
+  EXPECT_EQ(s.loads[0].select.kind, Selection::Kind::kSphere);
+  EXPECT_EQ(s.loads[0].spec.ramp, 0.25);
+  EXPECT_EQ(s.loads[1].select.kind, Selection::Kind::kAll);
+  EXPECT_TRUE(s.loads[1].spec.per_vertex);
+  ASSERT_EQ(s.initial_velocities.size(), 1u);
+  EXPECT_EQ(s.initial_velocities[0].select.kind, Selection::Kind::kBox);
+  ASSERT_EQ(s.obstacles.size(), 2u);
+  EXPECT_EQ(s.obstacles[0].obstacle.shape, Obstacle::Shape::kSphere);
+  EXPECT_EQ(s.obstacles[0].obstacle.friction, 0.3);
+  EXPECT_EQ(s.obstacles[1].obstacle.shape, Obstacle::Shape::kPlane);
+  ASSERT_EQ(s.notches.size(), 1u);
+  EXPECT_EQ(s.notches[0].to, Vec3(0.3, 0.5, 0));
+  EXPECT_EQ(s.drag.coefficient, 0.5);
+  EXPECT_EQ(s.output.camera, CameraMode::kFollow);
+}
+
+TEST_F(SceneFiles, DriversAreCheckedWithFileLineAndWhatIsExpected) {
+  auto with = [&](const std::string& from, const std::string& to) {
+    std::string text = kDriven;
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+    return error(text);
+  };
+  EXPECT_EQ(with("release = 0.5", "relase = 0.5"),
+            ":12: error: unknown key 'relase' in [[handle]] (did you mean 'release'?)");
+  EXPECT_EQ(with("velocity = [0, 0.1, 0]", "velocity = \"up\""),
+            ":11: error: 'velocity' must be an array of 3 numbers, like [0, 0, -9.81]");
+  EXPECT_EQ(with("radius = 0.1", "radius = -0.1"),
+            ":35: error: 'radius' must be positive, not -0.1");
+  EXPECT_EQ(with("radius = 0.2", "radius = -0.2"),
+            ":20: error: 'radius' must be positive, not -0.2");
+  EXPECT_EQ(with("select = \"bottom-left\"", "select = \"bottom-middle\""),
+            ":15: error: unknown selection 'bottom-middle': expected a side (top, bottom, left, "
+            "right, front, back), a corner (top-left, top-right, bottom-left, bottom-right) or "
+            "all");
+  EXPECT_EQ(with("shape = \"plane\"", "shape = \"plain\""),
+            ":40: error: unknown obstacle shape 'plain': expected plane, sphere, box or capsule "
+            "(did you mean 'plane'?)");
+  EXPECT_EQ(with("friction = 0.3", "friction = -0.3"),
+            ":37: error: 'friction' must not be negative, not -0.3");
+  EXPECT_EQ(with("{ time = 1,", "{ time = 0,"), ":16: error: keyframe times must increase");
+  EXPECT_EQ(with("name = \"grip\"\n", ""),
+            "no error");  // a handle's name is optional
+  EXPECT_EQ(
+      with("[[initial_velocity]]\nselect = { box = { min = [0, 0, 0], max = [1, 0.5, 0] } }\n",
+           "[[initial_velocity]]\n"),
+      ":28: error: [[initial_velocity]] needs 'select': a side (\"top\", \"left\"...), a "
+      "corner (\"top-left\"...), \"all\", or a table such as { box = { min = [..], max = "
+      "[..] } }, { sphere = { center = [..], radius = r } }, { vertices = [..] }, { group = "
+      "tag }");
+  EXPECT_EQ(with("{ side = \"top\", within = 0.01 }", "{ side = \"top\", box = {} }"),
+            ":10: error: a selection takes exactly one of side, corner, vertices, box, sphere or "
+            "group");
+  EXPECT_EQ(with("camera = \"follow\"", "camera = \"folow\""),
+            ":57: error: unknown camera 'folow': expected fixed, follow or follow_union (did you "
+            "mean 'follow'?)");
+  EXPECT_EQ(with("coefficient = 0.5", "coefficient = 0"),
+            ":49: error: 'coefficient' must be positive, not 0");
 }
 
 }  // namespace

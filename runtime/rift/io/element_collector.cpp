@@ -4,9 +4,13 @@
 
 namespace rift::io {
 
-void ElementCollector::add(ElementType type, std::span<const std::uint32_t> vertices, int line) {
-  MeshData& target = element_dimension(type) == 3 ? volume_ : surface_;
+void ElementCollector::add(ElementType type, std::span<const std::uint32_t> vertices, int line,
+                           std::optional<std::int64_t> tag) {
+  const bool solid = element_dimension(type) == 3;
+  MeshData& target = solid ? volume_ : surface_;
   target.add_element(type, vertices.begin(), vertices.end(), line);
+  target.element_tags.push_back(tag.value_or(0));
+  if (!tag) ++(solid ? untagged_volume_ : untagged_surface_);
 }
 
 void ElementCollector::finish(MeshData& mesh, int line) {
@@ -19,6 +23,8 @@ void ElementCollector::finish(MeshData& mesh, int line) {
     throw MeshError(mesh.source, line, problem);
   }
   mesh.dimension = volume_.elements.empty() ? 2 : 3;
+  const std::size_t untagged = mesh.dimension == 3 ? untagged_volume_ : untagged_surface_;
+  if (untagged == 0) mesh.element_tags = std::move(kept.element_tags);
   mesh.elements = std::move(kept.elements);
   mesh.element_vertices = std::move(kept.element_vertices);
 }

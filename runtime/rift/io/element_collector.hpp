@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -18,7 +19,10 @@ namespace rift::io {
 class ElementCollector {
  public:
   /// `vertices` are 0-based point indices the reader has already checked.
-  void add(ElementType type, std::span<const std::uint32_t> vertices, int line);
+  /// `tag`: the element's physical group (Gmsh physical tag, Medit
+  /// reference); groups are kept when every kept element has one.
+  void add(ElementType type, std::span<const std::uint32_t> vertices, int line,
+           std::optional<std::int64_t> tag = std::nullopt);
   /// A line or point element, ignored but mentioned if nothing else is found.
   void ignore_lower_dimensional() { ++ignored_; }
 
@@ -33,6 +37,7 @@ class ElementCollector {
   MeshData surface_;
   MeshData volume_;
   std::size_t ignored_ = 0;
+  std::size_t untagged_surface_ = 0, untagged_volume_ = 0;
 };
 
 }  // namespace rift::io

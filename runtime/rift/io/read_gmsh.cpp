@@ -12,6 +12,7 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <unordered_map>
@@ -387,7 +388,8 @@ class GmshReader {
       // element, VTK's wedge (our convention) out of it: reverse both triangles.
       v = {v[0], v[2], v[1], v[3], v[5], v[4], 0, 0};
     }
-    elements_.add(type.type, std::span(v.data(), static_cast<std::size_t>(type.nodes)), line);
+    elements_.add(type.type, std::span(v.data(), static_cast<std::size_t>(type.nodes)), line,
+                  physical_);
   }
 
   void read_elements_v12(const Token& header) {
@@ -398,7 +400,7 @@ class GmshReader {
       const std::int64_t id = in_.to_integer(number, "an element number");
       const GmshType type = element_type(field(number.line, "an element type"));
       if (dialect_ == Dialect::kV1) {
-        in_.to_integer(field(number.line, "a physical region"), "a physical region");
+        physical_ = in_.to_integer(field(number.line, "a physical region"), "a physical region");
         in_.to_integer(field(number.line, "an elementary region"), "an elementary region");
         const Token count = field(number.line, "the number of nodes");
         const std::size_t nodes = in_.to_count(count, "the number of nodes");
@@ -410,8 +412,12 @@ class GmshReader {
       } else {
         const std::size_t tags =
             in_.to_count(field(number.line, "the number of tags"), "the number of tags");
-        for (std::size_t t = 0; t < tags; ++t)
-          in_.to_integer(field(number.line, "a tag"), "a tag");
+        // The first tag is the physical group.
+        physical_.reset();
+        for (std::size_t t = 0; t < tags; ++t) {
+          const std::int64_t value = in_.to_integer(field(number.line, "a tag"), "a tag");
+          if (t == 0) physical_ = value;
+        }
       }
       read_element_nodes(type, id, number.line);
     }
@@ -639,6 +645,9 @@ class GmshReader {
   TagIndex node_index_;
   int elements_line_ = 0;
   bool saw_nodes_ = false;
+  // Physical group of the element being read (v1, v2); v4 keeps physical
+  // groups in $Entities, not read: its elements have none.
+  std::optional<std::int64_t> physical_;
 };
 
 }  // namespace

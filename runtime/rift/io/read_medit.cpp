@@ -3,6 +3,7 @@
 // its value may be on separate lines: "Dimension\n3"), so it is read as tokens.
 #include <array>
 #include <cctype>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -153,8 +154,12 @@ class MeditReader {
       const int reals = k.reals + (k.per_dimension ? dimension_ : 0);
       for (int i = 0; i < reals; ++i)
         in_.to_real(value(key, r, n), "a value of " + std::string(k.name));
-      for (int i = 0; i < k.integers; ++i)
-        in_.to_integer(value(key, r, n), "an integer of " + std::string(k.name));
+      std::optional<std::int64_t> reference;
+      for (int i = 0; i < k.integers; ++i) {
+        const std::int64_t ref =
+            in_.to_integer(value(key, r, n), "an integer of " + std::string(k.name));
+        if (i == 0) reference = ref;
+      }
       if (!k.element) {
         if (k.vertices >= 2) elements_.ignore_lower_dimensional();
         continue;
@@ -163,7 +168,8 @@ class MeditReader {
         in_.fail(line,
                  std::string(k.name) + " in a mesh of dimension " + std::to_string(dimension_));
       }
-      elements_.add(k.type, std::span(v.data(), static_cast<std::size_t>(k.vertices)), line);
+      elements_.add(k.type, std::span(v.data(), static_cast<std::size_t>(k.vertices)), line,
+                    reference);
     }
   }
 

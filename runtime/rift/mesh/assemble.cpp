@@ -419,10 +419,17 @@ GMap assemble_gmap(const MeshData& mesh, AssemblyReport* report) {
       map.add_embedding<std::int64_t>("point_index", vertex_orbit(n), MergePolicy::kKeepFirst, -1);
   Embedding<std::int64_t> element_index = map.add_embedding<std::int64_t>(
       "element_index", Orbit::all(n - 1), MergePolicy::kKeepFirst, -1);
+  // Physical groups, when the file gave one per element (scene selections).
+  Embedding<std::int64_t> element_tag;
+  if (!mesh.element_tags.empty() && mesh.element_tags.size() == mesh.elements.size()) {
+    element_tag = map.add_embedding<std::int64_t>("element_tag", Orbit::all(n - 1),
+                                                  MergePolicy::kKeepFirst, 0);
+  }
   {
     Dart d = first;
     for (std::size_t k = 0; k < mesh.elements.size(); ++k) {
       element_index[d] = static_cast<std::int64_t>(k);
+      if (element_tag) element_tag[d] = mesh.element_tags[k];
       const MeshElement& e = mesh.elements[k];
       d += static_cast<Dart>(n == 2 ? 2 * e.count : layout_of(e.type).dart_vertex.size());
     }

@@ -44,6 +44,9 @@ struct MeshData {
   std::vector<std::uint32_t> element_vertices;
   std::vector<MeshElement> elements;
   std::string source;  ///< file name or generator spelling, for messages
+  /// Physical group of each element (Gmsh physical tag, Medit reference),
+  /// parallel to `elements`; empty when the file gives none.
+  std::vector<std::int64_t> element_tags;
 
   void add_element(ElementType type, std::initializer_list<std::uint32_t> vertices,
                    int source_line = 0) {

@@ -22,6 +22,7 @@
 #include "rift/output/camera.hpp"
 #include "rift/output/csv_writer.hpp"
 #include "rift/output/frame_mesh.hpp"
+#include "rift/output/gif_writer.hpp"
 #include "rift/output/obj_writer.hpp"
 #include "rift/output/pvd_writer.hpp"
 #include "rift/output/renderer.hpp"
@@ -42,6 +43,12 @@ struct OutputConfig {
   FrameOptions frame;
   RenderOptions render;
   CameraView view;
+  /// fixed: framed on the first rendered frame; follow: each frame's points;
+  /// follow_union: every point rendered so far.
+  enum class Camera { kFixed, kFollow, kFollowUnion } camera = Camera::kFixed;
+  /// An animated GIF of the rendered frames (<name>.gif).
+  bool gif = false;
+  int gif_delay_ms = 80;
   /// When FrameOptions gives neither original_boundary nor torn_darts, the
   /// first frame's free darts are taken as the original boundary, so later
   /// free darts count as torn.
@@ -54,7 +61,9 @@ class FrameOutputs {
   explicit FrameOutputs(OutputConfig config);
 
   /// Writes the next frame of `map` at simulation time `time` and returns it.
-  const FrameMesh& write_frame(const GMap& map, double time);
+  /// `scenery` (obstacles) is drawn in PNGs and written as
+  /// obstacles_NNNNNN.vtu, listed in <name>_obstacles.pvd.
+  const FrameMesh& write_frame(const GMap& map, double time, const FrameMesh* scenery = nullptr);
   /// Appends one CSV row (one value per csv_columns entry).
   void write_statistics(std::span<const double> row);
 
@@ -71,7 +80,9 @@ class FrameOutputs {
   OutputConfig config_;
   FrameExtractor extractor_;
   std::vector<std::uint8_t> original_boundary_;
-  std::optional<PvdWriter> pvd_;
+  std::optional<PvdWriter> pvd_, scenery_pvd_;
+  std::optional<GifWriter> gif_;
+  Vec3 seen_lo_ = Vec3::Constant(INFINITY), seen_hi_ = Vec3::Constant(-INFINITY);
   std::optional<CsvWriter> csv_;
   VtuWriter vtu_;
   ObjWriter obj_;

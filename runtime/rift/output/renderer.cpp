@@ -33,7 +33,8 @@ Camera Renderer::frame_camera(const FrameMesh& frame, const CameraView& view) co
   return Camera::framing(frame.points, static_cast<Real>(options_.width) / options_.height, view);
 }
 
-const Image& Renderer::render(const FrameMesh& frame, const Camera& camera) {
+const Image& Renderer::render(const FrameMesh& frame, const Camera& camera,
+                              const FrameMesh* scenery) {
   const std::size_t samples = static_cast<std::size_t>(w_) * static_cast<std::size_t>(h_);
   colour_.resize(3 * samples);
   for (std::size_t k = 0; k < samples; ++k) {
@@ -50,12 +51,20 @@ const Image& Renderer::render(const FrameMesh& frame, const Camera& camera) {
   light_ = (-camera.forward() + 0.55 * camera.up() - 0.35 * camera.right()).normalized();
   fill_ = (-0.6 * camera.forward() - 0.2 * camera.up() + camera.right()).normalized();
   for (std::size_t f = 0; f < frame.face_count(); ++f)
-    draw_face(frame, f, camera);
+    draw_face(frame, f, camera, false);
+  if (scenery) {
+    projected_.resize(scenery->points.size());
+    for (std::size_t p = 0; p < scenery->points.size(); ++p)
+      projected_[p] = camera.project(scenery->points[p], w_, h_);
+    for (std::size_t f = 0; f < scenery->face_count(); ++f)
+      draw_face(*scenery, f, camera, true);
+  }
   resolve();
   return image_;
 }
 
-void Renderer::draw_face(const FrameMesh& frame, std::size_t f, const Camera& camera) {
+void Renderer::draw_face(const FrameMesh& frame, std::size_t f, const Camera& camera,
+                         bool scenery) {
   const std::uint32_t begin = frame.face_offsets[f];
   const std::uint32_t end = frame.face_offsets[f + 1];
   const std::uint32_t* ids = frame.face_vertices.data();
@@ -80,7 +89,9 @@ void Renderer::draw_face(const FrameMesh& frame, std::size_t f, const Camera& ca
 
   Colour base = facing || frame.dimension == 3 ? options_.front : options_.back;
   const std::uint32_t element = frame.face_element[f];
-  if (frame.face_torn[f]) {
+  if (scenery) {
+    base = options_.scenery;
+  } else if (frame.face_torn[f]) {
     base = options_.torn;
   } else if (element != FrameMesh::kNoElement && frame.torn[element]) {
     base = mix(base, options_.torn, 0.45f);
@@ -90,7 +101,7 @@ void Renderer::draw_face(const FrameMesh& frame, std::size_t f, const Camera& ca
   const Colour shaded = scale(base, light);
 
   strokes_.clear();
-  if (options_.edges) {
+  if (options_.edges && !scenery) {
     const Real ss = options_.supersample;
     for (std::uint32_t k = begin; k < end; ++k) {
       const ScreenPoint& a = projected_[ids[k]];

@@ -27,6 +27,7 @@ struct RenderOptions {
   Colour back{0.80f, 0.80f, 0.74f};   ///< back faces of a surface
   Colour torn{0.88f, 0.16f, 0.12f};   ///< torn elements (2D), crack faces (3D)
   Colour tear_edge{0.18f, 0.0f, 0.0f};
+  Colour scenery{0.56f, 0.56f, 0.60f};  ///< obstacles and other props
 };
 
 /// 8-bit RGB pixels, row by row from the top.
@@ -51,8 +52,11 @@ class Renderer {
   /// following frames so that the view stays put.
   Camera frame_camera(const FrameMesh& frame, const CameraView& view = {}) const;
 
-  /// Renders the boundary surface of `frame`; the image lives until the next call.
-  const Image& render(const FrameMesh& frame, const Camera& camera);
+  /// Renders the boundary surface of `frame`, and the faces of `scenery`
+  /// (obstacles: flat grey, no edges) when given; the image lives until the
+  /// next call.
+  const Image& render(const FrameMesh& frame, const Camera& camera,
+                      const FrameMesh* scenery = nullptr);
 
   const RenderOptions& options() const { return options_; }
 
@@ -65,7 +69,7 @@ class Renderer {
     Colour colour;
     float strength;  // 1: replaces the face colour, < 1: blends
   };
-  void draw_face(const FrameMesh& frame, std::size_t f, const Camera& camera);
+  void draw_face(const FrameMesh& frame, std::size_t f, const Camera& camera, bool scenery);
   void fill_triangle(const ScreenPoint& a, const ScreenPoint& b, const ScreenPoint& c,
                      const Colour& colour);
   void resolve();

@@ -10,8 +10,12 @@
 
 #include "rift/embed/value.hpp"
 #include "rift/scene/catalog.hpp"
+#include "rift/scene/selection.hpp"
+#include "rift/sim/handles.hpp"
 #include "rift/sim/implicit_euler.hpp"
 #include "rift/sim/integrator.hpp"
+#include "rift/sim/loads.hpp"
+#include "rift/sim/obstacles.hpp"
 
 namespace rift {
 
@@ -47,11 +51,58 @@ struct ScenePins {
   std::vector<std::pair<Vec3, Vec3>> boxes;  ///< every vertex inside [min, max]
 };
 
+/// [[handle]]: a selection moved as the motion says ([pin] is a fixed one).
+struct SceneHandle {
+  int line = 0;
+  Selection select;
+  HandleMotion motion;
+  bool pivot_given = false;  ///< else the centre of the selected vertices
+};
+
+/// [[load]]: a force and/or an acceleration on a selection.
+struct SceneLoad {
+  int line = 0;
+  Selection select;  ///< default: every vertex
+  LoadSpec spec;
+};
+
+/// [[initial_velocity]]: the velocity of a selection at t = 0.
+struct SceneInitialVelocity {
+  int line = 0;
+  Selection select;
+  Vec3 velocity = Vec3::Zero();
+};
+
+/// [[obstacle]].
+struct SceneObstacle {
+  int line = 0;
+  Obstacle obstacle;
+};
+
+/// [[notch]]: a cut made before the first step, along the segment from ->
+/// to (2D), or the parallelogram from, to, to + depth, from + depth (3D).
+struct SceneNotch {
+  int line = 0;
+  Vec3 from = Vec3::Zero(), to = Vec3::Zero();
+  Vec3 depth = Vec3::Zero();
+};
+
+/// [drag]: linear air drag on the faces of a surface.
+struct SceneDrag {
+  int line = 0;
+  Real coefficient = 0;  ///< N s / m^3; 0: none
+  Vec3 wind = Vec3::Zero();
+};
+
+enum class CameraMode { kFixed, kFollow, kFollowUnion };
+
 struct SceneOutput {
   std::string dir;  ///< default: "out/<scene name>" next to the working dir
   int every = 10;   ///< a frame every `every` steps
-  std::vector<std::string> formats{"vtu", "csv"};  ///< among vtu, obj, png, csv
-  int png_every = 0;                               ///< a PNG every k-th frame (0: same as frames)
+  std::vector<std::string> formats{"vtu", "csv"};  ///< among vtu, obj, png, gif, csv
+  CameraMode camera = CameraMode::kFixed;
+  int gif_delay_ms = 80;   ///< between GIF frames
+  int png_every = 0;       ///< a PNG every k-th frame (0: same as frames)
   bool vtu_ascii = false;  ///< vtu_encoding = "ascii"; default "binary" (appended raw)
   int width = 800, height = 600;
 };
@@ -75,6 +126,12 @@ struct Scene {
   std::optional<Real> total_mass;
   std::optional<Real> density;
   ScenePins pins;
+  std::vector<SceneHandle> handles;
+  std::vector<SceneLoad> loads;
+  std::vector<SceneInitialVelocity> initial_velocities;
+  std::vector<SceneObstacle> obstacles;
+  std::vector<SceneNotch> notches;
+  SceneDrag drag;
   std::vector<ComponentUse> interactions;
   std::vector<ComponentUse> criteria;
   SceneTearing tearing;

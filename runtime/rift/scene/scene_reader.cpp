@@ -39,15 +39,45 @@ class SceneReader {
     Scene scene;
     scene.path = path_;
     scene.name = std::filesystem::path(path_).stem().string();
-    check_keys(root,
-               {"mesh", "simulation", "implicit", "mass", "pin", "interaction", "criterion",
-                "tearing", "output"},
-               "the scene");
+    check_keys(
+        root,
+        {"mesh", "simulation", "implicit", "mass", "pin", "handle", "load", "initial_velocity",
+         "obstacle", "notch", "drag", "interaction", "criterion", "tearing", "output"},
+        "the scene");
     read_mesh(require_table(root, "mesh", "the scene"), scene.mesh);
     if (auto* t = optional_table(root, "simulation")) read_simulation(*t, scene);
     if (auto* t = optional_table(root, "implicit")) read_implicit(*t, scene);
     if (auto* t = optional_table(root, "mass")) read_mass(*t, scene);
     if (auto* t = optional_table(root, "pin")) read_pins(*t, scene.pins);
+    for_each_table(root, "handle", [&](const toml::table& t) { read_handle(t, scene); });
+    for_each_table(root, "load", [&](const toml::table& t) { read_load(t, scene); });
+    for_each_table(root, "initial_velocity", [&](const toml::table& t) {
+      check_keys(t, {"select", "velocity"}, "[[initial_velocity]]");
+      SceneInitialVelocity iv;
+      iv.line = line_of(t);
+      iv.select = require_selection(t, "[[initial_velocity]]");
+      iv.velocity =
+          vec3(require(t, "velocity", "[[initial_velocity]]", "[vx, vy, vz] in m/s"), "velocity");
+      scene.initial_velocities.push_back(iv);
+    });
+    for_each_table(root, "obstacle", [&](const toml::table& t) { read_obstacle(t, scene); });
+    for_each_table(root, "notch", [&](const toml::table& t) {
+      check_keys(t, {"from", "to", "depth"}, "[[notch]]");
+      SceneNotch n;
+      n.line = line_of(t);
+      n.from = vec3(require(t, "from", "[[notch]]", "one end of the cut, [x, y, z]"), "from");
+      n.to = vec3(require(t, "to", "[[notch]]", "the other end of the cut, [x, y, z]"), "to");
+      if (auto* d = t.get("depth")) n.depth = vec3(*d, "depth");
+      if ((n.to - n.from).norm() == 0) fail(t, "a notch needs 'from' and 'to' apart");
+      scene.notches.push_back(n);
+    });
+    if (auto* t = optional_table(root, "drag")) {
+      check_keys(*t, {"coefficient", "wind"}, "[drag]");
+      scene.drag.line = line_of(*t);
+      scene.drag.coefficient =
+          positive_real(require(*t, "coefficient", "[drag]", "N s/m^3"), "coefficient");
+      if (auto* w = t->get("wind")) scene.drag.wind = vec3(*w, "wind");
+    }
     read_components(root, "interaction", catalog_.interactions, scene.interactions);
     read_components(root, "criterion", catalog_.criteria, scene.criteria);
     if (auto* t = optional_table(root, "tearing")) {
@@ -326,6 +356,236 @@ class SceneReader {
     }
   }
 
+  template <class F>
+  void for_each_table(const toml::table& root, const std::string& key, F&& f) const {
+    const toml::node* node = root.get(key);
+    if (!node) return;
+    const toml::array* list = node->as_array();
+    if (!list || !list->is_array_of_tables()) {
+      fail(*node, "'" + key + "' must be written as [[" + key + "]] tables");
+    }
+    for (const toml::node& entry : *list)
+      f(*entry.as_table());
+  }
+
+  const toml::node& require(const toml::table& t, const std::string& key, const std::string& where,
+                            const std::string& what) const {
+    const toml::node* n = t.get(key);
+    if (!n) fail(t, where + " needs '" + key + "' (" + what + ")");
+    return *n;
+  }
+
+  Real non_negative_real(const toml::node& node, const std::string& key) const {
+    const Real v = real(node, key);
+    if (v < 0) fail(node, "'" + key + "' must not be negative, not " + toml_text(node));
+    return v;
+  }
+
+  Selection require_selection(const toml::table& t, const std::string& where) const {
+    const toml::node* n = t.get("select");
+    if (!n) {
+      fail(t, where + " needs 'select': a side (\"top\", \"left\"...), a corner " +
+                  "(\"top-left\"...), \"all\", or a table such as { box = { min = [..], max = " +
+                  "[..] } }, { sphere = { center = [..], radius = r } }, { vertices = [..] }, " +
+                  "{ group = tag }");
+    }
+    return selection(*n);
+  }
+
+  Selection selection(const toml::node& node) const {
+    Selection sel;
+    sel.line = line_of(node);
+    std::vector<std::string> names = side_names();
+    names.insert(names.end(), corner_names().begin(), corner_names().end());
+    names.push_back("all");
+    auto by_name = [&](const toml::node& n) {
+      const std::string name = string(n, "select");
+      if (name == "all") {
+        sel.kind = Selection::Kind::kAll;
+      } else if (std::find(side_names().begin(), side_names().end(), name) != side_names().end()) {
+        sel.kind = Selection::Kind::kSide;
+      } else if (std::find(corner_names().begin(), corner_names().end(), name) !=
+                 corner_names().end()) {
+        sel.kind = Selection::Kind::kCorner;
+      } else {
+        fail(n, "unknown selection '" + name +
+                    "': expected a side (top, bottom, left, right, front, back), a corner "
+                    "(top-left, top-right, bottom-left, bottom-right) or all" +
+                    did_you_mean(name, names));
+      }
+      sel.name = name;
+    };
+    if (node.is_string()) {
+      by_name(node);
+      return sel;
+    }
+    const toml::table* t = node.as_table();
+    if (!t) {
+      fail(node,
+           "'select' must be a name such as \"top\" or a table such as { box = { min = [..], "
+           "max = [..] } }, not " +
+               type_name(node));
+    }
+    check_keys(*t, {"side", "corner", "within", "vertices", "box", "sphere", "group"},
+               "a selection");
+    int kinds = 0;
+    for (const char* k : {"side", "corner", "vertices", "box", "sphere", "group"})
+      kinds += t->get(k) ? 1 : 0;
+    if (kinds != 1) {
+      fail(node, "a selection takes exactly one of side, corner, vertices, box, sphere or group");
+    }
+    if (auto* n = t->get("side")) by_name(*n);
+    if (auto* n = t->get("corner")) by_name(*n);
+    if (auto* n = t->get("within")) {
+      if (sel.kind != Selection::Kind::kSide && sel.kind != Selection::Kind::kCorner)
+        fail(*n, "'within' goes with a side or a corner");
+      sel.within = non_negative_real(*n, "within");
+    }
+    if (auto* n = t->get("vertices")) {
+      sel.kind = Selection::Kind::kVertices;
+      const toml::array* a = n->as_array();
+      if (!a || a->empty()) fail(*n, "'vertices' must be a non-empty array of point indices");
+      for (const toml::node& v : *a)
+        sel.vertices.push_back(integer(v, "vertices", 0, std::int64_t(1) << 32));
+    }
+    if (auto* n = t->get("box")) {
+      sel.kind = Selection::Kind::kBox;
+      const toml::table* bt = n->as_table();
+      if (!bt) fail(*n, "'box' must be a table { min = [x, y, z], max = [x, y, z] }");
+      check_keys(*bt, {"min", "max"}, "a box");
+      sel.lo = vec3(require(*bt, "min", "a box", "[x, y, z]"), "min");
+      sel.hi = vec3(require(*bt, "max", "a box", "[x, y, z]"), "max");
+      if (!(sel.lo.array() <= sel.hi.array()).all())
+        fail(*n, "a box needs min <= max on each axis");
+    }
+    if (auto* n = t->get("sphere")) {
+      sel.kind = Selection::Kind::kSphere;
+      const toml::table* st = n->as_table();
+      if (!st) fail(*n, "'sphere' must be a table { center = [x, y, z], radius = r }");
+      check_keys(*st, {"center", "radius"}, "a sphere");
+      sel.centre = vec3(require(*st, "center", "a sphere", "[x, y, z]"), "center");
+      sel.radius = positive_real(require(*st, "radius", "a sphere", "a length"), "radius");
+    }
+    if (auto* n = t->get("group")) {
+      sel.kind = Selection::Kind::kGroup;
+      sel.group = integer(*n, "group", INT64_MIN, INT64_MAX);
+    }
+    return sel;
+  }
+
+  void read_handle(const toml::table& t, Scene& scene) const {
+    check_keys(t, {"name", "select", "velocity", "keyframes", "pivot", "release"}, "[[handle]]");
+    SceneHandle h;
+    h.line = line_of(t);
+    h.motion.name = "handle" + std::to_string(scene.handles.size() + 1);
+    if (auto* n = t.get("name")) h.motion.name = string(*n, "name");
+    for (const SceneHandle& other : scene.handles) {
+      if (other.motion.name == h.motion.name)
+        fail(t, "two handles are named '" + h.motion.name + "'");
+    }
+    h.select = require_selection(t, "[[handle]]");
+    if (auto* n = t.get("velocity")) h.motion.velocity = vec3(*n, "velocity");
+    if (auto* n = t.get("pivot")) {
+      h.motion.pivot = vec3(*n, "pivot");
+      h.pivot_given = true;
+    }
+    if (auto* n = t.get("release")) h.motion.release = non_negative_real(*n, "release");
+    if (auto* n = t.get("keyframes")) {
+      const toml::array* a = n->as_array();
+      if (!a || !a->is_array_of_tables() || a->empty()) {
+        fail(*n,
+             "'keyframes' must be an array of tables like { time = 1.0, translate = [0, 0, "
+             "0.1], rotate = [0, 0, 30] }");
+      }
+      Real last = -INFINITY;
+      for (const toml::node& k : *a) {
+        const toml::table& kt = *k.as_table();
+        check_keys(kt, {"time", "translate", "rotate"}, "a keyframe");
+        HandleMotion::Keyframe key;
+        key.time = non_negative_real(require(kt, "time", "a keyframe", "seconds"), "time");
+        if (!(key.time > last)) fail(k, "keyframe times must increase");
+        last = key.time;
+        if (auto* tr = kt.get("translate")) key.translate = vec3(*tr, "translate");
+        if (auto* rot = kt.get("rotate")) key.rotate_degrees = vec3(*rot, "rotate");
+        h.motion.keyframes.push_back(key);
+      }
+    }
+    scene.handles.push_back(h);
+  }
+
+  void read_load(const toml::table& t, Scene& scene) const {
+    check_keys(t, {"name", "select", "force", "per_vertex", "acceleration", "start", "ramp"},
+               "[[load]]");
+    SceneLoad l;
+    l.line = line_of(t);
+    l.spec.name = "load" + std::to_string(scene.loads.size() + 1);
+    if (auto* n = t.get("name")) l.spec.name = string(*n, "name");
+    if (t.get("select")) l.select = require_selection(t, "[[load]]");
+    if (auto* n = t.get("force")) l.spec.force = vec3(*n, "force");
+    if (auto* n = t.get("per_vertex")) l.spec.per_vertex = boolean(*n, "per_vertex");
+    if (auto* n = t.get("acceleration")) l.spec.acceleration = vec3(*n, "acceleration");
+    if (auto* n = t.get("start")) l.spec.start = non_negative_real(*n, "start");
+    if (auto* n = t.get("ramp")) l.spec.ramp = non_negative_real(*n, "ramp");
+    if (!t.get("force") && !t.get("acceleration"))
+      fail(t,
+           "[[load]] needs 'force' ([fx, fy, fz] in N) or 'acceleration' ([ax, ay, az] in m/s^2)");
+    scene.loads.push_back(l);
+  }
+
+  void read_obstacle(const toml::table& t, Scene& scene) const {
+    SceneObstacle so;
+    so.line = line_of(t);
+    Obstacle& o = so.obstacle;
+    const std::vector<std::string> shapes = {"plane", "sphere", "box", "capsule"};
+    const std::string shape =
+        string(require(t, "shape", "[[obstacle]]", "plane, sphere, box or capsule"), "shape");
+    std::vector<std::string> keys = {"shape", "velocity", "friction", "start"};
+    if (shape == "plane") {
+      o.shape = Obstacle::Shape::kPlane;
+      keys.insert(keys.end(), {"point", "normal"});
+    } else if (shape == "sphere") {
+      o.shape = Obstacle::Shape::kSphere;
+      keys.insert(keys.end(), {"center", "radius"});
+    } else if (shape == "box") {
+      o.shape = Obstacle::Shape::kBox;
+      keys.insert(keys.end(), {"min", "max"});
+    } else if (shape == "capsule") {
+      o.shape = Obstacle::Shape::kCapsule;
+      keys.insert(keys.end(), {"from", "to", "radius"});
+    } else {
+      fail(*t.get("shape"), "unknown obstacle shape '" + shape +
+                                "': expected plane, sphere, box or capsule" +
+                                did_you_mean(shape, shapes));
+    }
+    check_keys(t, keys, "[[obstacle]] '" + shape + "'");
+    const std::string where = "a " + shape + " obstacle";
+    switch (o.shape) {
+      case Obstacle::Shape::kPlane:
+        if (auto* n = t.get("point")) o.a = vec3(*n, "point");
+        if (auto* n = t.get("normal")) o.b = vec3(*n, "normal");
+        if (o.b.norm() == 0) fail(t, "the normal of a plane must not be zero");
+        break;
+      case Obstacle::Shape::kSphere:
+        o.a = vec3(require(t, "center", where, "[x, y, z]"), "center");
+        o.radius = positive_real(require(t, "radius", where, "a length"), "radius");
+        break;
+      case Obstacle::Shape::kBox:
+        o.a = vec3(require(t, "min", where, "[x, y, z]"), "min");
+        o.b = vec3(require(t, "max", where, "[x, y, z]"), "max");
+        if (!(o.a.array() < o.b.array()).all()) fail(t, "a box needs min < max on each axis");
+        break;
+      case Obstacle::Shape::kCapsule:
+        o.a = vec3(require(t, "from", where, "one end of its axis"), "from");
+        o.b = vec3(require(t, "to", where, "the other end of its axis"), "to");
+        o.radius = positive_real(require(t, "radius", where, "a length"), "radius");
+        break;
+    }
+    if (auto* n = t.get("velocity")) o.velocity = vec3(*n, "velocity");
+    if (auto* n = t.get("friction")) o.friction = non_negative_real(*n, "friction");
+    if (auto* n = t.get("start")) o.start = non_negative_real(*n, "start");
+    scene.obstacles.push_back(so);
+  }
+
   void read_components(const toml::table& root, const std::string& key,
                        const std::vector<ComponentSpec>& known,
                        std::vector<ComponentUse>& out) const {
@@ -409,7 +669,25 @@ class SceneReader {
   }
 
   void read_output(const toml::table& t, SceneOutput& out) const {
-    check_keys(t, {"dir", "every", "formats", "png_every", "png_size", "vtu_encoding"}, "[output]");
+    check_keys(
+        t,
+        {"dir", "every", "formats", "png_every", "png_size", "camera", "gif_delay", "vtu_encoding"},
+        "[output]");
+    if (auto* n = t.get("camera")) {
+      const std::string mode = string(*n, "camera");
+      if (mode == "fixed") {
+        out.camera = CameraMode::kFixed;
+      } else if (mode == "follow") {
+        out.camera = CameraMode::kFollow;
+      } else if (mode == "follow_union") {
+        out.camera = CameraMode::kFollowUnion;
+      } else {
+        fail(*n, "unknown camera '" + mode + "': expected fixed, follow or follow_union" +
+                     did_you_mean(mode, {"fixed", "follow", "follow_union"}));
+      }
+    }
+    if (auto* n = t.get("gif_delay"))
+      out.gif_delay_ms = static_cast<int>(integer(*n, "gif_delay", 10, 10000));
     if (auto* n = t.get("vtu_encoding")) {
       const std::string encoding = string(*n, "vtu_encoding");
       if (encoding != "binary" && encoding != "ascii") {
@@ -422,14 +700,14 @@ class SceneReader {
     if (auto* n = t.get("png_every"))
       out.png_every = static_cast<int>(integer(*n, "png_every", 0, 1 << 30));
     if (auto* n = t.get("formats")) {
-      static const std::vector<std::string> kFormats = {"vtu", "obj", "png", "csv"};
+      static const std::vector<std::string> kFormats = {"vtu", "obj", "png", "gif", "csv"};
       const toml::array* a = n->as_array();
       if (!a) fail(*n, "'formats' must be an array such as [\"vtu\", \"png\", \"csv\"]");
       out.formats.clear();
       for (const toml::node& f : *a) {
         const std::string name = string(f, "formats");
         if (std::find(kFormats.begin(), kFormats.end(), name) == kFormats.end()) {
-          fail(f, "unknown output format '" + name + "': expected vtu, obj, png or csv" +
+          fail(f, "unknown output format '" + name + "': expected vtu, obj, png, gif or csv" +
                       did_you_mean(name, kFormats));
         }
         out.formats.push_back(name);

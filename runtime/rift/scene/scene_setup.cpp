@@ -2,58 +2,215 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <set>
 
 #include "rift/core/input_error.hpp"
 #include "rift/io/read_mesh.hpp"
 #include "rift/mesh/generators.hpp"
+#include "rift/scene/notch.hpp"
 
 namespace rift {
 
 namespace {
 
-// Vertices at the named corners of the mesh seen from the front: "top" is
-// against gravity, "left"/"right" along the widest horizontal axis.
-std::vector<Dart> corner_vertices(const GMap& map, const Embedding<Vec3>& position, Vec3 gravity,
-                                  const std::string& corner) {
-  Vec3 up = gravity.norm() > 0 ? Vec3(-gravity.normalized()) : Vec3(0, 0, 1);
-  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
-  const Orbit vertex = Orbit::cell(0, map.dimension());
-  map.for_each_cell(vertex, [&](Dart d) {
-    lo = lo.cwiseMin(position[d]);
-    hi = hi.cwiseMax(position[d]);
-  });
-  // The horizontal axis: the coordinate axis least aligned with `up` among
-  // those with the largest extent.
-  int axis = 0;
-  Real best = -1;
-  for (int a = 0; a < 3; ++a) {
-    const Real extent = (hi[a] - lo[a]) * (1 - std::abs(up[a]));
-    if (extent > best) {
-      best = extent;
-      axis = a;
+Vec3 up_of(const Scene& scene) {
+  return scene.gravity.norm() > 0 ? Vec3(-scene.gravity.normalized()) : Vec3::Zero();
+}
+
+std::string where_is(const Vec3& p) {
+  // Round-off of a rotated mesh (2e-16 for 0) would only confuse.
+  const Vec3 q =
+      p.unaryExpr([&](Real v) { return std::abs(v) < 1e-12 * (1 + p.norm()) ? 0.0 : v; });
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.4g, %.4g, %.4g)", q.x(), q.y(), q.z());
+  return text;
+}
+
+// The selected vertices, or an InputError naming the scene line when the
+// selection holds none.
+std::vector<Dart> selected(const Scene& scene, const GMap& map, const Selection& sel,
+                           const std::string& what) {
+  std::vector<Dart> found;
+  try {
+    found = select_vertices(map, sel, up_of(scene));
+  } catch (const std::invalid_argument& e) {
+    throw InputError(scene.path, sel.line, what + ": " + e.what());
+  }
+  if (found.empty()) {
+    std::string hint;
+    if (sel.kind == Selection::Kind::kGroup) {
+      hint = map.has_embedding("element_tag")
+                 ? " (no element of the mesh has that tag)"
+                 : " (the mesh has no physical groups: Gmsh physical tags, Medit references "
+                   "or VTU cell data)";
+    }
+    throw InputError(scene.path, sel.line,
+                     what + ": the selection (" + sel.describe() + ") holds no vertex" + hint);
+  }
+  return found;
+}
+
+const Pack* pack_with_rule(const PackRegistry& packs, const std::string& rule, int dimension) {
+  for (const auto& p : packs.packs()) {
+    if (p->dimension() != dimension) continue;
+    const auto names = p->rule_names();
+    if (std::find(names.begin(), names.end(), rule) != names.end()) return p.get();
+  }
+  return nullptr;
+}
+
+void add_handles(const Scene& scene, Simulation& sim, SetupReport& rep) {
+  if (scene.handles.empty() && scene.pins.corners.empty() && scene.pins.vertices.empty() &&
+      scene.pins.boxes.empty()) {
+    return;
+  }
+  GMap& m = sim.map();
+  const Embedding<Vec3>& position = sim.position();
+  auto handles = std::make_unique<Handles>(m);
+  std::vector<std::string> owner;  // per handle, how messages name it
+
+  // [pin]: one fixed handle for every pinned vertex.
+  if (!scene.pins.corners.empty() || !scene.pins.vertices.empty() || !scene.pins.boxes.empty()) {
+    HandleMotion fixed;
+    fixed.name = "pin";
+    const int h = handles->add(fixed);
+    owner.push_back("[pin]");
+    std::vector<Selection> pins;
+    for (const std::string& c : scene.pins.corners) {
+      Selection s;
+      s.kind = Selection::Kind::kCorner;
+      s.name = c;
+      s.line = scene.pins.line;
+      pins.push_back(s);
+    }
+    if (!scene.pins.vertices.empty()) {
+      Selection s;
+      s.kind = Selection::Kind::kVertices;
+      s.vertices = scene.pins.vertices;
+      s.line = scene.pins.line;
+      pins.push_back(s);
+    }
+    for (const auto& [lo, hi] : scene.pins.boxes) {
+      Selection s;
+      s.kind = Selection::Kind::kBox;
+      s.lo = lo;
+      s.hi = hi;
+      s.line = scene.pins.line;
+      pins.push_back(s);
+    }
+    for (const Selection& s : pins) {
+      for (Dart d : selected(scene, m, s, "[pin]")) {
+        if (handles->handle_of(d) < 0) ++rep.pinned_vertices;
+        handles->hold(d, h, position[d]);
+      }
     }
   }
-  Vec3 right = Vec3::Unit(axis);
-  right = (right - right.dot(up) * up).normalized();
-  const Real sr = corner.ends_with("left") ? -1 : 1;
-  const Real su = corner.starts_with("top") ? 1 : -1;
-  const Real scale = std::max((hi - lo).norm(), Real(1e-300));
-  Real best_score = -INFINITY;
-  Vec3 best_point = Vec3::Zero();
-  map.for_each_cell(vertex, [&](Dart d) {
-    const Real score = (sr * position[d].dot(right) + su * position[d].dot(up)) / scale;
-    if (score > best_score + 1e-12) {
-      best_score = score;
-      best_point = position[d];
+  for (const SceneHandle& sh : scene.handles) {
+    const std::string what = "[[handle]] '" + sh.motion.name + "'";
+    const std::vector<Dart> vertices = selected(scene, m, sh.select, what);
+    HandleMotion motion = sh.motion;
+    if (!sh.pivot_given) {
+      motion.pivot = Vec3::Zero();
+      for (Dart d : vertices)
+        motion.pivot += position[d];
+      motion.pivot /= static_cast<Real>(vertices.size());
     }
-  });
-  std::vector<Dart> found;
-  map.for_each_cell(vertex, [&](Dart d) {
-    if ((position[d] - best_point).norm() <= 1e-9 * scale) found.push_back(d);
-  });
-  return found;
+    const int h = handles->add(motion);
+    owner.push_back(what);
+    for (Dart d : vertices) {
+      const int other = handles->handle_of(d);
+      if (other >= 0 && other != h) {
+        throw InputError(scene.path, sh.line,
+                         "the vertex at " + where_is(position[d]) + " is held by both " +
+                             owner[static_cast<std::size_t>(other)] + " and " + what +
+                             ": a vertex can follow one prescribed motion only");
+      }
+      handles->hold(d, h, position[d]);
+      ++rep.held_vertices;
+    }
+  }
+  sim.set_handles(std::move(handles));
+}
+
+void add_loads(const Scene& scene, Simulation& sim) {
+  GMap& m = sim.map();
+  std::shared_ptr<VertexGroups> groups;
+  for (const SceneLoad& l : scene.loads) {
+    LoadSpec spec = l.spec;
+    if (l.select.kind != Selection::Kind::kAll) {
+      if (!groups) groups = std::make_shared<VertexGroups>(m);
+      const std::vector<Dart> vertices =
+          selected(scene, m, l.select, "[[load]] '" + l.spec.name + "'");
+      try {
+        spec.group = groups->add_group();
+      } catch (const std::invalid_argument& e) {
+        throw InputError(scene.path, l.line, e.what());
+      }
+      for (Dart d : vertices)
+        groups->add(d, spec.group);
+    }
+    sim.add_external_force(std::make_unique<GroupLoad>(spec, groups));
+  }
+  if (scene.drag.coefficient > 0) {
+    if (m.dimension() != 2) {
+      throw InputError(scene.path, scene.drag.line,
+                       "[drag] acts on the faces of 2D surfaces, and this mesh is 3D");
+    }
+    sim.add_external_force(std::make_unique<SurfaceDrag>(scene.drag.coefficient, scene.drag.wind));
+  }
+  Embedding<Vec3>& velocity = sim.velocity();
+  for (const SceneInitialVelocity& iv : scene.initial_velocities) {
+    for (Dart d : selected(scene, m, iv.select, "[[initial_velocity]]"))
+      velocity[d] = iv.velocity;
+  }
+  if (!scene.obstacles.empty()) {
+    std::vector<Obstacle> obstacles;
+    for (const SceneObstacle& o : scene.obstacles)
+      obstacles.push_back(o.obstacle);
+    sim.set_contact(std::make_unique<Contact>(std::move(obstacles)));
+  }
+}
+
+void cut_notches(const Scene& scene, const PackRegistry& packs, std::vector<const Pack*>& used,
+                 Simulation& sim, SetupReport& rep) {
+  if (scene.notches.empty()) return;
+  GMap& m = sim.map();
+  const int n = m.dimension();
+  const std::string rule_name = n == 2 ? "separate_faces" : "separate_volumes";
+  const Pack* pack = pack_with_rule(packs, rule_name, n);
+  if (!pack) {
+    throw InputError(scene.path, scene.notches.front().line,
+                     "a notch needs the rule '" + rule_name + "' of the standard " +
+                         (n == 2 ? "topology2d" : "topology3d") +
+                         " pack, and this simulator has no such pack");
+  }
+  if (std::find(used.begin(), used.end(), pack) == used.end()) {
+    declare_embeddings(m, pack->embeddings());
+    pack->initialise(m);
+    used.push_back(pack);
+  }
+  std::unique_ptr<Rule> separate = pack->make_rule(rule_name);
+  std::vector<Dart> touched;
+  for (const SceneNotch& notch : scene.notches) {
+    if (n == 3 && notch.depth.cross(notch.to - notch.from).norm() == 0) {
+      throw InputError(scene.path, notch.line,
+                       "a notch in a 3D mesh needs 'depth', a vector not parallel to to - from: "
+                       "the cut is the parallelogram from, to, to + depth, from + depth");
+    }
+    const std::size_t cut = cut_notch(m, notch, *separate, touched);
+    if (cut == 0) {
+      throw InputError(scene.path, notch.line,
+                       "the notch crosses no inner " + std::string(n == 2 ? "edge" : "face") +
+                           " of the mesh: check 'from' and 'to' against the mesh's extent");
+    }
+    rep.notch_cuts += cut;
+  }
+  if (!m.is_valid()) {
+    throw InputError(scene.path, scene.notches.front().line,
+                     "internal error: the G-map is invalid after cutting the notch");
+  }
 }
 
 }  // namespace
@@ -130,52 +287,10 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
     throw InputError(scene.path, 0, std::string("cannot set the masses: ") + e.what());
   }
 
-  // Pins.
-  std::size_t pinned = 0;
-  Embedding<Bool> pin = m.embedding<Bool>(embedding_names::kPinned);
-  const Embedding<Vec3>& position = sim->position();
-  for (const std::string& corner : scene.pins.corners) {
-    for (Dart d : corner_vertices(m, position, scene.gravity, corner)) {
-      if (!pin[d]) ++pinned;
-      pin[d] = true;
-    }
-  }
-  if (!scene.pins.vertices.empty()) {
-    const Embedding<std::int64_t> point = m.embedding<std::int64_t>("point_index");
-    std::set<std::int64_t> wanted(scene.pins.vertices.begin(), scene.pins.vertices.end());
-    std::set<std::int64_t> found;
-    m.for_each_cell(Orbit::cell(0, n), [&](Dart d) {
-      if (wanted.count(point[d])) {
-        found.insert(point[d]);
-        if (!pin[d]) ++pinned;
-        pin[d] = true;
-      }
-    });
-    for (std::int64_t w : wanted) {
-      if (!found.count(w)) {
-        throw InputError(scene.path, scene.pins.line,
-                         "pinned vertex " + std::to_string(w) + " is not a point of the mesh (" +
-                             std::to_string(mesh.points.size()) + " points, numbered from 0)");
-      }
-    }
-  }
-  for (const auto& box : scene.pins.boxes) {
-    // Named rather than structured bindings: C++20 lets a lambda capture
-    // those, clang 14 does not yet.
-    const Vec3& lo = box.first;
-    const Vec3& hi = box.second;
-    std::size_t in_box = 0;
-    m.for_each_cell(Orbit::cell(0, n), [&](Dart d) {
-      const Vec3& p = position[d];
-      if ((p.array() >= lo.array()).all() && (p.array() <= hi.array()).all()) {
-        ++in_box;
-        if (!pin[d]) ++pinned;
-        pin[d] = true;
-      }
-    });
-    if (in_box == 0) throw InputError(scene.path, scene.pins.line, "a pin box holds no vertex");
-  }
-  rep.pinned_vertices = pinned;
+  // Notches first: handles and loads select among the cut mesh's vertices.
+  cut_notches(scene, packs, used, *sim, rep);
+  add_handles(scene, *sim, rep);
+  add_loads(scene, *sim);
 
   for (const ComponentUse& u : scene.interactions) {
     auto model = packs.pack_of_interaction(u.name, n)->make_interaction(u);

@@ -15,6 +15,8 @@ namespace rift {
 struct SetupReport {
   AssemblyReport assembly;
   std::size_t pinned_vertices = 0;
+  std::size_t held_vertices = 0;  ///< by [[handle]] tables
+  std::size_t notch_cuts = 0;     ///< edges (2D) or faces (3D) separated by notches
   Real total_mass = 0;
   /// Components that cannot act on this mesh (an interaction whose pattern
   /// matches no element, such as `corotational`, a tetrahedron, on hexahedra):

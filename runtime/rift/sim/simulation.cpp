@@ -51,6 +51,20 @@ void Simulation::add_criterion(std::unique_ptr<Criterion> criterion) {
   criteria_.push_back(std::move(criterion));
 }
 
+void Simulation::set_handles(std::unique_ptr<Handles> handles) {
+  if (initialised_) throw std::logic_error("set_handles after initialise");
+  handles_ = std::move(handles);
+}
+
+void Simulation::add_external_force(std::unique_ptr<ExternalForce> force) {
+  if (initialised_) throw std::logic_error("add_external_force after initialise");
+  external_.push_back(std::move(force));
+}
+
+void Simulation::set_contact(std::unique_ptr<Contact> contact) {
+  contact_ = std::move(contact);
+}
+
 void Simulation::set_total_mass(Real total_mass) {
   if (!(total_mass > 0)) throw std::invalid_argument("the total mass must be positive");
   assign_corner_masses_by_total(map_, total_mass, corner_mass_, position_);
@@ -86,6 +100,11 @@ void Simulation::refresh_inverse_masses() {
   inverse_mass_.assign(slots, 0);
   for (Slot s = 0; s < slots; ++s)
     refresh_inverse_mass(s);
+  // Held vertices start where their handle puts them.
+  if (handles_) {
+    handles_->impose(position_.attachment(), time_, settings_.dt, position_.values(),
+                     velocity_.values());
+  }
 }
 
 void Simulation::refresh_inverse_masses(std::span<const Dart> region) {
@@ -105,9 +124,13 @@ void Simulation::refresh_inverse_masses(std::span<const Dart> region) {
 void Simulation::refresh_inverse_mass(Slot s) {
   const OrbitAttachment& att = position_.attachment();
   const Real mass = vertex_mass_.values()[s];
-  inverse_mass_[s] = att.slot_alive(s) && !pinned_.values()[s] && mass > 0 ? 1 / mass : 0;
-  // Pinned vertices never move.
-  if (inverse_mass_[s] == 0) velocity_.values()[s] = Vec3::Zero();
+  const bool held = handles_ && att.slot_alive(s) && handles_->holds(s, time_);
+  inverse_mass_[s] = att.slot_alive(s) && !pinned_.values()[s] && !held && mass > 0 ? 1 / mass : 0;
+  // Pinned vertices never move; held ones move as their handle says.
+  if (inverse_mass_[s] == 0) {
+    velocity_.values()[s] =
+        held ? handles_->target_velocity(s, time_, settings_.dt) : Vec3(Vec3::Zero());
+  }
 }
 
 void Simulation::accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
@@ -121,6 +144,21 @@ void Simulation::accelerations(const std::vector<Vec3>& x, const std::vector<Vec
     // Same orbit as position, so the same slots.
     std::vector<Vec3>& out = vertex_force_.values();
     std::copy(forces_.begin(), forces_.begin() + std::min(n, out.size()), out.begin());
+  }
+  if (!external_.empty()) {
+    // After vertex_force: criteria see internal forces only.
+    const ExternalInput ext{time_, x.data(), v.data(), vertex_mass_.values().data(), n};
+    if (store) {
+      // Kept apart for the external work.
+      external_forces_.assign(n, Vec3::Zero());
+      for (auto& e : external_)
+        e->add_forces(map_, ext, external_forces_.data());
+      for (std::size_t s = 0; s < n; ++s)
+        forces_[s] += external_forces_[s];
+    } else {
+      for (auto& e : external_)
+        e->add_forces(map_, ext, forces_.data());
+    }
   }
   a.resize(n);
   const Vec3 g = settings_.gravity;
@@ -144,6 +182,11 @@ void Simulation::step() {
   tears_last_step_ = criteria_.empty() ? 0 : apply_criteria();
   if (tears_last_step_ > 0) accelerations(x, v, a0_, true);
   start_forces_ = forces_;  // later stages overwrite forces_
+  if (handles_) {
+    handles_->reactions(position_.attachment(), time_, start_forces_, vertex_mass_.values(),
+                        settings_.gravity, reactions_);
+  }
+  x_before_ = x;
   if (implicit_) {
     implicit_step();
   } else {
@@ -151,8 +194,14 @@ void Simulation::step() {
                             std::vector<Vec3>& as) { accelerations(xs, vs, as, false); },
                      x, v, settings_.dt, &a0_);
   }
+  const Real t0 = time_;
   time_ += settings_.dt;
   ++steps_;
+  // Prescribed motions, then contacts, at the end of the step.
+  if (handles_ && handles_->releases_between(t0, time_)) refresh_inverse_masses();
+  if (handles_) handles_->impose(position_.attachment(), time_, settings_.dt, x, v);
+  if (contact_) contact_->project(position_.attachment(), time_, inverse_mass_, x, v);
+  account_external_work(x);
   divergence_.check(*this);
 }
 
@@ -199,6 +248,24 @@ std::size_t Simulation::apply_criteria() {
     tears_ += applied;
   }
   return applied;
+}
+
+void Simulation::account_external_work(const std::vector<Vec3>& x) {
+  // W += sum over vertices of (external force + handle reaction) . dx, with
+  // the forces at the start of the step (first order in dt).
+  const bool any_external = !external_forces_.empty();
+  if (!any_external && !handles_) return;
+  const OrbitAttachment& att = position_.attachment();
+  const std::size_t n = std::min(x.size(), x_before_.size());
+  const auto& mass = vertex_mass_.values();
+  for (Slot s = 0; s < n; ++s) {
+    if (!att.slot_alive(s)) continue;
+    Vec3 f = any_external && s < external_forces_.size() ? external_forces_[s] : Vec3::Zero();
+    if (handles_ && inverse_mass_[s] == 0 && handles_->holds(s, time_ - settings_.dt)) {
+      f += -(start_forces_[s] + mass[s] * settings_.gravity);  // the handle's reaction
+    }
+    external_work_ += f.dot(x[s] - x_before_[s]);
+  }
 }
 
 void Simulation::on_topology_changed(std::span<const Dart> touched) {

@@ -12,9 +12,12 @@
 #include "rift/gmap/gmap.hpp"
 #include "rift/pack/criterion.hpp"
 #include "rift/sim/divergence.hpp"
+#include "rift/sim/external_force.hpp"
 #include "rift/sim/force_model.hpp"
+#include "rift/sim/handles.hpp"
 #include "rift/sim/implicit_euler.hpp"
 #include "rift/sim/integrator.hpp"
+#include "rift/sim/obstacles.hpp"
 
 namespace rift {
 
@@ -73,6 +76,19 @@ class Simulation {
   /// Fixes every vertex for which pred(position) holds; returns how many.
   template <class Pred>
   std::size_t pin_where(Pred&& pred);
+
+  /// Scene drivers (docs/scenes.md): prescribed motions, external forces and
+  /// obstacles. Handles and external forces are set before initialise().
+  void set_handles(std::unique_ptr<Handles> handles);
+  void add_external_force(std::unique_ptr<ExternalForce> force);
+  void set_contact(std::unique_ptr<Contact> contact);
+  const Handles* handles() const { return handles_.get(); }
+  const Contact* contact() const { return contact_.get(); }
+  /// The force each handle exerts on the body at the start of the last step.
+  const std::vector<Vec3>& handle_reactions() const { return reactions_; }
+  /// Work done on the body by external forces and handles since the start
+  /// (gravity excluded: it is in the potential energy).
+  Real external_work() const { return external_work_; }
 
   /// Computes vertex masses and initialises every interaction. Call once,
   /// after masses and pins are set and models added.
@@ -135,6 +151,7 @@ class Simulation {
   void refresh_inverse_mass(Slot s);
   void implicit_step();  // simulation_implicit.cpp
   std::size_t apply_criteria();
+  void account_external_work(const std::vector<Vec3>& x);
 
   GMap map_;
   SimulationSettings settings_;
@@ -148,7 +165,12 @@ class Simulation {
   Embedding<Bool> pinned_;
   Embedding<Vec3> vertex_force_;  // optional, see kVertexForce
   std::vector<Vec3> forces_, start_forces_, a0_;
-  std::vector<Real> inverse_mass_;  // 0 for pinned vertices and free slots
+  std::vector<Real> inverse_mass_;  // 0 for pinned and held vertices and free slots
+  std::unique_ptr<Handles> handles_;
+  std::vector<std::unique_ptr<ExternalForce>> external_;
+  std::unique_ptr<Contact> contact_;
+  std::vector<Vec3> external_forces_, x_before_, reactions_;
+  Real external_work_ = 0;
   std::vector<Dart> region_;
   std::vector<std::unique_ptr<Criterion>> criteria_;
   std::vector<TearCandidate> candidates_;

@@ -1,0 +1,167 @@
+#include "rift/scene/selection.hpp"
+
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+namespace rift {
+
+namespace {
+
+struct Frame {
+  Vec3 lo, hi;
+  Vec3 up, right, front;
+  Real scale;
+};
+
+Frame frame_of(const GMap& map, const Embedding<Vec3>& position, const Vec3& up_hint) {
+  Frame f;
+  f.lo = Vec3::Constant(INFINITY);
+  f.hi = Vec3::Constant(-INFINITY);
+  map.for_each_cell(Orbit::cell(0, map.dimension()), [&](Dart d) {
+    f.lo = f.lo.cwiseMin(position[d]);
+    f.hi = f.hi.cwiseMax(position[d]);
+  });
+  f.up = up_hint.norm() > 0 ? Vec3(up_hint.normalized()) : default_up(f.lo, f.hi);
+  // The horizontal axis: the coordinate axis least aligned with `up` among
+  // those with the largest extent.
+  int axis = 0;
+  Real best = -1;
+  for (int a = 0; a < 3; ++a) {
+    const Real extent = (f.hi[a] - f.lo[a]) * (1 - std::abs(f.up[a]));
+    if (extent > best + 1e-12) {
+      best = extent;
+      axis = a;
+    }
+  }
+  f.right = Vec3::Unit(axis);
+  f.right = (f.right - f.right.dot(f.up) * f.up).normalized();
+  f.front = f.up.cross(f.right);
+  f.scale = std::max((f.hi - f.lo).norm(), Real(1e-300));
+  return f;
+}
+
+}  // namespace
+
+Vec3 default_up(const Vec3& lo, const Vec3& hi) {
+  // A sheet lying in the x-y plane is seen from above: y is up on screen.
+  const Real extent = (hi - lo).norm();
+  if (extent > 0 && hi.z() - lo.z() <= 1e-9 * extent) return Vec3(0, 1, 0);
+  return Vec3(0, 0, 1);
+}
+
+std::string Selection::describe() const {
+  switch (kind) {
+    case Kind::kAll:
+      return "every vertex";
+    case Kind::kSide:
+      return "side '" + name + "'";
+    case Kind::kCorner:
+      return "corner '" + name + "'";
+    case Kind::kVertices:
+      return "vertices";
+    case Kind::kBox:
+      return "box";
+    case Kind::kSphere:
+      return "sphere";
+    case Kind::kGroup:
+      return "group " + std::to_string(group);
+  }
+  return "selection";
+}
+
+std::vector<Dart> select_vertices(const GMap& map, const Selection& sel, const Vec3& up) {
+  const Embedding<Vec3> position = map.embedding<Vec3>("position");
+  const Orbit vertex = Orbit::cell(0, map.dimension());
+  std::vector<Dart> found;
+  auto take_where = [&](auto&& pred) {
+    map.for_each_cell(vertex, [&](Dart d) {
+      if (pred(d)) found.push_back(d);
+    });
+  };
+  switch (sel.kind) {
+    case Selection::Kind::kAll:
+      take_where([](Dart) { return true; });
+      break;
+    case Selection::Kind::kBox:
+      take_where([&](Dart d) {
+        const Vec3& p = position[d];
+        return (p.array() >= sel.lo.array()).all() && (p.array() <= sel.hi.array()).all();
+      });
+      break;
+    case Selection::Kind::kSphere:
+      take_where([&](Dart d) { return (position[d] - sel.centre).norm() <= sel.radius; });
+      break;
+    case Selection::Kind::kVertices: {
+      const Embedding<std::int64_t> point = map.embedding<std::int64_t>("point_index");
+      if (!point) throw std::invalid_argument("the mesh has no point numbers to select from");
+      std::set<std::int64_t> wanted(sel.vertices.begin(), sel.vertices.end());
+      std::set<std::int64_t> seen;
+      take_where([&](Dart d) {
+        if (!wanted.count(point[d])) return false;
+        seen.insert(point[d]);
+        return true;
+      });
+      for (std::int64_t w : wanted) {
+        if (!seen.count(w)) {
+          throw std::invalid_argument("vertex " + std::to_string(w) +
+                                      " is not a point of the mesh (points are numbered from 0)");
+        }
+      }
+      break;
+    }
+    case Selection::Kind::kGroup: {
+      const Embedding<std::int64_t> tag = map.embedding<std::int64_t>("element_tag");
+      if (!tag) break;  // no groups in this mesh: the caller reports an empty selection
+      const Mark m = map.reserve_mark();
+      std::vector<Dart> marked;
+      map.for_each_dart([&](Dart d) {
+        if (tag[d] != sel.group || map.is_marked(d, m)) return;
+        map.for_each_in_orbit(d, vertex, [&](Dart x) {
+          map.mark(x, m);
+          marked.push_back(x);
+        });
+        found.push_back(d);
+      });
+      for (Dart d : marked)
+        map.unmark(d, m);
+      map.free_mark(m);
+      break;
+    }
+    case Selection::Kind::kSide:
+    case Selection::Kind::kCorner: {
+      const Frame f = frame_of(map, position, up);
+      if (sel.kind == Selection::Kind::kSide) {
+        Vec3 axis = f.up;
+        if (sel.name == "bottom") axis = -f.up;
+        if (sel.name == "right") axis = f.right;
+        if (sel.name == "left") axis = -f.right;
+        if (sel.name == "front") axis = f.front;
+        if (sel.name == "back") axis = -f.front;
+        Real extreme = -INFINITY;
+        map.for_each_cell(vertex,
+                          [&](Dart d) { extreme = std::max(extreme, position[d].dot(axis)); });
+        const Real tolerance = std::max(sel.within, 1e-9 * f.scale);
+        take_where([&](Dart d) { return position[d].dot(axis) >= extreme - tolerance; });
+      } else {
+        const Real sr = sel.name.ends_with("left") ? -1 : 1;
+        const Real su = sel.name.starts_with("top") ? 1 : -1;
+        Real best_score = -INFINITY;
+        Vec3 best_point = Vec3::Zero();
+        map.for_each_cell(vertex, [&](Dart d) {
+          const Real score = (sr * position[d].dot(f.right) + su * position[d].dot(f.up)) / f.scale;
+          if (score > best_score + 1e-12) {
+            best_score = score;
+            best_point = position[d];
+          }
+        });
+        const Real tolerance = std::max(sel.within, 1e-9 * f.scale);
+        take_where([&](Dart d) { return (position[d] - best_point).norm() <= tolerance; });
+      }
+      break;
+    }
+  }
+  return found;
+}
+
+}  // namespace rift

@@ -1,0 +1,104 @@
+#include "rift/sim/handles.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <numbers>
+#include <stdexcept>
+
+namespace rift {
+
+namespace {
+
+Mat3 rotation_of(const Vec3& rotate_degrees) {
+  const Real angle = rotate_degrees.norm() * std::numbers::pi / 180;
+  if (angle == 0) return Mat3::Identity();
+  return Eigen::AngleAxis<Real>(angle, rotate_degrees.normalized()).toRotationMatrix();
+}
+
+}  // namespace
+
+Vec3 HandleMotion::place(const Vec3& rest, Real t) const {
+  Vec3 translate = Vec3::Zero();
+  Vec3 rotate = Vec3::Zero();
+  if (!keyframes.empty()) {
+    if (t <= keyframes.front().time) {
+      translate = keyframes.front().translate;
+      rotate = keyframes.front().rotate_degrees;
+    } else if (t >= keyframes.back().time) {
+      translate = keyframes.back().translate;
+      rotate = keyframes.back().rotate_degrees;
+    } else {
+      const auto next = std::upper_bound(keyframes.begin(), keyframes.end(), t,
+                                         [](Real u, const Keyframe& k) { return u < k.time; });
+      const Keyframe& b = *next;
+      const Keyframe& a = *(next - 1);
+      const Real w = b.time > a.time ? (t - a.time) / (b.time - a.time) : 1;
+      translate = (1 - w) * a.translate + w * b.translate;
+      rotate = (1 - w) * a.rotate_degrees + w * b.rotate_degrees;
+    }
+  }
+  return pivot + rotation_of(rotate) * (rest - pivot) + translate + velocity * t;
+}
+
+Handles::Handles(GMap& map) {
+  const Orbit vertex = Orbit::cell(0, map.dimension());
+  handle_ = map.embedding<std::int64_t>("handle");
+  if (!handle_)
+    handle_ = map.add_embedding<std::int64_t>("handle", vertex, MergePolicy::kKeepFirst, -1);
+  rest_ = map.embedding<Vec3>("handle_rest");
+  if (!rest_)
+    rest_ = map.add_embedding<Vec3>("handle_rest", vertex, MergePolicy::kMean, Vec3::Zero());
+  if (handle_.orbit() != vertex || rest_.orbit() != vertex) {
+    throw std::invalid_argument("the embeddings 'handle' and 'handle_rest' must live on vertices");
+  }
+}
+
+int Handles::add(HandleMotion motion) {
+  std::sort(motion.keyframes.begin(), motion.keyframes.end(),
+            [](const auto& a, const auto& b) { return a.time < b.time; });
+  motions_.push_back(std::move(motion));
+  return static_cast<int>(motions_.size() - 1);
+}
+
+bool Handles::hold(Dart d, int index, const Vec3& rest) {
+  if (handle_[d] >= 0 && handle_[d] != index) return false;
+  handle_[d] = index;
+  rest_[d] = rest;
+  return true;
+}
+
+bool Handles::releases_between(Real t0, Real t1) const {
+  return std::any_of(motions_.begin(), motions_.end(),
+                     [&](const HandleMotion& m) { return m.release > t0 && m.release <= t1; });
+}
+
+Vec3 Handles::target(Slot s, Real t) const {
+  return motions_[static_cast<std::size_t>(handle_.values()[s])].place(rest_.values()[s], t);
+}
+
+Vec3 Handles::target_velocity(Slot s, Real t, Real dt) const {
+  return (target(s, t + dt) - target(s, t)) / dt;
+}
+
+void Handles::impose(const OrbitAttachment& alive, Real t, Real dt, std::vector<Vec3>& x,
+                     std::vector<Vec3>& v) const {
+  const std::size_t n = std::min(x.size(), handle_.values().size());
+  for (Slot s = 0; s < n; ++s) {
+    if (!alive.slot_alive(s) || !holds(s, t)) continue;
+    x[s] = target(s, t);
+    v[s] = target_velocity(s, t, dt);
+  }
+}
+
+void Handles::reactions(const OrbitAttachment& alive, Real t, const std::vector<Vec3>& forces,
+                        const std::vector<Real>& mass, const Vec3& gravity,
+                        std::vector<Vec3>& per_handle) const {
+  per_handle.assign(motions_.size(), Vec3::Zero());
+  const std::size_t n = std::min(forces.size(), handle_.values().size());
+  for (Slot s = 0; s < n; ++s) {
+    if (!alive.slot_alive(s) || !holds(s, t)) continue;
+    per_handle[static_cast<std::size_t>(handle_.values()[s])] -= forces[s] + mass[s] * gravity;
+  }
+}
+
+}  // namespace rift

@@ -1,0 +1,310 @@
+// The scene drivers the experiments use: handles (fixed, keyframed,
+// released, their reaction), loads, initial velocities, contact with
+// friction, notches, selections and physical groups, and setup errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "experiment_support.hpp"
+#include "rift/core/input_error.hpp"
+#include "rift/io/read_mesh.hpp"
+#include "rift/mesh/assemble.hpp"
+#include "rift/mesh/generators.hpp"
+#include "rift/output/gif_writer.hpp"
+#include "rift/scene/selection.hpp"
+
+namespace rift::experiment_test {
+namespace {
+
+const char* kSprings = R"(
+[[interaction]]
+name = "stretch"
+stiffness = 60.0
+damping = 0.5
+[[interaction]]
+name = "shear"
+stiffness = 43.0
+damping = 0.5
+)";
+
+std::string cloth(const std::string& body, const std::string& simulation = "") {
+  return "[mesh]\nsource = \"grid:quad:6x6\"\nrotate = [90, 0, 0]\n[simulation]\n"
+         "integrator = \"rk4\"\ndt = 0.001\n" +
+         simulation + "[mass]\ntotal = 0.1\n" + body + kSprings;
+}
+
+TEST(Handles, ReactionOfAHangingClothIsItsWeight) {
+  auto sim =
+      simulate(scene_of("reaction", cloth("[[handle]]\nname = \"rail\"\nselect = \"top\"\n")));
+  for (int k = 0; k < 3000; ++k)
+    sim->step();
+  ASSERT_EQ(sim->handle_reactions().size(), 1u);
+  const Vec3 r = sim->handle_reactions()[0];
+  EXPECT_NEAR(r.z(), 0.1 * 9.81, 0.01 * 0.981);
+  EXPECT_NEAR(r.x(), 0.0, 1e-3);
+  // The rail did not move.
+  sim->map().for_each_cell(Orbit::cell(0, 2), [&](Dart d) {
+    if (sim->handles()->handle_of(d) == 0) {
+      EXPECT_NEAR(sim->position()[d].z(), 1.0, 1e-12);
+    }
+  });
+}
+
+TEST(Handles, PinIsAFixedHandleAndKeyframesRotateAboutThePivot) {
+  auto sim = simulate(
+      scene_of("keyframes",
+               cloth("[pin]\ncorners = [\"top-left\"]\n"
+                     "[[handle]]\nname = \"crank\"\nselect = \"top-right\"\npivot = [1, 0, 0.5]\n"
+                     "keyframes = [{ time = 0 }, { time = 0.1, rotate = [0, 90, 0] }]\n",
+                     "gravity = [0, 0, 0]\n")));
+  ASSERT_EQ(sim->handles()->count(), 2u);
+  EXPECT_EQ(sim->handles()->motion(0).name, "pin");
+  for (int k = 0; k < 100; ++k)
+    sim->step();
+  // (1, 0, 1) turned by 90 degrees about +y through (1, 0, 0.5): (1.5, 0, 0.5).
+  bool seen = false;
+  sim->map().for_each_cell(Orbit::cell(0, 2), [&](Dart d) {
+    if (sim->handles()->handle_of(d) != 1) return;
+    seen = true;
+    EXPECT_NEAR(sim->position()[d].x(), 1.5, 1e-9);
+    EXPECT_NEAR(sim->position()[d].z(), 0.5, 1e-9);
+  });
+  EXPECT_TRUE(seen);
+}
+
+TEST(Handles, ReleasedHandleLetsGo) {
+  auto sim = simulate(scene_of("release", cloth("[[handle]]\nselect = \"top\"\nrelease = 0.05\n")));
+  for (int k = 0; k < 100; ++k)
+    sim->step();
+  // 0.05 s of free fall: the rail fell by about g t^2 / 2 = 1.2 cm.
+  sim->map().for_each_cell(Orbit::cell(0, 2), [&](Dart d) {
+    if (sim->handles()->handle_of(d) == 0) {
+      EXPECT_LT(sim->position()[d].z(), 0.995);
+    }
+  });
+}
+
+TEST(Loads, ForcesRampsAndInitialVelocitiesGiveTheMomentum) {
+  const std::string body =
+      "[[load]]\nforce = [1, 0, 0]\n"                                         // 1 N in total
+      "[[load]]\nselect = \"top\"\nforce = [0, 0.1, 0]\nper_vertex = true\n"  // 7 vertices
+      "[[load]]\nacceleration = [0, 0, 2]\nramp = 0.05\n"
+      "[[initial_velocity]]\nselect = \"all\"\nvelocity = [0, 0, -1]\n";
+  auto sim = simulate(scene_of("loads", cloth(body, "gravity = [0, 0, 0]\n")));
+  const Real m = sim->total_mass();
+  EXPECT_NEAR(sim->momentum().z(), -m, 1e-12);
+  for (int k = 0; k < 100; ++k)
+    sim->step();
+  const Vec3 p = sim->momentum();
+  EXPECT_NEAR(p.x(), 1.0 * 0.1, 1e-9);
+  EXPECT_NEAR(p.y(), 7 * 0.1 * 0.1, 1e-9);
+  // Ramp: full after 0.05 s, so the impulse is m a (0.1 - 0.025), give or
+  // take the first-order sampling of the ramp at step starts.
+  EXPECT_NEAR(p.z(), -m + m * 2 * 0.075, 0.02 * m * 2 * 0.075);
+  EXPECT_GT(sim->external_work(), 0.0);
+}
+
+TEST(Contact, GroundStopsTheFallAndFrictionSlowsASlide) {
+  const std::string body =
+      "[[obstacle]]\nshape = \"plane\"\npoint = [0, 0, 0]\nfriction = 0.5\n"
+      "[[initial_velocity]]\nselect = \"all\"\nvelocity = [1, 0, 0]\n";
+  auto sim = simulate(scene_of(
+      "ground",
+      "[mesh]\nsource = \"grid:quad:4x4\"\n[simulation]\nintegrator = "
+      "\"symplectic_euler\"\ndt = 0.001\n[mass]\ntotal = 0.1\n" +
+          body + "[[obstacle]]\nshape = \"box\"\nmin = [5, -1, -1]\nmax = [6, 2, 1]\n" + kSprings));
+  // The sheet lies on the ground (z = 0) and slides, losing mu g = 4.9 m/s
+  // per second: each step gravity pushes it in by g dt^2, the projection
+  // takes g dt of normal velocity, friction mu g dt of tangential.
+  for (int k = 0; k < 100; ++k)
+    sim->step();
+  Real lowest = INFINITY;
+  sim->map().for_each_cell(Orbit::cell(0, 2),
+                           [&](Dart d) { lowest = std::min(lowest, sim->position()[d].z()); });
+  EXPECT_GE(lowest, -1e-12);
+  const Real vx = sim->momentum().x() / sim->total_mass();
+  EXPECT_NEAR(vx, 1.0 - 0.5 * 9.81 * 0.1, 0.02);
+}
+
+TEST(Notches, CutThroughThePacksRuleKeepTheMapValidAndTheMass) {
+  SetupReport report;
+  auto sim = simulate(scene_of("notch2d",
+                               "[mesh]\nsource = \"grid:tri:10x10\"\n"
+                               "[[notch]]\nfrom = [0, 0.5, 0]\nto = [0.46, 0.5, 0]\n" +
+                                   std::string(kSprings)),
+                      &report);
+  EXPECT_EQ(report.notch_cuts, 5u);  // 4.5 edges: those whose middle is on the segment
+  EXPECT_TRUE(sim->map().is_valid());
+  // Each cut edge splits its left end (the tip stays whole).
+  EXPECT_EQ(sim->map().count_cells_of_dimension(0), 121u + 5u);
+  EXPECT_NEAR(sim->total_mass(), 1.0, 1e-12);
+
+  auto bar =
+      simulate(scene_of("notch3d",
+                        "[mesh]\nsource = \"block:tet:4x2x4\"\n[[notch]]\nfrom = [0.5, 0, 0]\n"
+                        "to = [0.5, 1, 0]\ndepth = [0, 0, 0.5]\n"
+                        "[[interaction]]\nname = \"corotational\"\n"),
+               &report);
+  // At least the two triangles per quad of the 2 x 2 patch (a run cuts 13:
+  // see the report of the scenes branch, not yet explained).
+  EXPECT_GE(report.notch_cuts, 2u * 2u * 2u);
+  EXPECT_TRUE(bar->map().is_valid());
+  EXPECT_NEAR(bar->total_mass(), 1.0, 1e-12);
+}
+
+TEST(Selections, SidesCornersShapesAndGroups) {
+  MeshData mesh = make_grid(GridKind::Quad, 4, 4);
+  GMap map = assemble_gmap(mesh);
+  const Vec3 up(0, 1, 0);
+  auto count = [&](Selection s) { return select_vertices(map, s, up).size(); };
+  Selection s;
+  EXPECT_EQ(count(s), 25u);
+  s.kind = Selection::Kind::kSide;
+  s.name = "top";
+  EXPECT_EQ(count(s), 5u);
+  s.within = 0.3;  // two rows
+  EXPECT_EQ(count(s), 10u);
+  s.within = 0;
+  s.name = "left";
+  EXPECT_EQ(count(s), 5u);
+  s.kind = Selection::Kind::kCorner;
+  s.name = "top-right";
+  const auto corner = select_vertices(map, s, up);
+  ASSERT_EQ(corner.size(), 1u);
+  EXPECT_EQ(map.embedding<Vec3>("position")[corner[0]], Vec3(1, 1, 0));
+  s.kind = Selection::Kind::kSphere;
+  s.centre = Vec3(0.5, 0.5, 0);
+  s.radius = 0.26;
+  EXPECT_EQ(count(s), 5u);
+  s.kind = Selection::Kind::kBox;
+  s.lo = Vec3(-1, -1, -1);
+  s.hi = Vec3(0.3, 2, 1);
+  EXPECT_EQ(count(s), 10u);
+
+  // A Gmsh file with two physical groups: 2 triangles in group 7, one in 9.
+  const std::string path = ::testing::TempDir() + "rift_groups.msh";
+  std::ofstream(path) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n"
+                         "3 1 1 0\n4 0 1 0\n5 2 0 0\n$EndNodes\n$Elements\n3\n"
+                         "1 2 2 7 1 1 2 3\n2 2 2 7 1 1 3 4\n3 2 2 9 2 2 5 3\n$EndElements\n";
+  GMap groups = assemble_gmap(read_mesh_file(path));
+  s.kind = Selection::Kind::kGroup;
+  s.group = 7;
+  EXPECT_EQ(select_vertices(groups, s, up).size(), 4u);
+  s.group = 9;
+  EXPECT_EQ(select_vertices(groups, s, up).size(), 3u);
+  s.group = 8;
+  EXPECT_EQ(select_vertices(groups, s, up).size(), 0u);
+}
+
+std::string setup_error(const std::string& name, const std::string& toml) {
+  try {
+    simulate(scene_of(name, toml));
+  } catch (const InputError& e) {
+    return std::to_string(e.line()) + ": " + e.problem();
+  }
+  return "no error";
+}
+
+TEST(SetupErrors, NameTheLineAndWhatIsWrong) {
+  EXPECT_EQ(setup_error("both", cloth("[pin]\ncorners = [\"top-left\"]\n[[handle]]\nname = "
+                                      "\"grip\"\nselect = \"top\"\n")),
+            "11: the vertex at (0, 0, 1) is held by both [pin] and [[handle]] 'grip': a vertex can "
+            "follow one prescribed motion only");
+  EXPECT_EQ(setup_error("empty", cloth("[[load]]\nselect = { sphere = { center = [5, 5, 5], "
+                                       "radius = 0.1 } }\nforce = [1, 0, 0]\n")),
+            "10: [[load]] 'load1': the selection (sphere) holds no vertex");
+  EXPECT_EQ(setup_error("nogroup", cloth("[[handle]]\nselect = { group = 2 }\n")),
+            "10: [[handle]] 'handle1': the selection (group 2) holds no vertex (the mesh has no "
+            "physical groups: Gmsh physical tags, Medit references or VTU cell data)");
+  EXPECT_EQ(setup_error("far", cloth("[[notch]]\nfrom = [3, 0, 0]\nto = [4, 0, 0]\n")),
+            "9: the notch crosses no inner edge of the mesh: check 'from' and 'to' against the "
+            "mesh's extent");
+  EXPECT_EQ(setup_error("vertex", cloth("[[handle]]\nselect = { vertices = [400] }\n")),
+            "10: [[handle]] 'handle1': vertex 400 is not a point of the mesh (points are numbered "
+            "from 0)");
+}
+
+// A minimal GIF decoder (LZW, variable width): enough to check that what the
+// encoder wrote decodes to the palette indices of the image.
+std::vector<std::uint8_t> decode_first_frame(const std::vector<std::uint8_t>& gif, int& w, int& h) {
+  std::size_t k = 13 + 3 * 256 + 19 + 8;  // header, palette, loop extension, control extension
+  EXPECT_EQ(gif[k], 0x2c);
+  w = gif[k + 5] | (gif[k + 6] << 8);
+  h = gif[k + 7] | (gif[k + 8] << 8);
+  k += 10;
+  const int min_size = gif[k++];
+  std::vector<std::uint8_t> data;
+  while (gif[k] != 0) {
+    const int n = gif[k++];
+    data.insert(data.end(), gif.begin() + static_cast<long>(k),
+                gif.begin() + static_cast<long>(k) + n);
+    k += static_cast<std::size_t>(n);
+  }
+  const int clear = 1 << min_size, end = clear + 1;
+  std::vector<std::vector<std::uint8_t>> table;
+  auto reset = [&] {
+    table.assign(static_cast<std::size_t>(end + 1), {});
+    for (int i = 0; i < clear; ++i)
+      table[static_cast<std::size_t>(i)] = {static_cast<std::uint8_t>(i)};
+  };
+  reset();
+  int width = min_size + 1;
+  std::size_t bit = 0;
+  std::vector<std::uint8_t> out;
+  int previous = -1;
+  while (bit + static_cast<std::size_t>(width) <= 8 * data.size()) {
+    int code = 0;
+    for (int b = 0; b < width; ++b, ++bit)
+      code |= ((data[bit / 8] >> (bit % 8)) & 1) << b;
+    if (code == clear) {
+      reset();
+      width = min_size + 1;
+      previous = -1;
+      continue;
+    }
+    if (code == end) break;
+    std::vector<std::uint8_t> entry;
+    if (code < static_cast<int>(table.size())) {
+      entry = table[static_cast<std::size_t>(code)];
+    } else {
+      entry = table[static_cast<std::size_t>(previous)];
+      entry.push_back(entry[0]);
+    }
+    if (previous >= 0 && table.size() < 4096) {
+      auto grown = table[static_cast<std::size_t>(previous)];
+      grown.push_back(entry[0]);
+      table.push_back(grown);
+    }
+    if (static_cast<int>(table.size()) == (1 << width) && width < 12) ++width;
+    out.insert(out.end(), entry.begin(), entry.end());
+    previous = code;
+  }
+  return out;
+}
+
+TEST(Gif, FramesDecodeToTheirPaletteColours) {
+  Image image;
+  image.width = 97;
+  image.height = 61;
+  image.rgb.resize(3 * 97 * 61);
+  for (std::size_t i = 0; i < image.rgb.size(); ++i)
+    image.rgb[i] = static_cast<std::uint8_t>((i * 37 + (i / 291) * 11) % 256);
+  const auto gif = encode_gif({&image, &image}, 50);
+  ASSERT_GT(gif.size(), 800u);
+  EXPECT_EQ(std::string(gif.begin(), gif.begin() + 6), "GIF89a");
+  EXPECT_EQ(gif.back(), 0x3b);
+  int w = 0, h = 0;
+  const auto indices = decode_first_frame(gif, w, h);
+  EXPECT_EQ(w, 97);
+  EXPECT_EQ(h, 61);
+  ASSERT_EQ(indices.size(), 97u * 61u);
+  for (std::size_t p = 0; p < indices.size(); ++p) {
+    ASSERT_EQ(indices[p],
+              gif_palette_index(image.rgb[3 * p], image.rgb[3 * p + 1], image.rgb[3 * p + 2]))
+        << "pixel " << p;
+  }
+}
+
+}  // namespace
+}  // namespace rift::experiment_test
