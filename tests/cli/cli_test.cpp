@@ -67,8 +67,7 @@ int readable_frames(const fs::path& dir, const std::string& name) {
   if (!pvd.load_file((dir / (name + ".pvd")).c_str())) return -1;
   int frames = 0;
   for (pugi::xml_node ds : pvd.child("VTKFile").child("Collection").children("DataSet")) {
-    pugi::xml_document vtu;
-    if (!vtu.load_file((dir / ds.attribute("file").value()).c_str())) return -1;
+    if (!frame_is_complete(dir / ds.attribute("file").value())) return -1;
     ++frames;
   }
   return frames;

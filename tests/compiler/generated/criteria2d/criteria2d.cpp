@@ -174,6 +174,7 @@ void for_each_value(const rift::GMap& g, const rift::Embedding<T>& e, rift::Dart
   Scratch& s = scratch();
   s.seen.clear();
   g.for_each_in_orbit(d, o, [&](rift::Dart x) {
+    rift::throw_if_interrupted();  // orbits may be large (a polygon's face)
     const rift::Slot slot = e.slot(x);
     if (slot == rift::kNoSlot || std::find(s.seen.begin(), s.seen.end(), slot) != s.seen.end()) return;
     s.seen.push_back(slot);
@@ -570,9 +571,9 @@ bool apply_split_along_largest_force(rift::GMap& g, std::span<const rift::Dart> 
   auto e_f_stretch = require_embedding<rift::Vec3>(g, "f_stretch", "script 'split_along_largest_force'");
   auto e_position = require_embedding<rift::Vec3>(g, "position", "script 'split_along_largest_force'");
   bool applied = false;
-  const rift::Real l_largest = std::max<rift::Real>([&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, std::max<rift::Real>((e_f_membrane[d_c]).norm(), (e_f_shear[d_c]).norm())); }); return acc0; }(), [&]() { rift::Real acc1 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&]([[maybe_unused]] rift::Dart d_x) { acc1 = std::max<rift::Real>(acc1, (e_f_stretch[d_x]).norm()); }); return acc1; }());
+  const rift::Real l_largest = std::max<rift::Real>([&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc0 = std::max<rift::Real>(acc0, std::max<rift::Real>((e_f_membrane[d_c]).norm(), (e_f_shear[d_c]).norm())); }); return acc0; }(), [&]() { rift::Real acc1 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&]([[maybe_unused]] rift::Dart d_x) { rift::throw_if_interrupted(); acc1 = std::max<rift::Real>(acc1, (e_f_stretch[d_x]).norm()); }); return acc1; }());
   const rift::Vec3 l_zero = rift::Vec3(0.0, 0.0, 0.0);
-  const rift::Vec3 l_f = rift::Vec3([&]() { rift::Vec3 acc0 = rift::Vec3::Zero(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { acc0 = rift::Vec3(acc0 + rift::Vec3((((e_f_membrane[d_c]).norm() >= l_largest) ? rift::Vec3(e_f_membrane[d_c]) : rift::Vec3(l_zero)) + (((e_f_shear[d_c]).norm() >= l_largest) ? rift::Vec3(e_f_shear[d_c]) : rift::Vec3(l_zero)))); }); return acc0; }() + [&]() { rift::Vec3 acc1 = rift::Vec3::Zero(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&]([[maybe_unused]] rift::Dart d_x) { acc1 = rift::Vec3(acc1 + (((e_f_stretch[d_x]).norm() >= l_largest) ? rift::Vec3(e_f_stretch[d_x]) : rift::Vec3(l_zero))); }); return acc1; }());
+  const rift::Vec3 l_f = rift::Vec3([&]() { rift::Vec3 acc0 = rift::Vec3::Zero(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc0 = rift::Vec3(acc0 + rift::Vec3((((e_f_membrane[d_c]).norm() >= l_largest) ? rift::Vec3(e_f_membrane[d_c]) : rift::Vec3(l_zero)) + (((e_f_shear[d_c]).norm() >= l_largest) ? rift::Vec3(e_f_shear[d_c]) : rift::Vec3(l_zero)))); }); return acc0; }() + [&]() { rift::Vec3 acc1 = rift::Vec3::Zero(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&]([[maybe_unused]] rift::Dart d_x) { rift::throw_if_interrupted(); acc1 = rift::Vec3(acc1 + (((e_f_stretch[d_x]).norm() >= l_largest) ? rift::Vec3(e_f_stretch[d_x]) : rift::Vec3(l_zero))); }); return acc1; }());
   do {
     if (!(((l_f).norm() > 0.0))) continue;
     split_vertex_args call;
@@ -734,6 +735,7 @@ void StretchStrainCriterion::initialise(rift::GMap& g) {
 
 void StretchStrainCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{0}, [&](rift::Dart d_a) {
+    rift::throw_if_interrupted();
     [[maybe_unused]] const rift::Real l_l = (rift::Vec3(e_position[g.alpha(d_a, 0)] - e_position[d_a])).norm();
     const rift::Real measure = ((e_stretch_rest[d_a] > 0.0) ? rift::Real(((l_l - e_stretch_rest[d_a]) / e_stretch_rest[d_a])) : rift::Real(0.0));
     const rift::Real threshold = p_.threshold;
@@ -762,6 +764,7 @@ void StretchForceCriterion::initialise(rift::GMap& g) {
 
 void StretchForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{0}, [&](rift::Dart d_a) {
+    rift::throw_if_interrupted();
     const rift::Real measure = (e_f_stretch[d_a]).norm();
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
@@ -789,6 +792,7 @@ void SpringSplitCriterion::initialise(rift::GMap& g) {
 
 void SpringSplitCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{0}, [&](rift::Dart d_a) {
+    rift::throw_if_interrupted();
     const rift::Real measure = (e_f_stretch[d_a]).norm();
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
@@ -819,7 +823,8 @@ void ShearForceCriterion::initialise(rift::GMap& g) {
 
 void ShearForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{0, 1}, [&](rift::Dart d_f) {
-    const rift::Real measure = [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, (e_f_shear[d_c]).norm()); }); return acc0; }();
+    rift::throw_if_interrupted();
+    const rift::Real measure = [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc0 = std::max<rift::Real>(acc0, (e_f_shear[d_c]).norm()); }); return acc0; }();
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
     rift::TearCandidate c;
@@ -847,6 +852,7 @@ void BendForceCriterion::initialise(rift::GMap& g) {
 
 void BendForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{2}, [&](rift::Dart d_d) {
+    rift::throw_if_interrupted();
     const rift::Real measure = std::max<rift::Real>(std::max<rift::Real>((e_f_bend[g.alpha(g.alpha(d_d, 1), 0)]).norm(), (e_f_bend[g.alpha(g.alpha(g.alpha(d_d, 2), 1), 0)]).norm()), (2.0 * (e_f_abend[d_d]).norm()));
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
@@ -875,8 +881,9 @@ void ElementStressCriterion::initialise(rift::GMap& g) {
 
 void ElementStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{0, 1}, [&](rift::Dart d_f) {
+    rift::throw_if_interrupted();
     [[maybe_unused]] const rift::Real l_area = (0.5 * (rift::Vec3((rift::Vec3(e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f])))).norm());
-    [[maybe_unused]] const rift::Mat3 l_m = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { acc0 = rift::Mat3(acc0 + rift::Mat3((e_f_membrane[d_c]) * (e_position[d_c]).transpose())); }); return acc0; }();
+    [[maybe_unused]] const rift::Mat3 l_m = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc0 = rift::Mat3(acc0 + rift::Mat3((e_f_membrane[d_c]) * (e_position[d_c]).transpose())); }); return acc0; }();
     const rift::Real measure = ((l_area > 0.0) ? rift::Real(symmetric_max_eigenvalue(rift::Mat3(rift::Mat3((-0.5) * rift::Mat3(l_m + rift::Mat3((l_m).transpose()))) / l_area))) : rift::Real(0.0));
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
@@ -906,7 +913,8 @@ void InteractionForceCriterion::initialise(rift::GMap& g) {
 
 void InteractionForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart d_v) {
-    const rift::Real measure = std::max<rift::Real>([&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, std::max<rift::Real>((e_f_membrane[d_c]).norm(), (e_f_shear[d_c]).norm())); }); return acc0; }(), [&]() { rift::Real acc1 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&]([[maybe_unused]] rift::Dart d_x) { acc1 = std::max<rift::Real>(acc1, (e_f_stretch[d_x]).norm()); }); return acc1; }());
+    rift::throw_if_interrupted();
+    const rift::Real measure = std::max<rift::Real>([&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc0 = std::max<rift::Real>(acc0, std::max<rift::Real>((e_f_membrane[d_c]).norm(), (e_f_shear[d_c]).norm())); }); return acc0; }(), [&]() { rift::Real acc1 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&]([[maybe_unused]] rift::Dart d_x) { rift::throw_if_interrupted(); acc1 = std::max<rift::Real>(acc1, (e_f_stretch[d_x]).norm()); }); return acc1; }());
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
     rift::TearCandidate c;
@@ -935,8 +943,9 @@ void VertexStressCriterion::initialise(rift::GMap& g) {
 
 void VertexStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart d_v) {
-    [[maybe_unused]] const rift::Mat3 l_weighted = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&]([[maybe_unused]] rift::Dart d_f) { acc0 = rift::Mat3(acc0 + (((rift::Vec3((rift::Vec3(e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f])))).norm() > 0.0) ? rift::Mat3(rift::Mat3(((collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}) * 2.0) / (rift::Vec3((rift::Vec3(e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f])))).norm()) * [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { acc1 = rift::Mat3(acc1 + rift::Mat3((e_f_membrane[d_c]) * (e_position[d_c]).transpose())); }); return acc1; }())) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()))); }); return acc0; }();
-    [[maybe_unused]] const rift::Real l_mass = [&]() { rift::Real acc0 = rift::Real(0); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&]([[maybe_unused]] rift::Dart d_f) { acc0 = rift::Real(acc0 + collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1})); }); return acc0; }();
+    rift::throw_if_interrupted();
+    [[maybe_unused]] const rift::Mat3 l_weighted = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&]([[maybe_unused]] rift::Dart d_f) { rift::throw_if_interrupted(); acc0 = rift::Mat3(acc0 + (((rift::Vec3((rift::Vec3(e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f])))).norm() > 0.0) ? rift::Mat3(rift::Mat3(((collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}) * 2.0) / (rift::Vec3((rift::Vec3(e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f])))).norm()) * [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc1 = rift::Mat3(acc1 + rift::Mat3((e_f_membrane[d_c]) * (e_position[d_c]).transpose())); }); return acc1; }())) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()))); }); return acc0; }();
+    [[maybe_unused]] const rift::Real l_mass = [&]() { rift::Real acc0 = rift::Real(0); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&]([[maybe_unused]] rift::Dart d_f) { rift::throw_if_interrupted(); acc0 = rift::Real(acc0 + collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1})); }); return acc0; }();
     [[maybe_unused]] const rift::Mat3 l_s = ((l_mass > 0.0) ? rift::Mat3(rift::Mat3(rift::Mat3((-0.5) * rift::Mat3(l_weighted + rift::Mat3((l_weighted).transpose()))) / l_mass)) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
     const rift::Real measure = symmetric_max_eigenvalue(l_s);
     const rift::Real threshold = p_.threshold;
@@ -970,6 +979,7 @@ void VertexSumCriterion::initialise(rift::GMap& g) {
 
 void VertexSumCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart d_v) {
+    rift::throw_if_interrupted();
     const rift::Real measure = (e_vertex_force[d_v]).norm();
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
@@ -1004,6 +1014,7 @@ void AtomicEdgeCriterion::initialise(rift::GMap& g) {
 
 void AtomicEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{0, 2}, [&](rift::Dart d_a) {
+    rift::throw_if_interrupted();
     [[maybe_unused]] const rift::Vec3 l_ab = rift::Vec3(e_position[g.alpha(d_a, 0)] - e_position[d_a]);
     [[maybe_unused]] const rift::Vec3 l_p1 = e_position[g.alpha(g.alpha(d_a, 1), 0)];
     [[maybe_unused]] const rift::Vec3 l_p2 = e_position[g.alpha(g.alpha(g.alpha(d_a, 2), 1), 0)];
@@ -1040,6 +1051,7 @@ void GlobalEdgeCriterion::initialise(rift::GMap& g) {
 
 void GlobalEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{0, 2}, [&](rift::Dart d_a) {
+    rift::throw_if_interrupted();
     [[maybe_unused]] const rift::Vec3 l_ab = rift::Vec3(e_position[g.alpha(d_a, 0)] - e_position[d_a]);
     [[maybe_unused]] const rift::Vec3 l_n = rift::Vec3((l_ab).cross(rift::Vec3(rift::Vec3((l_ab).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_a, 1), 0)] - e_position[d_a]))) + rift::Vec3((rift::Vec3(e_position[g.alpha(g.alpha(g.alpha(d_a, 2), 1), 0)] - e_position[d_a])).cross(l_ab)))));
     [[maybe_unused]] const rift::Real l_l = (l_n).norm();

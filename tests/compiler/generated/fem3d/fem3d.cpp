@@ -174,6 +174,7 @@ void for_each_value(const rift::GMap& g, const rift::Embedding<T>& e, rift::Dart
   Scratch& s = scratch();
   s.seen.clear();
   g.for_each_in_orbit(d, o, [&](rift::Dart x) {
+    rift::throw_if_interrupted();  // orbits may be large (a polygon's face)
     const rift::Slot slot = e.slot(x);
     if (slot == rift::kNoSlot || std::find(s.seen.begin(), s.seen.end(), slot) != s.seen.end()) return;
     s.seen.push_back(slot);
@@ -692,6 +693,93 @@ void CorotationalKernel::reset_stored(const Match& m) {
 rift::Real CorotationalKernel::energy(const Match& m, const rift::ForceInput& in) const {
   Result r;
   return evaluate<false>(m, in, columns(), r) ? r.energy : 0;
+}
+
+void CorotationalKernel::vertex_slots(const Match& m, rift::Slot* out) const {
+  out[0] = m.vertex_c1;
+  out[1] = m.vertex_c0;
+  out[2] = m.vertex_c2;
+  out[3] = m.vertex_c3;
+}
+
+void CorotationalKernel::jacobian([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, rift::Mat3* dfdx, rift::Mat3* dfdv) {
+  for (int b = 0; b < 16; ++b) {
+    dfdx[b].setZero();
+    dfdv[b].setZero();
+  }
+  [[maybe_unused]] const Columns c = columns();
+  [[maybe_unused]] const rift::Mat3 l_b = c.fem_b[m.orbit012_c0];
+  [[maybe_unused]] const rift::Mat3 l_f = ((rift::Mat3() << (in.x[m.vertex_c1] - in.x[m.vertex_c0]), (in.x[m.vertex_c2] - in.x[m.vertex_c0]), (in.x[m.vertex_c3] - in.x[m.vertex_c0])).finished() * l_b);
+  [[maybe_unused]] const rift::Mat3 l_r = polar_rotation(l_f);
+  [[maybe_unused]] const rift::Mat3 l_rf = ((l_r).transpose() * l_f);
+  [[maybe_unused]] const rift::Mat3 l_strain = ((0.5 * (l_rf + (l_rf).transpose())) - rift::Mat3::Identity());
+  [[maybe_unused]] const rift::Mat3 l_rv = (((l_r).transpose() * (rift::Mat3() << (in.v[m.vertex_c1] - in.v[m.vertex_c0]), (in.v[m.vertex_c2] - in.v[m.vertex_c0]), (in.v[m.vertex_c3] - in.v[m.vertex_c0])).finished()) * l_b);
+  [[maybe_unused]] const rift::Mat3 l_e = (l_strain + ((0.5 * p_.damping) * (l_rv + (l_rv).transpose())));
+  [[maybe_unused]] const rift::Real l_mu = c.fem_mu[m.orbit012_c0];
+  [[maybe_unused]] const rift::Real l_lambda = c.fem_lambda[m.orbit012_c0];
+  [[maybe_unused]] const rift::Mat3 l_stress = (((l_lambda * (l_e).trace()) * rift::Mat3::Identity()) + ((2.0 * l_mu) * l_e));
+  [[maybe_unused]] const rift::Mat3 l_hm = ((-c.fem_volume[m.orbit012_c0]) * ((l_r * l_stress) * (l_b).transpose()));
+  [[maybe_unused]] const rift::Vec3 l_f1 = rift::Vec3((l_hm)(0, 0), (l_hm)(1, 0), (l_hm)(2, 0));
+  [[maybe_unused]] const rift::Vec3 l_f2 = rift::Vec3((l_hm)(0, 1), (l_hm)(1, 1), (l_hm)(2, 1));
+  [[maybe_unused]] const rift::Vec3 l_f3 = rift::Vec3((l_hm)(0, 2), (l_hm)(1, 2), (l_hm)(2, 2));
+  for (int dir = 0; dir < 24; ++dir) {
+    const bool wrt_x = dir < 12;
+    const int j = (dir % 12) / 3, c3 = dir % 3;
+    rift::Vec3 tx[4], tv[4];
+    for (int v = 0; v < 4; ++v) {
+      tx[v].setZero();
+      tv[v].setZero();
+    }
+    (wrt_x ? tx : tv)[j][c3] = 1;
+    [[maybe_unused]] const rift::Mat3 t_l_f = rift::Mat3(((rift::Mat3() << (rift::Vec3((tx[0]) - (tx[1]))), (rift::Vec3((tx[2]) - (tx[1]))), (rift::Vec3((tx[3]) - (tx[1])))).finished()) * (l_b));
+    [[maybe_unused]] const rift::Mat3 t_l_rf = rift::Mat3((rift::Mat3((l_r).transpose())) * (t_l_f));
+    [[maybe_unused]] const rift::Mat3 t_l_strain = rift::Mat3(rift::Mat3((0.5) * (rift::Mat3((t_l_rf) + (rift::Mat3((t_l_rf).transpose()))))));
+    [[maybe_unused]] const rift::Mat3 t_l_rv = rift::Mat3((rift::Mat3((rift::Mat3((l_r).transpose())) * ((rift::Mat3() << (rift::Vec3((tv[0]) - (tv[1]))), (rift::Vec3((tv[2]) - (tv[1]))), (rift::Vec3((tv[3]) - (tv[1])))).finished()))) * (l_b));
+    [[maybe_unused]] const rift::Mat3 t_l_e = rift::Mat3((t_l_strain) + (rift::Mat3(((0.5 * p_.damping)) * (rift::Mat3((t_l_rv) + (rift::Mat3((t_l_rv).transpose())))))));
+    [[maybe_unused]] const rift::Mat3 t_l_stress = rift::Mat3((rift::Mat3((rift::Real((l_lambda) * (rift::Real((t_l_e).trace())))) * (rift::Mat3(rift::Mat3::Identity())))) + (rift::Mat3(((2.0 * l_mu)) * (t_l_e))));
+    [[maybe_unused]] const rift::Mat3 t_l_hm = rift::Mat3(((-c.fem_volume[m.orbit012_c0])) * (rift::Mat3((rift::Mat3((l_r) * (t_l_stress))) * (rift::Mat3((l_b).transpose())))));
+    [[maybe_unused]] const rift::Vec3 t_l_f1 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{0}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{0}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{0}))));
+    [[maybe_unused]] const rift::Vec3 t_l_f2 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{1}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{1}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{1}))));
+    [[maybe_unused]] const rift::Vec3 t_l_f3 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{2}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{2}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{2}))));
+    (wrt_x ? dfdx : dfdv)[4 + j].col(c3) += rift::Vec3(rift::Vec3(-(rift::Vec3((rift::Vec3((t_l_f1) + (t_l_f2))) + (t_l_f3)))));
+    (wrt_x ? dfdx : dfdv)[0 + j].col(c3) += rift::Vec3(t_l_f1);
+    (wrt_x ? dfdx : dfdv)[8 + j].col(c3) += rift::Vec3(t_l_f2);
+    (wrt_x ? dfdx : dfdv)[12 + j].col(c3) += rift::Vec3(t_l_f3);
+  }
+}
+
+void CorotationalKernel::jacobian_product([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, [[maybe_unused]] const rift::Vec3* px, [[maybe_unused]] const rift::Vec3* pv, rift::Vec3* out) {
+  [[maybe_unused]] const Columns c = columns();
+  [[maybe_unused]] const rift::Mat3 l_b = c.fem_b[m.orbit012_c0];
+  [[maybe_unused]] const rift::Mat3 l_f = ((rift::Mat3() << (in.x[m.vertex_c1] - in.x[m.vertex_c0]), (in.x[m.vertex_c2] - in.x[m.vertex_c0]), (in.x[m.vertex_c3] - in.x[m.vertex_c0])).finished() * l_b);
+  [[maybe_unused]] const rift::Mat3 l_r = polar_rotation(l_f);
+  [[maybe_unused]] const rift::Mat3 l_rf = ((l_r).transpose() * l_f);
+  [[maybe_unused]] const rift::Mat3 l_strain = ((0.5 * (l_rf + (l_rf).transpose())) - rift::Mat3::Identity());
+  [[maybe_unused]] const rift::Mat3 l_rv = (((l_r).transpose() * (rift::Mat3() << (in.v[m.vertex_c1] - in.v[m.vertex_c0]), (in.v[m.vertex_c2] - in.v[m.vertex_c0]), (in.v[m.vertex_c3] - in.v[m.vertex_c0])).finished()) * l_b);
+  [[maybe_unused]] const rift::Mat3 l_e = (l_strain + ((0.5 * p_.damping) * (l_rv + (l_rv).transpose())));
+  [[maybe_unused]] const rift::Real l_mu = c.fem_mu[m.orbit012_c0];
+  [[maybe_unused]] const rift::Real l_lambda = c.fem_lambda[m.orbit012_c0];
+  [[maybe_unused]] const rift::Mat3 l_stress = (((l_lambda * (l_e).trace()) * rift::Mat3::Identity()) + ((2.0 * l_mu) * l_e));
+  [[maybe_unused]] const rift::Mat3 l_hm = ((-c.fem_volume[m.orbit012_c0]) * ((l_r * l_stress) * (l_b).transpose()));
+  [[maybe_unused]] const rift::Vec3 l_f1 = rift::Vec3((l_hm)(0, 0), (l_hm)(1, 0), (l_hm)(2, 0));
+  [[maybe_unused]] const rift::Vec3 l_f2 = rift::Vec3((l_hm)(0, 1), (l_hm)(1, 1), (l_hm)(2, 1));
+  [[maybe_unused]] const rift::Vec3 l_f3 = rift::Vec3((l_hm)(0, 2), (l_hm)(1, 2), (l_hm)(2, 2));
+  [[maybe_unused]] const rift::Vec3 tx[4] = {px[m.vertex_c1], px[m.vertex_c0], px[m.vertex_c2], px[m.vertex_c3]};
+  [[maybe_unused]] const rift::Vec3 tv[4] = {pv[m.vertex_c1], pv[m.vertex_c0], pv[m.vertex_c2], pv[m.vertex_c3]};
+  [[maybe_unused]] const rift::Mat3 t_l_f = rift::Mat3(((rift::Mat3() << (rift::Vec3((tx[0]) - (tx[1]))), (rift::Vec3((tx[2]) - (tx[1]))), (rift::Vec3((tx[3]) - (tx[1])))).finished()) * (l_b));
+  [[maybe_unused]] const rift::Mat3 t_l_rf = rift::Mat3((rift::Mat3((l_r).transpose())) * (t_l_f));
+  [[maybe_unused]] const rift::Mat3 t_l_strain = rift::Mat3(rift::Mat3((0.5) * (rift::Mat3((t_l_rf) + (rift::Mat3((t_l_rf).transpose()))))));
+  [[maybe_unused]] const rift::Mat3 t_l_rv = rift::Mat3((rift::Mat3((rift::Mat3((l_r).transpose())) * ((rift::Mat3() << (rift::Vec3((tv[0]) - (tv[1]))), (rift::Vec3((tv[2]) - (tv[1]))), (rift::Vec3((tv[3]) - (tv[1])))).finished()))) * (l_b));
+  [[maybe_unused]] const rift::Mat3 t_l_e = rift::Mat3((t_l_strain) + (rift::Mat3(((0.5 * p_.damping)) * (rift::Mat3((t_l_rv) + (rift::Mat3((t_l_rv).transpose())))))));
+  [[maybe_unused]] const rift::Mat3 t_l_stress = rift::Mat3((rift::Mat3((rift::Real((l_lambda) * (rift::Real((t_l_e).trace())))) * (rift::Mat3(rift::Mat3::Identity())))) + (rift::Mat3(((2.0 * l_mu)) * (t_l_e))));
+  [[maybe_unused]] const rift::Mat3 t_l_hm = rift::Mat3(((-c.fem_volume[m.orbit012_c0])) * (rift::Mat3((rift::Mat3((l_r) * (t_l_stress))) * (rift::Mat3((l_b).transpose())))));
+  [[maybe_unused]] const rift::Vec3 t_l_f1 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{0}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{0}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{0}))));
+  [[maybe_unused]] const rift::Vec3 t_l_f2 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{1}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{1}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{1}))));
+  [[maybe_unused]] const rift::Vec3 t_l_f3 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{2}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{2}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{2}))));
+  out[m.vertex_c0] += rift::Vec3(rift::Vec3(-(rift::Vec3((rift::Vec3((t_l_f1) + (t_l_f2))) + (t_l_f3)))));
+  out[m.vertex_c1] += rift::Vec3(t_l_f1);
+  out[m.vertex_c2] += rift::Vec3(t_l_f2);
+  out[m.vertex_c3] += rift::Vec3(t_l_f3);
 }
 
 Pack::Pack(const Params& params) : params_(params), description_("Co-rotational FEM (Müller and Gross 2004) on the tetrahedra of 3D meshes.") {

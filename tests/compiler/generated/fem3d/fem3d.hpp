@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "rift/core/interrupt.hpp"
 #include "rift/gmap/gmap.hpp"
 #include "rift/pack/pack.hpp"
 #include "rift/sim/cached_interaction.hpp"
@@ -65,6 +66,12 @@ class CorotationalKernel {
   void add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store);
   void reset_stored(const Match& m);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
+  /// Jacobians derived by riftc (forward mode): the match's vertices, the blocks
+  /// df_i/dx_j and df_i/dv_j (row-major), and the product J p.
+  static constexpr int kJacobianVertices = 4;
+  void vertex_slots(const Match& m, rift::Slot* out) const;
+  void jacobian(const Match& m, const rift::ForceInput& in, rift::Mat3* dfdx, rift::Mat3* dfdv);
+  void jacobian_product(const Match& m, const rift::ForceInput& in, const rift::Vec3* px, const rift::Vec3* pv, rift::Vec3* out);
 
  private:
   /// The columns the body reads, loaded once per pass.

@@ -174,6 +174,7 @@ void for_each_value(const rift::GMap& g, const rift::Embedding<T>& e, rift::Dart
   Scratch& s = scratch();
   s.seen.clear();
   g.for_each_in_orbit(d, o, [&](rift::Dart x) {
+    rift::throw_if_interrupted();  // orbits may be large (a polygon's face)
     const rift::Slot slot = e.slot(x);
     if (slot == rift::kNoSlot || std::find(s.seen.begin(), s.seen.end(), slot) != s.seen.end()) return;
     s.seen.push_back(slot);

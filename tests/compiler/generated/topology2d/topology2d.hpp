@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "rift/core/interrupt.hpp"
 #include "rift/gmap/gmap.hpp"
 #include "rift/pack/pack.hpp"
 #include "rift/sim/cached_interaction.hpp"
