@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -78,14 +79,32 @@ void DivergenceMonitor::start(const Simulation& sim) {
   constrained_work_ = constrained_speed_ = 0;
 }
 
+namespace {
+
+/// The largest speed of an obstacle at time t (0 without obstacles).
+Real fastest_obstacle(const Simulation& sim, Real t) {
+  Real speed = 0;
+  if (const Contact* contact = sim.contact()) {
+    for (const Obstacle& o : contact->obstacles())
+      speed = std::max(speed, o.velocity_at(t).norm());
+  }
+  return speed;
+}
+
+}  // namespace
+
 Real DivergenceMonitor::energy_bound(const Simulation& sim) const {
   const Real factor = sim.settings().divergence_factor;
   if (!(factor > 0)) return 0;
   const Real t = sim.time();
   const Real g = sim.settings().gravity.norm();
   const Real fall = length_ + initial_speed_ * t + 0.5 * g * t * t;
+  // Moving obstacles and loads put energy in too: the work the external
+  // forces and handles did so far, and the free mass at the fastest
+  // obstacle's speed (a vertex it pushes takes its velocity).
+  const Real pushed = std::max(constrained_speed_, fastest_obstacle(sim, t));
   const Real scale = initial_energy_ + free_mass_ * g * fall + constrained_work_ +
-                     0.5 * free_mass_ * constrained_speed_ * constrained_speed_;
+                     std::abs(sim.external_work()) + 0.5 * free_mass_ * pushed * pushed;
   return factor * scale;
 }
 
@@ -141,7 +160,9 @@ void DivergenceMonitor::check(const Simulation& sim) {
         v[most_energetic].norm(), suggested_fix(sim)));
   }
   const Real g = sim.settings().gravity.norm();
-  const Real reach = length_ + (initial_speed_ + g * sim.time() + constrained_speed_) * dt;
+  const Real reach = length_ + (initial_speed_ + g * sim.time() +
+                                std::max(constrained_speed_, fastest_obstacle(sim, sim.time()))) *
+                                   dt;
   if (fastest != kNoSlot && length_ > 0 && top_speed * dt > reach) {
     throw SimulationError(fmt::format(
         "the simulation diverged {}: {} moves at {:.3g} m/s, {:.3g} m in one step, farther than "
