@@ -147,7 +147,17 @@ std::vector<int> parse_counts(std::string_view text, std::size_t expected, std::
 
 }  // namespace
 
-MeshData make_generated_mesh(std::string_view spec) {
+namespace {
+
+/// What a generator spelling names: a grid or a block, its kind and counts.
+struct GeneratorSpec {
+  bool grid = true;
+  GridKind grid_kind = GridKind::Quad;
+  BlockKind block_kind = BlockKind::Hex;
+  std::vector<int> counts;
+};
+
+GeneratorSpec parse_generator_spec(std::string_view spec) {
   const std::size_t c1 = spec.find(':');
   const std::size_t c2 = c1 == std::string_view::npos ? c1 : spec.find(':', c1 + 1);
   if (c2 == std::string_view::npos) {
@@ -169,8 +179,7 @@ MeshData make_generated_mesh(std::string_view spec) {
       throw std::invalid_argument("'" + std::string(spec) + "': unknown grid kind '" +
                                   std::string(kind) + "' (quad, tri or mix)");
     }
-    auto n = parse_counts(counts, 2, spec);
-    return make_grid(k, n[0], n[1]);
+    return GeneratorSpec{true, k, BlockKind::Hex, parse_counts(counts, 2, spec)};
   }
   if (family == "block") {
     BlockKind k;
@@ -182,11 +191,27 @@ MeshData make_generated_mesh(std::string_view spec) {
       throw std::invalid_argument("'" + std::string(spec) + "': unknown block kind '" +
                                   std::string(kind) + "' (hex or tet)");
     }
-    auto n = parse_counts(counts, 3, spec);
-    return make_block(k, n[0], n[1], n[2]);
+    return GeneratorSpec{false, GridKind::Quad, k, parse_counts(counts, 3, spec)};
   }
   throw std::invalid_argument("'" + std::string(spec) + "': unknown generator '" +
                               std::string(family) + "' (grid or block)");
+}
+
+}  // namespace
+
+void check_generator_spec(std::string_view spec) {
+  const std::vector<int> n = parse_generator_spec(spec).counts;
+  if (n.size() == 2) {
+    check_counts({n[0], n[1]});
+  } else {
+    check_counts({n[0], n[1], n[2]});
+  }
+}
+
+MeshData make_generated_mesh(std::string_view spec) {
+  const GeneratorSpec g = parse_generator_spec(spec);
+  const std::vector<int>& n = g.counts;
+  return g.grid ? make_grid(g.grid_kind, n[0], n[1]) : make_block(g.block_kind, n[0], n[1], n[2]);
 }
 
 }  // namespace rift

@@ -30,6 +30,10 @@ bool is_generator_spec(std::string_view spec);
 /// Throws std::invalid_argument explaining what is wrong with the spelling.
 MeshData make_generated_mesh(std::string_view spec);
 
+/// Checks a generator spelling without building its mesh (a scene names a
+/// million-cell block cheaply). Throws like make_generated_mesh.
+void check_generator_spec(std::string_view spec);
+
 /// The generator spellings, for --help texts.
 extern const char* const kGeneratorHelp;
 

@@ -217,7 +217,7 @@ class SceneReader {
     mesh.source = string(*source, "source");
     if (is_generator_spec(mesh.source)) {
       try {
-        make_generated_mesh(mesh.source);  // validates the spelling now, cheaply for small meshes
+        check_generator_spec(mesh.source);  // the spelling only: the mesh is built at set-up
       } catch (const std::invalid_argument& e) {
         fail(*source, e.what());
       }
