@@ -15,9 +15,7 @@ std::string value_text(const Value& v) {
   return std::visit(
       [](const auto& x) -> std::string {
         using T = std::decay_t<decltype(x)>;
-        if constexpr (std::is_same_v<T, Real>) {
-          return fmt::format("{}", x);
-        } else if constexpr (std::is_same_v<T, std::int64_t>) {
+        if constexpr (std::is_same_v<T, Real> || std::is_same_v<T, std::int64_t>) {
           return fmt::format("{}", x);
         } else if constexpr (std::is_same_v<T, Bool>) {
           return x ? "true" : "false";

@@ -7,53 +7,53 @@ namespace rift::check {
 namespace {
 
 using ast::Type;
-constexpr Type R = Type::Real;
-constexpr Type I = Type::Int;
-constexpr Type V = Type::Vec3;
-constexpr Type M = Type::Mat3;
+constexpr Type kR = Type::Real;
+constexpr Type kI = Type::Int;
+constexpr Type kV = Type::Vec3;
+constexpr Type kM = Type::Mat3;
 
 const std::map<std::string, std::vector<Signature>, std::less<>>& table() {
-  static const std::map<std::string, std::vector<Signature>, std::less<>> t = [] {
+  static const std::map<std::string, std::vector<Signature>, std::less<>> kTable = [] {
     std::map<std::string, std::vector<Signature>, std::less<>> m;
     for (const char* f : {"sqrt", "exp", "log", "sin", "cos", "tan", "acos", "asin", "atan"}) {
-      m[f] = {{{R}, R}};
+      m[f] = {{{kR}, kR}};
     }
-    m["abs"] = {{{I}, I}, {{R}, R}};
-    m["atan2"] = {{{R, R}, R}};
-    m["pow"] = {{{R, R}, R}};
-    m["min"] = {{{I, I}, I}, {{R, R}, R}};
-    m["max"] = {{{I, I}, I}, {{R, R}, R}};
-    m["clamp"] = {{{I, I, I}, I}, {{R, R, R}, R}};
-    m["real"] = {{{R}, R}};
-    m["int"] = {{{I}, I}, {{R}, I}};
-    m["vec3"] = {{{R, R, R}, V}};
-    m["mat3"] = {{{V, V, V}, M}, {{R, R, R, R, R, R, R, R, R}, M}};
-    m["identity"] = {{{}, M}};
-    m["dot"] = {{{V, V}, R}};
-    m["cross"] = {{{V, V}, V}};
-    m["norm"] = {{{V}, R}};
-    m["normalize"] = {{{V}, V}};
-    m["outer"] = {{{V, V}, M}};
-    m["transpose"] = {{{M}, M}};
-    m["inverse"] = {{{M}, M}};
-    m["det"] = {{{M}, R}};
-    m["trace"] = {{{M}, R}};
-    m["rotation"] = {{{M}, M}};
-    m["max_eigenvalue"] = {{{M}, R}};
-    m["max_eigenvector"] = {{{M}, V}};
-    m["eigenvalues"] = {{{M}, V}};
+    m["abs"] = {{{kI}, kI}, {{kR}, kR}};
+    m["atan2"] = {{{kR, kR}, kR}};
+    m["pow"] = {{{kR, kR}, kR}};
+    m["min"] = {{{kI, kI}, kI}, {{kR, kR}, kR}};
+    m["max"] = {{{kI, kI}, kI}, {{kR, kR}, kR}};
+    m["clamp"] = {{{kI, kI, kI}, kI}, {{kR, kR, kR}, kR}};
+    m["real"] = {{{kR}, kR}};
+    m["int"] = {{{kI}, kI}, {{kR}, kI}};
+    m["vec3"] = {{{kR, kR, kR}, kV}};
+    m["mat3"] = {{{kV, kV, kV}, kM}, {{kR, kR, kR, kR, kR, kR, kR, kR, kR}, kM}};
+    m["identity"] = {{{}, kM}};
+    m["dot"] = {{{kV, kV}, kR}};
+    m["cross"] = {{{kV, kV}, kV}};
+    m["norm"] = {{{kV}, kR}};
+    m["normalize"] = {{{kV}, kV}};
+    m["outer"] = {{{kV, kV}, kM}};
+    m["transpose"] = {{{kM}, kM}};
+    m["inverse"] = {{{kM}, kM}};
+    m["det"] = {{{kM}, kR}};
+    m["trace"] = {{{kM}, kR}};
+    m["rotation"] = {{{kM}, kM}};
+    m["max_eigenvalue"] = {{{kM}, kR}};
+    m["max_eigenvector"] = {{{kM}, kV}};
+    m["eigenvalues"] = {{{kM}, kV}};
     // Its argument's value, held constant when riftc differentiates forces.
-    m["stop_gradient"] = {{{R}, R}, {{V}, V}, {{M}, M}};
+    m["stop_gradient"] = {{{kR}, kR}, {{kV}, kV}, {{kM}, kM}};
     return m;
   }();
-  return t;
+  return kTable;
 }
 
 bool fits(const Signature& s, const std::vector<Type>& args, bool promote) {
   if (s.params.size() != args.size()) return false;
   for (std::size_t k = 0; k < args.size(); ++k) {
     if (args[k] == s.params[k]) continue;
-    if (promote && args[k] == I && s.params[k] == R) continue;
+    if (promote && args[k] == kI && s.params[k] == kR) continue;
     return false;
   }
   return true;

@@ -254,8 +254,8 @@ void check_embedding(const ast::Embedding& e, int dimension, TypeChecker& tc,
   check_orbit_type(e.orbit, dimension, "an embedding", diags);
   if (e.default_value) tc.expect(*e.default_value, e.type, "the default of '" + e.name.text + "'");
   if (e.merge) {
-    static const std::set<std::string> policies = {"keep", "sum", "mean", "refuse"};
-    if (!policies.count(e.merge->text)) {
+    static const std::set<std::string> kPolicies = {"keep", "sum", "mean", "refuse"};
+    if (!kPolicies.count(e.merge->text)) {
       diags.error(e.merge->loc, "unknown merge policy '" + e.merge->text +
                                     "'; expected keep, sum, mean or refuse");
     } else if ((e.merge->text == "sum" || e.merge->text == "mean") && e.type == Type::Bool) {

@@ -5,9 +5,9 @@
 namespace rift::diag {
 
 const std::vector<std::string>& known_warnings() {
-  static const std::vector<std::string> names = {"unused-variable", "unused-parameter",
-                                                 "float-equality"};
-  return names;
+  static const std::vector<std::string> kNames = {"unused-variable", "unused-parameter",
+                                                  "float-equality"};
+  return kNames;
 }
 
 Diagnostic& Diagnostics::error(const Location& loc, std::string message) {

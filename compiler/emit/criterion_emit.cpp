@@ -64,7 +64,8 @@ void declare_criterion(Writer& w, const ast::Criterion& crit, const PackModel& m
   w.middle(" private:");
   w.line("std::string name_ = " + quote(crit.name.text) + ";");
   w.line(params + " p_;");
-  w.line("Params pack_;");
+  // Not every body reads a pack-level parameter; clang warns of an unused field.
+  w.line("[[maybe_unused]] Params pack_;");
   for (const std::string& name : criterion_embeddings(crit)) {
     w.line("rift::Embedding<" + storage_type(model.symbols->embedding(name)->type) + "> " +
            embedding_var(name) + ";");
@@ -169,7 +170,8 @@ void declare_rule_class(Writer& w, const std::string& name, std::size_t hook_cou
   w.line();
   w.middle(" private:");
   w.line("std::string name_ = " + quote(name) + ";");
-  w.line("Params pack_;");
+  // Not every body reads a pack-level parameter; clang warns of an unused field.
+  w.line("[[maybe_unused]] Params pack_;");
   w.line("std::vector<rift::ParamSpec> specs_;");
   w.close("};");
   w.line();

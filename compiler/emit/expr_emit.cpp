@@ -89,7 +89,7 @@ class Emitter {
     // Folds nest: each gets its own names, so that no inner one shadows another.
     const std::string id = std::to_string(folds_++);
     const std::string acc = "acc" + id, n = "n" + id;
-    const Type acc_type = e.op == "count" ? Type::Int : (mean ? e.type : e.type);
+    const Type acc_type = e.op == "count" ? Type::Int : e.type;
     const std::string t = cpp_type(acc_type);
     std::string init = zero_of(acc_type);
     if (e.op == "min") init = "std::numeric_limits<" + t + ">::max()";

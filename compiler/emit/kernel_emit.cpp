@@ -625,7 +625,8 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
       "const;");
   w.line("std::string name_ = " + quote(inter.name.text) + ";");
   w.line(params + " p_;");
-  w.line("Params pack_;");
+  // Not every body reads a pack-level parameter; clang warns of an unused field.
+  w.line("[[maybe_unused]] Params pack_;");
   for (const std::string& name : plan.embeddings) {
     w.line("rift::Embedding<" + storage_type(model.symbols->embedding(name)->type) + "> " +
            embedding_var(name) + ";");

@@ -98,7 +98,7 @@ std::string rule_function(std::string_view rule) {
 std::string member_name(std::string_view name) {
   // Fields are part of the generated API, so they keep the rule's spelling;
   // only C++ keywords get a trailing underscore.
-  static const std::set<std::string, std::less<>> keywords = {
+  static const std::set<std::string, std::less<>> kKeywords = {
       "alignas",   "alignof",   "and",       "asm",       "auto",      "bitand",   "bitor",
       "bool",      "break",     "case",      "catch",     "char",      "class",    "compl",
       "concept",   "const",     "consteval", "constexpr", "constinit", "continue", "co_await",
@@ -112,7 +112,7 @@ std::string member_name(std::string_view name) {
       "union",     "unsigned",  "using",     "virtual",   "void",      "volatile", "while",
       "xor"};
   std::string out(name);
-  if (keywords.count(name)) out += '_';
+  if (kKeywords.count(name)) out += '_';
   return out;
 }
 

@@ -10,10 +10,10 @@ namespace rift::emit {
 
 namespace {
 
-std::string L(int v) {
+std::string left_name(int v) {
   return "left_" + std::to_string(v);
 }
-std::string R(int v) {
+std::string right_name(int v) {
   return "right_" + std::to_string(v);
 }
 
@@ -30,7 +30,7 @@ void open_row_loop(Writer& w, const check::PatternSide& side, bool right) {
   for (std::size_t v = 0; v < side.nodes.size(); ++v) {
     const int i = static_cast<int>(v);
     w.line("[[maybe_unused]] const rift::Dart " + dart_name(side.nodes[v].name()) + " = " +
-           (right ? R(i) : L(i)) + "[r];");
+           (right ? right_name(i) : left_name(i)) + "[r];");
   }
 }
 
@@ -45,27 +45,27 @@ void emit_match(Writer& w, const check::RuleGraph& g, const lower::MatchPlan& ma
   const std::size_t nl = g.left.nodes.size();
   w.line("s.left.resize(" + std::to_string(nl) + " * rows);");
   for (std::size_t v = 0; v < nl; ++v) {
-    w.line("[[maybe_unused]] rift::Dart* const " + L(static_cast<int>(v)) + " = s.left.data() + " +
-           std::to_string(v) + " * rows;  // " + g.left.nodes[v].name());
+    w.line("[[maybe_unused]] rift::Dart* const " + left_name(static_cast<int>(v)) +
+           " = s.left.data() + " + std::to_string(v) + " * rows;  // " + g.left.nodes[v].name());
   }
   for (std::size_t j = 0; j < match.hooks.size(); ++j) {
     w.line("std::copy_n(s.rows.data() + " + std::to_string(j) + " * rows, rows, " +
-           L(match.hooks[j]) + ");");
+           left_name(match.hooks[j]) + ");");
   }
   for (const lower::Follow& f : match.follows) {
-    w.line("for (std::size_t r = 0; r < rows; ++r) " + L(f.to) + "[r] = g.alpha(" + L(f.from) +
-           "[r], " + std::to_string(f.dim) + ");");
+    w.line("for (std::size_t r = 0; r < rows; ++r) " + left_name(f.to) + "[r] = g.alpha(" +
+           left_name(f.from) + "[r], " + std::to_string(f.dim) + ");");
   }
   for (const lower::ArcCheck& a : match.arc_checks) {
     w.open("for (std::size_t r = 0; r < rows; ++r) {");
-    w.line("if (g.alpha(" + L(a.a) + "[r], " + std::to_string(a.dim) + ") != " + L(a.b) + "[r]) " +
-           fail);
+    w.line("if (g.alpha(" + left_name(a.a) + "[r], " + std::to_string(a.dim) +
+           ") != " + left_name(a.b) + "[r]) " + fail);
     w.close();
   }
   for (const lower::LabelLink& c : match.label_checks) {
     w.open("for (std::size_t r = 0; r < rows; ++r) {");
-    w.line("if (g.alpha(" + L(c.node) + "[r], " + std::to_string(c.dim) + ") != " + L(c.node) +
-           "[s.nbr[r * label + " + std::to_string(c.pos) + "]]) " + fail);
+    w.line("if (g.alpha(" + left_name(c.node) + "[r], " + std::to_string(c.dim) + ") != " +
+           left_name(c.node) + "[s.nbr[r * label + " + std::to_string(c.pos) + "]]) " + fail);
     w.close();
   }
   if (nl > 0) w.line("if (!distinct_darts(g, s.left.data(), s.left.size())) " + fail);
@@ -147,24 +147,24 @@ void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) 
   if (nl_of(g) > 0)
     w.line("if (touched) touched->insert(touched->end(), s.left.begin(), s.left.end());");
   for (int v : rewrite.deleted) {
-    w.line("for (std::size_t r = 0; r < rows; ++r) g.delete_dart(" + L(v) + "[r]);");
+    w.line("for (std::size_t r = 0; r < rows; ++r) g.delete_dart(" + left_name(v) + "[r]);");
   }
   const std::size_t nr = g.right.nodes.size();
   w.line("s.right.resize(" + std::to_string(nr) + " * rows);");
   for (std::size_t v = 0; v < nr; ++v) {
     const int l = rewrite.right_from_left[v];
-    const std::string rv = R(static_cast<int>(v));
+    const std::string rv = right_name(static_cast<int>(v));
     w.line("[[maybe_unused]] rift::Dart* const " + rv + " = s.right.data() + " + std::to_string(v) +
            " * rows;  // " + g.right.nodes[v].name() + (l < 0 ? " (created)" : ""));
     if (l >= 0) {
-      w.line("std::copy_n(" + L(l) + ", rows, " + rv + ");");
+      w.line("std::copy_n(" + left_name(l) + ", rows, " + rv + ");");
     } else {
       w.line("for (std::size_t r = 0; r < rows; ++r) " + rv + "[r] = g.create_dart();");
       w.line("if (touched) touched->insert(touched->end(), " + rv + ", " + rv + " + rows);");
     }
   }
   for (const lower::ArcCheck& u : rewrite.unlinks) {
-    const std::string x = R(u.a) + "[r]";
+    const std::string x = right_name(u.a) + "[r]";
     const std::string d = std::to_string(u.dim);
     w.open("for (std::size_t r = 0; r < rows; ++r) {");
     w.line("if (touched) touched->push_back(g.alpha(" + x + ", " + d + "));");
@@ -181,18 +181,18 @@ void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) 
     w.close();
   };
   for (const lower::ArcCheck& a : rewrite.arcs) {
-    if (a.a != a.b) link(R(a.a) + "[r]", R(a.b) + "[r]", a.dim);
+    if (a.a != a.b) link(right_name(a.a) + "[r]", right_name(a.b) + "[r]", a.dim);
   }
   for (const lower::LabelLink& l : rewrite.label_links) {
-    link(R(l.node) + "[r]", R(l.node) + "[s.nbr[r * label + " + std::to_string(l.pos) + "]]",
-         l.dim);
+    link(right_name(l.node) + "[r]",
+         right_name(l.node) + "[s.nbr[r * label + " + std::to_string(l.pos) + "]]", l.dim);
   }
   if (nr > 0) w.line("update_embedding_slots(g, s.right.data(), s.right.size(), s, touched);");
   for (std::size_t k = 0; k < rule.right.assigns.size(); ++k) {
     const ast::Assign& a = rule.right.assigns[k];
     const int v = g.right.find(a.node.text);
     w.line("for (std::size_t r = 0; r < rows; ++r) " + embedding_var(a.embedding.text) + "[" +
-           R(v) + "[r]] = value_" + std::to_string(k) + "[r];");
+           right_name(v) + "[r]] = value_" + std::to_string(k) + "[r];");
   }
   if (!rule.updates.empty()) {
     open_row_loop(w, g.right, true);

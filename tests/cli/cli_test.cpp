@@ -559,8 +559,15 @@ TEST_F(Cli, CtrlCWhileWritingFramesLeavesNoTemporaryFile) {
             static_cast<char*>(nullptr));
       _exit(127);
     }
-    for (int k = 0; k < 400 && !fs::exists(out / "frame_000002.vtu"); ++k)
+    // Up to a minute for the third frame: sanitizer builds on a loaded
+    // machine are slow, and an interrupt before it would test nothing.
+    for (int k = 0; k < 6000 && !fs::exists(out / "frame_000002.vtu"); ++k)
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    if (!fs::exists(out / "frame_000002.vtu")) {
+      kill(pid, SIGKILL);
+      waitpid(pid, nullptr, 0);
+    }
+    ASSERT_TRUE(fs::exists(out / "frame_000002.vtu")) << "no third frame after a minute";
     std::this_thread::sleep_for(std::chrono::milliseconds(7 * attempt));
     kill(pid, SIGINT);
     int status = 0;

@@ -165,6 +165,12 @@ TEST_F(SceneFiles, ImplicitSolverKeys) {
   const Scene d = read_scene(write(plain), test_catalog());
   EXPECT_EQ(d.implicit.preconditioner, PreconditionerKind::kJacobi);
   EXPECT_EQ(d.implicit.newton_iterations, 1);
+  EXPECT_TRUE(d.implicit.project_definite);
+  EXPECT_FALSE(read_scene(write(implicit("project_definite = false")), test_catalog())
+                   .implicit.project_definite);
+  EXPECT_EQ(error(implicit("jacobian = \"matrix_free\"\nproject_definite = true")),
+            ":14: error: 'project_definite' needs the element matrices: jacobian = "
+            "\"assembled\"");
 
   EXPECT_EQ(error(implicit("preconditioner = \"ilu\"")),
             ":13: error: unknown preconditioner 'ilu': expected none, jacobi or "

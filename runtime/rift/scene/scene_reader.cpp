@@ -267,7 +267,7 @@ class SceneReader {
   void read_implicit(const toml::table& t, Scene& scene) const {
     check_keys(t,
                {"cg_tolerance", "cg_max_iterations", "preconditioner", "newton_iterations",
-                "newton_tolerance", "jacobian"},
+                "newton_tolerance", "jacobian", "project_definite"},
                "[implicit]");
     ImplicitSettings& s = scene.implicit;
     scene.implicit_line = line_of(t);
@@ -301,6 +301,12 @@ class SceneReader {
                      did_you_mean(name, {"assembled", "matrix_free"}));
       }
       s.jacobian = *mode;
+    }
+    if (auto* n = t.get("project_definite")) {
+      s.project_definite = boolean(*n, "project_definite");
+      if (s.project_definite && s.jacobian == JacobianMode::kMatrixFree) {
+        fail(*n, "'project_definite' needs the element matrices: jacobian = \"assembled\"");
+      }
     }
   }
 

@@ -16,8 +16,22 @@
 // blocks per tetrahedron instead of ~3 per tetrahedron in a global pattern).
 // The incomplete-Cholesky preconditioner, which needs a global matrix,
 // assembles one from these blocks (pcg.cpp).
+//
+// Definiteness: CG needs A symmetric positive definite, and A = M + Σ C_e is
+// when every -∂f_e/∂x and -∂f_e/∂v is positive semidefinite. That holds for
+// stretched springs and for co-rotational elements with R held constant, but
+// not for a compressed spring (its transverse stiffness k(1 - L0/L) turns
+// negative) or an inverted element: at a time step far beyond the explicit
+// limit, M no longer outweighs them and CG meets negative curvature. With
+// projection on, an element matrix that is not semidefinite (it has no
+// Cholesky factorisation even with a tiny diagonal added) is replaced by its nearest
+// semidefinite matrix: eigenvalues clamped at zero (as in Teran et al. 2005
+// and the incremental-potential solvers). The linearisation is then a
+// modified Newton step; the forces themselves are unchanged.
 #pragma once
 
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <memory>
 #include <span>
 #include <vector>
@@ -36,11 +50,28 @@ struct ElementBlocks {
   std::vector<Mat3> dfdv;    ///< scratch for ∂f/∂v while assembling
 };
 
+/// Scratch of the semidefinite projection for one element size (3k × 3k),
+/// sized once so that projecting allocates nothing.
+struct ProjectionScratch {
+  explicit ProjectionScratch(int dofs = 0) : dense(dofs, dofs), cholesky(dofs), eigen(dofs) {}
+  Eigen::MatrixXd dense;
+  Eigen::LLT<Eigen::MatrixXd> cholesky;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen;
+};
+
+/// Replaces the k×k blocks J (row-major, ∂f_i/∂x_j or ∂f_i/∂v_j) of one
+/// element by the nearest matrix whose negative is symmetric positive
+/// semidefinite. Returns true when it changed them.
+bool project_to_semidefinite(Mat3* blocks, int k, ProjectionScratch& scratch);
+
 class ElementMatrix {
  public:
   /// Takes the interactions whose Jacobians enter A. Each must have
   /// jacobian_vertices() > 0 (the caller reports those that do not).
   void set_models(std::span<ForceModel* const> models);
+
+  /// Projects every element matrix to semidefinite while assembling (above).
+  void set_projection(bool on) { project_ = on; }
 
   /// Evaluates every element Jacobian at `in` and stores C_e for step h.
   /// Also returns kxv = (∂f/∂x) v for the right-hand side of the linearised
@@ -55,8 +86,14 @@ class ElementMatrix {
 
   std::span<const ElementBlocks> elements() const { return elements_; }
 
+  /// Element matrices the last assembly projected (∂f/∂x and ∂f/∂v counted apart).
+  std::size_t projected() const { return projected_; }
+
  private:
   std::vector<ElementBlocks> elements_;
+  std::vector<ProjectionScratch> scratch_;  ///< one per interaction
+  bool project_ = true;
+  std::size_t projected_ = 0;
 };
 
 }  // namespace rift

@@ -30,7 +30,9 @@ std::optional<JacobianMode> parse_jacobian_mode(std::string_view name) {
 }
 
 ImplicitEuler::ImplicitEuler(ImplicitSettings settings)
-    : settings_(settings), preconditioner_(settings.preconditioner) {}
+    : settings_(settings), preconditioner_(settings.preconditioner) {
+  blocks_.set_projection(settings.project_definite);
+}
 
 void ImplicitEuler::set_models(std::span<ForceModel* const> models) {
   for (ForceModel* m : models) {
@@ -76,6 +78,7 @@ void ImplicitEuler::linearise(const ForceInput& at, const std::vector<Real>& mas
   auto start = Clock::now();
   if (settings_.jacobian == JacobianMode::kAssembled) {
     blocks_.assemble(at, h, n, kxv_);
+    stats_.projected += blocks_.projected();
   } else {
     // K v0 by the matrix-free product with a zero velocity direction.
     kxv_.assign(n, Vec3::Zero());

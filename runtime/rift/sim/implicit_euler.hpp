@@ -45,6 +45,9 @@ struct ImplicitSettings {
   int newton_iterations = 1;     ///< 1: linearised once (Baraff & Witkin); more: Newton
   Real newton_tolerance = 1e-8;  ///< stop Newton when |g| <= tolerance · |M v0| + tiny
   JacobianMode jacobian = JacobianMode::kAssembled;
+  /// Project element matrices that are not semidefinite (element_matrix.hpp);
+  /// assembled Jacobians only.
+  bool project_definite = true;
 };
 
 /// What the last step did, for benchmarks and tests.
@@ -53,6 +56,7 @@ struct ImplicitStats {
   int cg_iterations = 0;          ///< summed over Newton iterations
   Real cg_relative_residual = 0;  ///< of the last solve
   Real residual = 0;              ///< |g(v1)| at the end, when Newton ran more than once (else 0)
+  std::size_t projected = 0;  ///< element matrices made semidefinite, summed over linearisations
 };
 
 /// Seconds spent since construction (or reset_times), for `rift bench`.

@@ -86,7 +86,7 @@ class StretchStrainCriterion final : public rift::Criterion {
  private:
   std::string name_ = "stretch_strain";
   StretchStrainParams p_;
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_position;
   rift::Embedding<rift::Real> e_stretch_rest;
 };
@@ -110,7 +110,7 @@ class StretchForceCriterion final : public rift::Criterion {
  private:
   std::string name_ = "stretch_force";
   StretchForceParams p_;
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_f_stretch;
 };
 
@@ -134,7 +134,7 @@ class SpringSplitCriterion final : public rift::Criterion {
  private:
   std::string name_ = "spring_split";
   SpringSplitParams p_;
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_f_stretch;
 };
 
@@ -157,7 +157,7 @@ class ShearForceCriterion final : public rift::Criterion {
  private:
   std::string name_ = "shear_force";
   ShearForceParams p_;
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_f_shear;
 };
 
@@ -180,7 +180,7 @@ class BendForceCriterion final : public rift::Criterion {
  private:
   std::string name_ = "bend_force";
   BendForceParams p_;
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_f_abend;
   rift::Embedding<rift::Vec3> e_f_bend;
 };
@@ -204,7 +204,7 @@ class ElementStressCriterion final : public rift::Criterion {
  private:
   std::string name_ = "element_stress";
   ElementStressParams p_;
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_f_membrane;
   rift::Embedding<rift::Vec3> e_position;
 };
@@ -228,7 +228,7 @@ class InteractionForceCriterion final : public rift::Criterion {
  private:
   std::string name_ = "interaction_force";
   InteractionForceParams p_;
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_f_membrane;
   rift::Embedding<rift::Vec3> e_f_shear;
   rift::Embedding<rift::Vec3> e_f_stretch;
@@ -253,7 +253,7 @@ class VertexStressCriterion final : public rift::Criterion {
  private:
   std::string name_ = "vertex_stress";
   VertexStressParams p_;
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Real> e_corner_mass;
   rift::Embedding<rift::Vec3> e_f_membrane;
   rift::Embedding<rift::Vec3> e_position;
@@ -278,7 +278,7 @@ class VertexSumCriterion final : public rift::Criterion {
  private:
   std::string name_ = "vertex_sum";
   VertexSumParams p_;
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_position;
   rift::Embedding<rift::Vec3> e_vertex_force;
 };
@@ -302,7 +302,7 @@ class AtomicEdgeCriterion final : public rift::Criterion {
  private:
   std::string name_ = "atomic_edge";
   AtomicEdgeParams p_;
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_f_membrane;
   rift::Embedding<rift::Vec3> e_f_shear;
   rift::Embedding<rift::Vec3> e_f_stretch;
@@ -328,7 +328,7 @@ class GlobalEdgeCriterion final : public rift::Criterion {
  private:
   std::string name_ = "global_edge";
   GlobalEdgeParams p_;
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_position;
   rift::Embedding<rift::Vec3> e_vertex_force;
 };
@@ -345,7 +345,7 @@ class SeparateFacesRule final : public rift::Rule {
 
  private:
   std::string name_ = "separate_faces";
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   std::vector<rift::ParamSpec> specs_;
 };
 
@@ -361,7 +361,7 @@ class RemoveFaceRule final : public rift::Rule {
 
  private:
   std::string name_ = "remove_face";
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   std::vector<rift::ParamSpec> specs_;
 };
 
@@ -377,7 +377,7 @@ class SplitAlongLargestForceRule final : public rift::Rule {
 
  private:
   std::string name_ = "split_along_largest_force";
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   std::vector<rift::ParamSpec> specs_;
 };
 
@@ -393,7 +393,7 @@ class RemoveElementRule final : public rift::Rule {
 
  private:
   std::string name_ = "remove_element";
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   std::vector<rift::ParamSpec> specs_;
 };
 
@@ -409,7 +409,7 @@ class SplitVertexRule final : public rift::Rule {
 
  private:
   std::string name_ = "split_vertex";
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   std::vector<rift::ParamSpec> specs_;
 };
 
@@ -425,7 +425,7 @@ class RemoveEdgeElementsRule final : public rift::Rule {
 
  private:
   std::string name_ = "remove_edge_elements";
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   std::vector<rift::ParamSpec> specs_;
 };
 
@@ -441,7 +441,7 @@ class SplitEdgeEndRule final : public rift::Rule {
 
  private:
   std::string name_ = "split_edge_end";
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   std::vector<rift::ParamSpec> specs_;
 };
 
@@ -457,7 +457,7 @@ class SplitEndsRule final : public rift::Rule {
 
  private:
   std::string name_ = "split_ends";
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   std::vector<rift::ParamSpec> specs_;
 };
 

@@ -97,7 +97,7 @@ class CorotationalKernel {
   [[gnu::always_inline]] inline bool evaluate(const Match& m, const rift::ForceInput& in, const Columns& c, Result& r) const;
   std::string name_ = "corotational";
   CorotationalParams p_;
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_f_fem;
   rift::Embedding<rift::Mat3> e_fem_b;
   rift::Embedding<rift::Real> e_fem_lambda;

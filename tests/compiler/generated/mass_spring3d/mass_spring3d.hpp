@@ -88,7 +88,7 @@ class StretchKernel {
   [[gnu::always_inline]] inline bool evaluate(const Match& m, const rift::ForceInput& in, const Columns& c, Result& r) const;
   std::string name_ = "stretch";
   StretchParams p_;
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_f_stretch;
   rift::Embedding<rift::Vec3> e_position;
   rift::Embedding<rift::Real> e_stretch_k;
@@ -162,7 +162,7 @@ class ShearKernel {
   [[gnu::always_inline]] inline bool evaluate(const Match& m, const rift::ForceInput& in, const Columns& c, Result& r) const;
   std::string name_ = "shear";
   ShearParams p_;
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_f_shear;
   rift::Embedding<rift::Vec3> e_position;
   rift::Embedding<rift::Real> e_shear_k;
@@ -252,7 +252,7 @@ class VolumeShearKernel {
   [[gnu::always_inline]] inline bool evaluate(const Match& m, const rift::ForceInput& in, const Columns& c, Result& r) const;
   std::string name_ = "volume_shear";
   VolumeShearParams p_;
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_f_volume_shear;
   rift::Embedding<rift::Vec3> e_position;
   rift::Embedding<rift::Real> e_vshear_k;

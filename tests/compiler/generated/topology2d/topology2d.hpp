@@ -75,7 +75,7 @@ class SeparateFacesRule final : public rift::Rule {
 
  private:
   std::string name_ = "separate_faces";
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   std::vector<rift::ParamSpec> specs_;
 };
 
@@ -91,7 +91,7 @@ class RemoveFaceRule final : public rift::Rule {
 
  private:
   std::string name_ = "remove_face";
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   std::vector<rift::ParamSpec> specs_;
 };
 
@@ -107,7 +107,7 @@ class RemoveElementRule final : public rift::Rule {
 
  private:
   std::string name_ = "remove_element";
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   std::vector<rift::ParamSpec> specs_;
 };
 
@@ -123,7 +123,7 @@ class SplitVertexRule final : public rift::Rule {
 
  private:
   std::string name_ = "split_vertex";
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   std::vector<rift::ParamSpec> specs_;
 };
 
@@ -139,7 +139,7 @@ class RemoveEdgeElementsRule final : public rift::Rule {
 
  private:
   std::string name_ = "remove_edge_elements";
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   std::vector<rift::ParamSpec> specs_;
 };
 
@@ -155,7 +155,7 @@ class SplitEdgeEndRule final : public rift::Rule {
 
  private:
   std::string name_ = "split_edge_end";
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   std::vector<rift::ParamSpec> specs_;
 };
 
@@ -171,7 +171,7 @@ class SplitEndsRule final : public rift::Rule {
 
  private:
   std::string name_ = "split_ends";
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   std::vector<rift::ParamSpec> specs_;
 };
 
