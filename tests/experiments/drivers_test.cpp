@@ -261,6 +261,80 @@ TEST(Selections, SidesCornersShapesAndGroups) {
   EXPECT_EQ(select_vertices(groups, s, up).size(), 0u);
 }
 
+// Gmsh 4.1 keeps physical groups in $Entities: an element's group is its
+// entity's first physical tag. The same mesh as above.
+TEST(Selections, GroupsOfAGmsh4File) {
+  const std::string path = ::testing::TempDir() + "rift_groups4.msh";
+  std::ofstream(path) << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+                         "$Entities\n0 0 2 0\n1 0 0 0 1 1 0 1 7 0\n2 1 0 0 2 1 0 2 9 11 0\n"
+                         "$EndEntities\n"
+                         "$Nodes\n1 5 1 5\n2 1 0 5\n1\n2\n3\n4\n5\n"
+                         "0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 0\n$EndNodes\n"
+                         "$Elements\n2 3 1 3\n2 1 2 2\n1 1 2 3\n2 1 3 4\n2 2 2 1\n3 2 5 3\n"
+                         "$EndElements\n";
+  const MeshData mesh = read_mesh_file(path);
+  EXPECT_EQ(mesh.element_tags, (std::vector<std::int64_t>{7, 7, 9}));
+  GMap map = assemble_gmap(mesh);
+  Selection s;
+  s.kind = Selection::Kind::kGroup;
+  const Vec3 up(0, 1, 0);
+  s.group = 7;
+  EXPECT_EQ(select_vertices(map, s, up).size(), 4u);
+  s.group = 9;
+  EXPECT_EQ(select_vertices(map, s, up).size(), 3u);
+  s.group = 11;  // the second physical tag of entity 2: not its group
+  EXPECT_EQ(select_vertices(map, s, up).size(), 0u);
+
+  // An entity without physical tag leaves its elements, and so the mesh,
+  // without groups (Gmsh writes such files when asked to save everything).
+  std::ofstream(path) << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+                         "$Entities\n0 0 1 0\n1 0 0 0 1 1 0 0 0\n$EndEntities\n"
+                         "$Nodes\n1 3 1 3\n2 1 0 3\n1\n2\n3\n0 0 0\n1 0 0\n1 1 0\n$EndNodes\n"
+                         "$Elements\n1 1 1 1\n2 1 2 1\n1 1 2 3\n$EndElements\n";
+  EXPECT_TRUE(read_mesh_file(path).element_tags.empty());
+}
+
+// VTU: the cell data array of integers (the one CellData's Scalars names,
+// else the first) holds the cells' groups; the same for PointData and points.
+TEST(Selections, GroupsOfAVtuFile) {
+  const std::string path = ::testing::TempDir() + "rift_groups.vtu";
+  std::ofstream(path)
+      << "<?xml version=\"1.0\"?>\n"
+         "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+         "<UnstructuredGrid>\n<Piece NumberOfPoints=\"5\" NumberOfCells=\"3\">\n"
+         "<PointData Scalars=\"pin\">\n"
+         "<DataArray type=\"Int32\" Name=\"other\" format=\"ascii\">5 5 5 5 5</DataArray>\n"
+         "<DataArray type=\"Int32\" Name=\"pin\" format=\"ascii\">0 0 0 0 4</DataArray>\n"
+         "</PointData>\n<CellData>\n"
+         "<DataArray type=\"Float32\" Name=\"quality\" format=\"ascii\">1 1 1</DataArray>\n"
+         "<DataArray type=\"Int32\" Name=\"gmsh:physical\" format=\"ascii\">7 7 9</DataArray>\n"
+         "</CellData>\n<Points>\n"
+         "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">"
+         "0 0 0 1 0 0 1 1 0 0 1 0 2 0 0</DataArray>\n</Points>\n<Cells>\n"
+         "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">"
+         "0 1 2 0 2 3 1 4 2</DataArray>\n"
+         "<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">3 6 9</DataArray>\n"
+         "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">5 5 5</DataArray>\n"
+         "</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  const MeshData mesh = read_mesh_file(path);
+  EXPECT_EQ(mesh.element_tags, (std::vector<std::int64_t>{7, 7, 9}));
+  EXPECT_EQ(mesh.point_tags, (std::vector<std::int64_t>{0, 0, 0, 0, 4}));
+  GMap map = assemble_gmap(mesh);
+  Selection s;
+  s.kind = Selection::Kind::kGroup;
+  const Vec3 up(0, 1, 0);
+  s.group = 7;
+  EXPECT_EQ(select_vertices(map, s, up).size(), 4u);
+  s.group = 9;
+  EXPECT_EQ(select_vertices(map, s, up).size(), 3u);
+  s.group = 4;  // the point group: point 4 alone
+  const auto point = select_vertices(map, s, up);
+  ASSERT_EQ(point.size(), 1u);
+  EXPECT_EQ(map.embedding<Vec3>("position")[point[0]], Vec3(2, 0, 0));
+  s.group = 5;  // the array the Scalars attribute does not name
+  EXPECT_EQ(select_vertices(map, s, up).size(), 0u);
+}
+
 std::string setup_error(const std::string& name, const std::string& toml) {
   try {
     simulate(scene_of(name, toml));
