@@ -97,54 +97,65 @@ TEST(NotchedSheet, DISABLED_LongerNotchTearsAtSmallerPull) {
   EXPECT_LT(long_pull, 0.9 * short_pull) << "short " << short_pull << " long " << long_pull;
 }
 
-// Trouser: the legs of a sheet cut half-way pulled apart; the tear goes on
-// along the cut, up from its end.
-// DISABLED: on 16 x 16 the sheet first tears at the edges of the legs'
-// handle bands (their corners concentrate stress), not at the cut's end:
-// the legs need a softer grip (e.g. loads instead of handles) to be fixed.
-TEST(TrouserTear, DISABLED_TheTearFollowsTheCut) {
+// Trouser tear, set up as the standard test: the legs of a cloth cut
+// half-way are gripped over their ends and pulled apart perpendicular to the
+// sheet, the body free. The legs carry plain tension, which goes through the
+// material straddling the cut just past its end: the tear starts there and
+// runs on along the cut. (Pulling the legs apart sideways in the sheet's
+// plane tears at the grips or kinks the crack: docs/experiments.md.)
+TEST(TrouserTear, TheTearFollowsTheCut) {
   const std::string toml = R"(
 [mesh]
-source = "grid:tri:16x16"
-scale = 0.1
+source = "grid:quad:16x16"
 [simulation]
 integrator = "rk4"
-dt = 1.5e-4
+dt = 0.0002
 gravity = [0, 0, 0]
 [mass]
-total = 0.01
+total = 0.1
 [[notch]]
-from = [0.05, -0.001, 0]
-to = [0.05, 0.05, 0]
+from = [0.5, -0.001, 0]
+to = [0.5, 0.5, 0]
 [[handle]]
-select = "top"
+select = { box = { min = [-1, -1, -1], max = [0.49, 0.07, 1] } }
+velocity = [0, 0, -2.0]
 [[handle]]
-select = { box = { min = [-1, -1, -1], max = [0.02, 0.001, 1] } }
-velocity = [-0.1, 0, 0]
-[[handle]]
-select = { box = { min = [0.08, -1, -1], max = [1, 0.001, 1] } }
-velocity = [0.1, 0, 0]
+select = { box = { min = [0.51, -1, -1], max = [2, 0.07, 1] } }
+velocity = [0, 0, 2.0]
 [[interaction]]
-name = "membrane"
-young = 1000.0
-damping = 1e-5
+name = "stretch"
+stiffness = 200.0
+damping = 0.05
+[[interaction]]
+name = "shear"
+stiffness = 100.0
+damping = 0.05
+[[interaction]]
+name = "bend"
+stiffness = 5.0
+damping = 0.02
 [[criterion]]
-name = "vertex_stress"
-threshold = 120.0
+name = "stretch_strain"
+threshold = 0.2
 )";
   auto sim = simulate(scene_of("trouser", toml));
   const auto rest = rest_points(*sim);
   const auto before = free_sides(*sim);
-  ASSERT_LT(steps_to_first_tear(*sim, 3000), 3000);
-  for (int k = 0; k < 300 && sim->tears() < 6; ++k)
+  ASSERT_LT(steps_to_first_tear(*sim, 3000), 3000) << "the legs never tore apart";
+  for (int k = 0; k < 600; ++k)
     sim->step();
+  ASSERT_TRUE(bounded(*sim, 5.0));
   const auto torn = torn_centres(*sim, before, rest);
-  ASSERT_GE(torn.size(), 3u);
-  const double h = 0.1 / 16;
+  ASSERT_GE(torn.size(), 6u);
+  const double h = 1.0 / 16;
+  double highest = 0;
   for (const Vec3& c : torn) {
-    EXPECT_LT(std::abs(c.x() - 0.05), 1.5 * h) << "torn away from the cut at " << c.transpose();
-    EXPECT_GT(c.y(), 0.05 - 1.5 * h) << "torn below the cut's end at " << c.transpose();
+    EXPECT_LT(std::abs(c.x() - 0.5), 1.5 * h) << "torn away from the cut at " << c.transpose();
+    EXPECT_GT(c.y(), 0.5 - 1.5 * h) << "torn below the cut's end at " << c.transpose();
+    highest = std::max(highest, c.y());
   }
+  // The tear ran on: at least three elements past the cut's end.
+  EXPECT_GT(highest, 0.5 + 3 * h);
 }
 
 // A ball shot through a hanging cloth punches a hole and nothing blows up.
