@@ -417,7 +417,6 @@ class VtuReader {
     // VTU offsets are end offsets: cell c ends at offsets[c].
     ArrayValues offs = values_of(offsets_array, "offsets");
     std::vector<std::size_t> ends;
-    ends.reserve(offs.cursor().reserve_limit(n_cells));
     for (std::size_t c = 0; c < n_cells; ++c) {
       const std::int64_t end = offs.integer(c, n_cells, "an offset");
       if (end < 0 || static_cast<std::size_t>(end) < (ends.empty() ? 0 : ends.back())) {
@@ -425,6 +424,7 @@ class VtuReader {
                                                  std::to_string(c) +
                                                  " is smaller than the one before");
       }
+      grow_for_next_entry(ends, n_cells);
       ends.push_back(static_cast<std::size_t>(end));
     }
     offs.no_more(n_cells);
