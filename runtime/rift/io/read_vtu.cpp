@@ -366,9 +366,10 @@ class VtuReader {
     if (!array) return groups;
     ArrayValues values =
         values_of(array, std::string(data.name()) + " '" + array.attribute("Name").value() + "'");
-    groups.reserve(values.cursor().reserve_limit(count));
-    for (std::size_t k = 0; k < count; ++k)
+    for (std::size_t k = 0; k < count; ++k) {
+      grow_for_next_entry(groups, count);
       groups.push_back(values.integer(k, count, "a group"));
+    }
     values.no_more(count);
     return groups;
   }
