@@ -278,7 +278,7 @@ class VertexEnergyCriterion final : public rift::Criterion {
  private:
   std::string name_ = "vertex_energy";
   VertexEnergyParams p_;
-  Params pack_;
+  [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Real> e_corner_mass;
   rift::Embedding<rift::Vec3> e_f_membrane;
   rift::Embedding<rift::Real> e_membrane_lambda;
