@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "rift/sim/force_model.hpp"
+#include "rift/sim/term_gather.hpp"
 
 namespace rift {
 
@@ -34,6 +35,12 @@ struct ElementBlocks {
   std::vector<Slot> slots;   ///< matches × k
   std::vector<Mat3> blocks;  ///< matches × k²: C_e (row-major i k + j)
   std::vector<Mat3> dfdv;    ///< scratch for ∂f/∂v while assembling
+  /// Products on every core: each match writes its k rows of C_e p to its
+  /// own entries of `terms`, summed per vertex in match order by `gather`
+  /// (built from `slots` when the matches changed).
+  mutable std::vector<Vec3> terms;
+  TermGather gather;
+  bool gather_stale = true;
 };
 
 class ElementMatrix {
@@ -41,6 +48,10 @@ class ElementMatrix {
   /// Takes the interactions whose Jacobians enter A. Each must have
   /// jacobian_vertices() > 0 (the caller reports those that do not).
   void set_models(std::span<ForceModel* const> models);
+
+  /// The matches changed (a tear): the gathers of the products are rebuilt
+  /// at the next assembly.
+  void pattern_changed();
 
   /// Evaluates every element Jacobian at `in` and stores C_e for step h.
   /// Also returns kxv = (∂f/∂x) v for the right-hand side of the linearised
