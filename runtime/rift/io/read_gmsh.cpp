@@ -12,10 +12,12 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "rift/io/element_collector.hpp"
@@ -132,6 +134,8 @@ class GmshReader {
         } else {
           dialect_ == Dialect::kV4 ? read_elements_v4(header) : read_elements_v12(header);
         }
+      } else if (dialect_ == Dialect::kV4 && !binary_ && header.text == "$Entities") {
+        read_entities_v4(header);
       } else {
         skip_section(header);
       }
@@ -424,6 +428,50 @@ class GmshReader {
     expect_end(header, n, n, "elements");
   }
 
+  // $Entities (v4.1 ASCII): the physical groups of each geometric entity.
+  // Elements name their entity (dimension, tag) in their block's header; the
+  // entity's first physical tag is their group, as the first tag is in v2.
+  void read_entities_v4(const Token& header) {
+    static constexpr const char* kKinds[] = {"points", "curves", "surfaces", "volumes"};
+    std::array<std::size_t, 4> counts{};
+    for (int dim = 0; dim < 4; ++dim)
+      counts[static_cast<std::size_t>(dim)] =
+          in_.count(std::string("the number of ") + kKinds[dim] + " in $Entities");
+    for (int dim = 0; dim < 4; ++dim) {
+      const std::size_t n = counts[static_cast<std::size_t>(dim)];
+      for (std::size_t k = 0; k < n; ++k) {
+        const Token tag_token = entry(header, k, n, kKinds[dim]);
+        const std::int64_t tag = in_.to_integer(tag_token, "an entity tag");
+        const int line = tag_token.line;
+        // A point has its coordinates, the others their bounding box.
+        for (int c = 0; c < (dim == 0 ? 3 : 6); ++c)
+          in_.to_real(field(line, "a coordinate of the entity's box"), "a coordinate");
+        const std::size_t physicals =
+            in_.to_count(field(line, "the number of physical tags"), "the number of physical tags");
+        for (std::size_t t = 0; t < physicals; ++t) {
+          const std::int64_t physical =
+              in_.to_integer(field(line, "a physical tag"), "a physical tag");
+          if (t == 0) entity_physical_[{dim, tag}] = physical;
+        }
+        if (dim > 0) {
+          const std::size_t bounding = in_.to_count(field(line, "the number of bounding entities"),
+                                                    "the number of bounding entities");
+          for (std::size_t b = 0; b < bounding; ++b)
+            in_.to_integer(field(line, "a bounding entity's tag"), "an entity tag");
+        }
+        end_of_entry(line);
+      }
+    }
+    expect_end(header, counts[3], counts[3], kKinds[3]);
+  }
+
+  // The physical group of the elements of entity (dim, tag), if it has one.
+  std::optional<std::int64_t> physical_of_entity(std::int64_t dim, std::int64_t tag) const {
+    const auto it = entity_physical_.find({dim, tag});
+    if (it == entity_physical_.end()) return std::nullopt;
+    return it->second;
+  }
+
   void read_elements_v4(const Token& header) {
     elements_line_ = header.line;
     const std::size_t blocks = in_.count("the number of element blocks");
@@ -433,8 +481,10 @@ class GmshReader {
     std::size_t done = 0;
     for (std::size_t b = 0; b < blocks; ++b) {
       const Token dim_token = entry(header, b, blocks, "element blocks");
-      in_.to_integer(dim_token, "an entity dimension");
-      in_.to_integer(field(dim_token.line, "an entity tag"), "an entity tag");
+      const std::int64_t entity_dim = in_.to_integer(dim_token, "an entity dimension");
+      const std::int64_t entity =
+          in_.to_integer(field(dim_token.line, "an entity tag"), "an entity tag");
+      physical_ = physical_of_entity(entity_dim, entity);
       const GmshType type = element_type(field(dim_token.line, "an element type"));
       const std::size_t in_block =
           in_.to_count(field(dim_token.line, "the number of elements"), "the number of elements");
@@ -645,9 +695,11 @@ class GmshReader {
   TagIndex node_index_;
   int elements_line_ = 0;
   bool saw_nodes_ = false;
-  // Physical group of the element being read (v1, v2); v4 keeps physical
-  // groups in $Entities, not read: its elements have none.
+  // Physical group of the element being read (v1, v2: its first tag; v4:
+  // its entity's first physical tag, from $Entities; binary v4 files'
+  // $Entities are not read: their elements have no group).
   std::optional<std::int64_t> physical_;
+  std::map<std::pair<std::int64_t, std::int64_t>, std::int64_t> entity_physical_;
 };
 
 }  // namespace

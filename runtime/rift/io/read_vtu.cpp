@@ -13,6 +13,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -192,6 +193,8 @@ class VtuReader {
     }
     if (!any) fail(line_of(grid), "the UnstructuredGrid has no Piece");
     elements_.finish(mesh_, 0);
+    // Point groups count only if every piece gave them.
+    if (points_without_group_) mesh_.point_tags.clear();
     return std::move(mesh_);
   }
 
@@ -337,6 +340,39 @@ class VtuReader {
     return parent.find_child_by_attribute("DataArray", "Name", name);
   }
 
+  // The array of a CellData or PointData that holds physical groups: the one
+  // its Scalars attribute names if that is an integer array of one component,
+  // else the first such array (meshio writes gmsh:physical first).
+  static pugi::xml_node group_array(const pugi::xml_node data) {
+    if (!data) return {};
+    auto holds_groups = [](const pugi::xml_node a) {
+      const ScalarType* t = scalar_type(a.attribute("type").value());
+      return t && !t->real && a.attribute("NumberOfComponents").as_int(1) == 1;
+    };
+    if (const std::string scalars = data.attribute("Scalars").value(); !scalars.empty()) {
+      const pugi::xml_node a = named_array(data, scalars.c_str());
+      if (a && holds_groups(a)) return a;
+    }
+    for (pugi::xml_node a = data.child("DataArray"); a; a = a.next_sibling("DataArray"))
+      if (holds_groups(a)) return a;
+    return {};
+  }
+
+  // The values of the group array of `data` (CellData or PointData), one per
+  // entity; empty if it has none.
+  std::vector<std::int64_t> groups_of(const pugi::xml_node data, std::size_t count) const {
+    std::vector<std::int64_t> groups;
+    const pugi::xml_node array = group_array(data);
+    if (!array) return groups;
+    ArrayValues values =
+        values_of(array, std::string(data.name()) + " '" + array.attribute("Name").value() + "'");
+    groups.reserve(values.cursor().reserve_limit(count));
+    for (std::size_t k = 0; k < count; ++k)
+      groups.push_back(values.integer(k, count, "a group"));
+    values.no_more(count);
+    return groups;
+  }
+
   void read_piece(const pugi::xml_node piece) {
     const std::size_t n_points = count_attribute(piece, "NumberOfPoints");
     const std::size_t n_cells = count_attribute(piece, "NumberOfCells");
@@ -360,6 +396,11 @@ class VtuReader {
       mesh_.points.push_back(p);
     }
     coords.no_more(3 * n_points);
+    const std::vector<std::int64_t> point_groups = groups_of(piece.child("PointData"), n_points);
+    if (point_groups.empty()) points_without_group_ = true;
+    mesh_.point_tags.resize(base);
+    mesh_.point_tags.insert(mesh_.point_tags.end(), point_groups.begin(), point_groups.end());
+    mesh_.point_tags.resize(base + n_points, 0);
 
     const pugi::xml_node cells = piece.child("Cells");
     if (!cells) {
@@ -397,6 +438,8 @@ class VtuReader {
     }
     types.no_more(n_cells);
 
+    const std::vector<std::int64_t> cell_groups = groups_of(piece.child("CellData"), n_cells);
+
     ArrayValues conn = values_of(conn_array, "connectivity");
     const std::size_t total = ends.empty() ? 0 : ends.back();
     std::vector<std::uint32_t> ids;
@@ -411,7 +454,8 @@ class VtuReader {
             base + vtk_point_id(conn.cursor(), id, conn.last_line(), n_points, c)));
       }
       const auto [code, type_line] = type_codes[c];
-      add_vtk_cell(types.cursor(), elements_, code, type_line, ids, line ? line : type_line, c);
+      add_vtk_cell(types.cursor(), elements_, code, type_line, ids, line ? line : type_line, c,
+                   cell_groups.empty() ? std::nullopt : std::optional(cell_groups[c]));
     }
     conn.no_more(total);
   }
@@ -426,6 +470,7 @@ class VtuReader {
   mutable int counted_line_ = 1;
   MeshData mesh_;
   ElementCollector elements_;
+  bool points_without_group_ = false;
 };
 
 }  // namespace

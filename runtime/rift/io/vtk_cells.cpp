@@ -82,7 +82,8 @@ void add_vtk_cell(const TextCursor& in, ElementCollector& out, Token type_token,
 }
 
 void add_vtk_cell(const TextCursor& in, ElementCollector& out, std::int64_t code, int type_line,
-                  std::span<const std::uint32_t> ids, int line, std::size_t cell) {
+                  std::span<const std::uint32_t> ids, int line, std::size_t cell,
+                  std::optional<std::int64_t> group) {
   const std::string which = "cell " + std::to_string(cell);
   switch (code) {
     case kVertex:
@@ -98,7 +99,7 @@ void add_vtk_cell(const TextCursor& in, ElementCollector& out, std::int64_t code
                           std::to_string(ids.size()) + " points, at least 3 are needed");
       }
       if (code == kPolygon) {
-        out.add(ElementType::Polygon, ids, line);
+        out.add(ElementType::Polygon, ids, line, group);
         return;
       }
       // Strip triangle k is (k, k+1, k+2); every other one is flipped so that
@@ -107,7 +108,7 @@ void add_vtk_cell(const TextCursor& in, ElementCollector& out, std::int64_t code
         const std::array<std::uint32_t, 3> tri = k % 2 == 0
                                                      ? std::array{ids[k], ids[k + 1], ids[k + 2]}
                                                      : std::array{ids[k + 1], ids[k], ids[k + 2]};
-        out.add(ElementType::Polygon, tri, line);
+        out.add(ElementType::Polygon, tri, line, group);
       }
       return;
     default:
@@ -132,10 +133,10 @@ void add_vtk_cell(const TextCursor& in, ElementCollector& out, std::int64_t code
       v[k] = ids[k];
     std::swap(v[2], v[3]);
     std::swap(v[6], v[7]);
-    out.add(f.type, std::span(v.data(), f.points), line);
+    out.add(f.type, std::span(v.data(), f.points), line, group);
     return;
   }
-  out.add(f.type, ids, line);
+  out.add(f.type, ids, line, group);
 }
 
 }  // namespace rift::io

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 
 #include "rift/io/element_collector.hpp"
@@ -25,8 +26,10 @@ std::uint32_t vtk_point_id(const TextCursor& in, std::int64_t id, int line, std:
 /// type, is an error at `line` (the cell's line) or at the type's line.
 void add_vtk_cell(const TextCursor& in, ElementCollector& out, Token type_token,
                   std::span<const std::uint32_t> ids, int line, std::size_t cell);
-/// The same for a type code already converted (binary data), found at `type_line`.
+/// The same for a type code already converted (binary data), found at `type_line`;
+/// `group`: the cell's physical group (an integer cell data array), if any.
 void add_vtk_cell(const TextCursor& in, ElementCollector& out, std::int64_t code, int type_line,
-                  std::span<const std::uint32_t> ids, int line, std::size_t cell);
+                  std::span<const std::uint32_t> ids, int line, std::size_t cell,
+                  std::optional<std::int64_t> group = std::nullopt);
 
 }  // namespace rift::io

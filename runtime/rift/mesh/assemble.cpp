@@ -434,12 +434,19 @@ GMap assemble_gmap(const MeshData& mesh, AssemblyReport* report) {
       d += static_cast<Dart>(n == 2 ? 2 * e.count : layout_of(e.type).dart_vertex.size());
     }
   }
+  // Point groups (VTU point data), for the same selections.
+  Embedding<std::int64_t> point_tag;
+  if (!mesh.point_tags.empty() && mesh.point_tags.size() == mesh.points.size()) {
+    point_tag =
+        map.add_embedding<std::int64_t>("point_tag", vertex_orbit(n), MergePolicy::kKeepFirst, 0);
+  }
   std::vector<std::uint8_t> referenced(mesh.points.size(), 0);
   for (std::size_t k = 0; k < dart_count; ++k) {
     const Dart d = first + static_cast<Dart>(k);
     const std::uint32_t p = dart_point[k];
     position[d] = mesh.points[p];
     point_index[d] = p;
+    if (point_tag) point_tag[d] = mesh.point_tags[p];
     referenced[p] = 1;
   }
   rep.unused_points = static_cast<std::size_t>(std::count(referenced.begin(), referenced.end(), 0));

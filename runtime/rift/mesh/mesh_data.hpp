@@ -47,6 +47,9 @@ struct MeshData {
   /// Physical group of each element (Gmsh physical tag, Medit reference),
   /// parallel to `elements`; empty when the file gives none.
   std::vector<std::int64_t> element_tags;
+  /// Physical group of each point (VTU point data), parallel to `points`;
+  /// empty when the file gives none.
+  std::vector<std::int64_t> point_tags;
 
   void add_element(ElementType type, std::initializer_list<std::uint32_t> vertices,
                    int source_line = 0) {

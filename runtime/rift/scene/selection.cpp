@@ -111,12 +111,17 @@ std::vector<Dart> select_vertices(const GMap& map, const Selection& sel, const V
       break;
     }
     case Selection::Kind::kGroup: {
+      // The vertices of the group's elements, and the points of the group
+      // (VTU point data).
       const Embedding<std::int64_t> tag = map.embedding<std::int64_t>("element_tag");
-      if (!tag) break;  // no groups in this mesh: the caller reports an empty selection
+      const Embedding<std::int64_t> point_tag = map.embedding<std::int64_t>("point_tag");
+      if (!tag && !point_tag) break;  // no groups: the caller reports an empty selection
       const Mark m = map.reserve_mark();
       std::vector<Dart> marked;
       map.for_each_dart([&](Dart d) {
-        if (tag[d] != sel.group || map.is_marked(d, m)) return;
+        const bool in_group =
+            (tag && tag[d] == sel.group) || (point_tag && point_tag[d] == sel.group);
+        if (!in_group || map.is_marked(d, m)) return;
         map.for_each_in_orbit(d, vertex, [&](Dart x) {
           map.mark(x, m);
           marked.push_back(x);

@@ -6,8 +6,8 @@
 //   { vertices = [0, 5] }         point indices of the mesh file
 //   { box = { min = [..], max = [..] } }
 //   { sphere = { center = [..], radius = r } }
-//   { group = 3 }                 elements of a physical group (Gmsh physical
-//                                 tag, Medit reference, VTU cell data)
+//   { group = 3 }                 elements (or VTU points) of a physical group (Gmsh physical
+//                                 tag, Medit reference, VTU cell or point data)
 //   { side = "left", within = 0.05 }   a band along a side
 #pragma once
 
