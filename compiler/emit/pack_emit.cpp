@@ -1,5 +1,7 @@
 #include "emit/pack_emit.hpp"
 
+#include <algorithm>
+
 #include "emit/names.hpp"
 #include "emit/prelude.hpp"
 
@@ -29,6 +31,26 @@ void for_each_criterion(const PackModel& m, F&& f) {
     for (const ast::Criterion& c : file.criteria)
       f(c);
   }
+}
+
+// Appends the embeddings `e` reads (Read and Collect nodes) that `names`
+// does not hold yet, in order of first use.
+void add_embedding_reads(const ast::Expr& e, std::vector<std::string>& names) {
+  if ((e.kind == ast::Expr::Kind::Read || e.kind == ast::Expr::Kind::Collect) && e.embedding &&
+      std::find(names.begin(), names.end(), e.embedding->name.text) == names.end()) {
+    names.push_back(e.embedding->name.text);
+  }
+  for (const ast::ExprPtr& a : e.args) {
+    if (a) add_embedding_reads(*a, names);
+  }
+}
+
+// `{"a", "b"}`: a list of names as C++ initialiser.
+std::string name_list(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names)
+    out += (out.empty() ? "" : ", ") + quote(n);
+  return "{" + out + "}";
 }
 
 template <class F>
@@ -188,23 +210,30 @@ void write_pack_class(Writer& w, const PackModel& m) {
   for (const check::CheckedInteraction& ci : *m.interactions) {
     const ast::Interaction& in = *ci.interaction;
     std::string forces;
+    std::vector<std::string> stores;
     for (const ast::Assign& f : in.forces) {
-      if (forces.find(f.embedding.text) == std::string::npos)
-        forces += (forces.empty() ? "" : ", ") + f.embedding.text;
+      if (std::find(stores.begin(), stores.end(), f.embedding.text) != stores.end()) continue;
+      stores.push_back(f.embedding.text);
+      forces += (forces.empty() ? "" : ", ") + f.embedding.text;
     }
     const std::string about = "support " + orbit_text(in.support.dims) +
                               (forces.empty() ? "" : "; forces stored in " + forces);
     w.open("catalog_.interactions.push_back({" + quote(in.name.text) + ", " +
            quote(in.description.empty() ? about : in.description + " (" + about + ")") + ", {");
     write_param_specs(w, in.params, true);
-    w.close("}, kDimension});");
+    w.close("}, kDimension, " + name_list(stores) + "});");
   }
   for_each_criterion(m, [&](const ast::Criterion& c) {
     const std::string about = "on " + orbit_text(c.orbit.dims) + "; applies rule " + c.rule.text;
     w.open("catalog_.criteria.push_back({" + quote(c.name.text) + ", " +
            quote(c.description.empty() ? about : c.description + " (" + about + ")") + ", {");
     write_param_specs(w, c.params, true);
-    w.close("}, kDimension});");
+    std::vector<std::string> reads;
+    for (const ast::Let& l : c.lets) {
+      if (l.value) add_embedding_reads(*l.value, reads);
+    }
+    if (c.measure) add_embedding_reads(*c.measure, reads);
+    w.close("}, kDimension, {}, " + name_list(reads) + "});");
   });
   w.close();
   w.line();

@@ -5,32 +5,7 @@
 #include <algorithm>
 #include <fstream>
 
-#include "criteria2d.hpp"
-#include "criteria3d.hpp"
-#include "fem2d.hpp"
-#include "fem3d.hpp"
-#include "mass_spring2d.hpp"
-#include "mass_spring3d.hpp"
-#include "topology2d.hpp"
-#include "topology3d.hpp"
-
 namespace rift::experiment_test {
-
-const PackRegistry& standard_packs() {
-  static const PackRegistry packs = [] {
-    PackRegistry r;
-    rift_register_pack_mass_spring2d(r);
-    rift_register_pack_mass_spring3d(r);
-    rift_register_pack_fem2d(r);
-    rift_register_pack_fem3d(r);
-    rift_register_pack_criteria2d(r);
-    rift_register_pack_criteria3d(r);
-    rift_register_pack_topology2d(r);
-    rift_register_pack_topology3d(r);
-    return r;
-  }();
-  return packs;
-}
 
 Scene scene_of(const std::string& name, const std::string& toml) {
   const std::string path = ::testing::TempDir() + "rift_experiment_" + name + ".toml";

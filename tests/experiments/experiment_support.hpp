@@ -12,10 +12,11 @@
 #include "rift/pack/pack.hpp"
 #include "rift/scene/scene_setup.hpp"
 #include "rift/sim/simulation.hpp"
+#include "standard_packs.hpp"
 
 namespace rift::experiment_test {
 
-const PackRegistry& standard_packs();
+using test_support::standard_packs;
 
 /// Writes `toml` to a temporary file named after `name` and reads it.
 Scene scene_of(const std::string& name, const std::string& toml);

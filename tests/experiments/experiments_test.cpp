@@ -81,70 +81,109 @@ TEST(NotchedSheet, TearStartsAtTheTipAndRunsAcrossThePull) {
   EXPECT_GE(ahead, 3);
 }
 
-// A longer notch concentrates more stress: it tears at a smaller pull.
-// DISABLED: measured 6.56 mm (notch to 0.053) vs 6.46 mm (to 0.018) on the
-// 20 x 20 sheet: the pull at first tear barely depends on the notch length
-// with this criterion and mesh; not yet understood (report of branch scenes).
-TEST(NotchedSheet, DISABLED_LongerNotchTearsAtSmallerPull) {
-  auto pull_at_first_tear = [](double notch_end) {
-    auto sim = simulate(scene_of("notch_length", notched_sheet(20, notch_end, 0.1, kStress)));
-    const long steps = steps_to_first_tear(*sim, 4000);
-    EXPECT_LT(steps, 4000);
-    return 0.1 * sim->time();
+// A longer notch tears at a smaller pull, as fracture mechanics says
+// (K = sigma sqrt(pi a) F(a / W)) -- when the specimen is tall enough for the
+// notch to be short beside the grips' distance. In the square sheet above
+// (grips 5 cm from the notch) a notch as long as that distance no longer
+// matters: with fixed grips, a crack longer than the half-height H releases
+// G = E' eps^2 H whatever its length (the "pure shear" specimen of Rivlin and
+// Thomas), and the first tear came at 6.6 mm of pull for both 1.8 and 5.3 cm
+// notches. Hence a strip 3 times as tall as wide (single-edge-notched
+// tension), notches of 1/5 and 1/2 of the width.
+TEST(NotchedSheet, LongerNotchTearsAtSmallerPull) {
+  const int n = 20;
+  const double h = 0.1 / n, speed = 0.2;
+  auto pull_at_first_tear = [&](double notch_end, double tip_x) {
+    const std::string toml =
+        "[mesh]\nsource = \"grid:tri:20x60\"\nscale = [0.1, 0.3, 1]\n"
+        "[simulation]\nintegrator = \"rk4\"\ndt = 4.7e-5\ngravity = [0, 0, 0]\n"
+        "[mass]\ntotal = 0.03\n"
+        "[[notch]]\nfrom = [-0.001, 0.15, 0]\nto = [" +
+        std::to_string(notch_end) +
+        ", 0.15, 0]\n"
+        "[[handle]]\nselect = \"bottom\"\n"
+        "[[handle]]\nselect = \"top\"\nvelocity = [0, " +
+        std::to_string(speed) +
+        ", 0]\n"
+        "[[interaction]]\nname = \"membrane\"\nyoung = 1000.0\npoisson = 0.3\n"
+        "damping = 1e-5\n"
+        "[[criterion]]\nname = \"vertex_stress\"\nthreshold = 60.0\n";
+    auto sim = simulate(scene_of("notch_length", toml));
+    const auto rest = rest_points(*sim);
+    const auto before = free_sides(*sim);
+    EXPECT_LT(steps_to_first_tear(*sim, 3000), 3000);
+    // At the notch's tip, not at the grips.
+    for (const Vec3& c : torn_centres(*sim, before, rest))
+      EXPECT_LT((c - Vec3(tip_x, 0.15, 0)).norm(), 1.5 * h) << "first tear at " << c.transpose();
+    return speed * sim->time();
   };
-  const double short_pull = pull_at_first_tear(0.018);
-  const double long_pull = pull_at_first_tear(0.053);
-  EXPECT_LT(long_pull, 0.9 * short_pull) << "short " << short_pull << " long " << long_pull;
+  const double short_pull = pull_at_first_tear(0.018, 0.02);
+  const double long_pull = pull_at_first_tear(0.048, 0.05);
+  // Measured 9.0 and 5.7 mm (0.64); linear fracture mechanics, with pinned
+  // ends, would give about 0.3: the tip of a 4-element notch is not yet in the
+  // 1 / sqrt(r) field.
+  EXPECT_LT(long_pull, 0.8 * short_pull) << "short " << short_pull << " long " << long_pull;
 }
 
-// Trouser: the legs of a sheet cut half-way pulled apart; the tear goes on
-// along the cut, up from its end.
-// DISABLED: on 16 x 16 the sheet first tears at the edges of the legs'
-// handle bands (their corners concentrate stress), not at the cut's end:
-// the legs need a softer grip (e.g. loads instead of handles) to be fixed.
-TEST(TrouserTear, DISABLED_TheTearFollowsTheCut) {
+// Trouser tear, set up as the standard test: the legs of a cloth cut
+// half-way are gripped over their ends and pulled apart perpendicular to the
+// sheet, the body free. The legs carry plain tension, which goes through the
+// material straddling the cut just past its end: the tear starts there and
+// runs on along the cut. (Pulling the legs apart sideways in the sheet's
+// plane tears at the grips or kinks the crack: docs/experiments.md.)
+TEST(TrouserTear, TheTearFollowsTheCut) {
   const std::string toml = R"(
 [mesh]
-source = "grid:tri:16x16"
-scale = 0.1
+source = "grid:quad:16x16"
 [simulation]
 integrator = "rk4"
-dt = 1.5e-4
+dt = 0.0002
 gravity = [0, 0, 0]
 [mass]
-total = 0.01
+total = 0.1
 [[notch]]
-from = [0.05, -0.001, 0]
-to = [0.05, 0.05, 0]
+from = [0.5, -0.001, 0]
+to = [0.5, 0.5, 0]
 [[handle]]
-select = "top"
+select = { box = { min = [-1, -1, -1], max = [0.49, 0.07, 1] } }
+velocity = [0, 0, -2.0]
 [[handle]]
-select = { box = { min = [-1, -1, -1], max = [0.02, 0.001, 1] } }
-velocity = [-0.1, 0, 0]
-[[handle]]
-select = { box = { min = [0.08, -1, -1], max = [1, 0.001, 1] } }
-velocity = [0.1, 0, 0]
+select = { box = { min = [0.51, -1, -1], max = [2, 0.07, 1] } }
+velocity = [0, 0, 2.0]
 [[interaction]]
-name = "membrane"
-young = 1000.0
-damping = 1e-5
+name = "stretch"
+stiffness = 200.0
+damping = 0.05
+[[interaction]]
+name = "shear"
+stiffness = 100.0
+damping = 0.05
+[[interaction]]
+name = "bend"
+stiffness = 5.0
+damping = 0.02
 [[criterion]]
-name = "vertex_stress"
-threshold = 120.0
+name = "stretch_strain"
+threshold = 0.2
 )";
   auto sim = simulate(scene_of("trouser", toml));
   const auto rest = rest_points(*sim);
   const auto before = free_sides(*sim);
-  ASSERT_LT(steps_to_first_tear(*sim, 3000), 3000);
-  for (int k = 0; k < 300 && sim->tears() < 6; ++k)
+  ASSERT_LT(steps_to_first_tear(*sim, 3000), 3000) << "the legs never tore apart";
+  for (int k = 0; k < 600; ++k)
     sim->step();
+  ASSERT_TRUE(bounded(*sim, 5.0));
   const auto torn = torn_centres(*sim, before, rest);
-  ASSERT_GE(torn.size(), 3u);
-  const double h = 0.1 / 16;
+  ASSERT_GE(torn.size(), 6u);
+  const double h = 1.0 / 16;
+  double highest = 0;
   for (const Vec3& c : torn) {
-    EXPECT_LT(std::abs(c.x() - 0.05), 1.5 * h) << "torn away from the cut at " << c.transpose();
-    EXPECT_GT(c.y(), 0.05 - 1.5 * h) << "torn below the cut's end at " << c.transpose();
+    EXPECT_LT(std::abs(c.x() - 0.5), 1.5 * h) << "torn away from the cut at " << c.transpose();
+    EXPECT_GT(c.y(), 0.5 - 1.5 * h) << "torn below the cut's end at " << c.transpose();
+    highest = std::max(highest, c.y());
   }
+  // The tear ran on: at least three elements past the cut's end.
+  EXPECT_GT(highest, 0.5 + 3 * h);
 }
 
 // A ball shot through a hanging cloth punches a hole and nothing blows up.

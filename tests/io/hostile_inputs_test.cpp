@@ -10,7 +10,6 @@
 
 #include "io_test_support.hpp"
 #include "rift/io/readers.hpp"
-#include "rift/io/text_cursor.hpp"
 #include "shapes.hpp"
 
 namespace rift::test {
@@ -20,7 +19,7 @@ const std::string kTet = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
 
 TEST(HostileInputs, HeadersAnnouncingBillionsOfEntries) {
   // The data shows three nodes: the claim is reported when the data runs out,
-  // and what is reserved before that is bounded by the file's size.
+  // and nothing is reserved for it before (reservation_test.cpp).
   expect_broken("nodes.msh", kTet + "$Nodes\n2147483647\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$EndNodes\n", 9,
                 "section $Nodes announces 2147483647 nodes but holds 3");
   expect_broken("too_many.msh", kTet + "$Nodes\n2147483648\n", 5,
@@ -43,14 +42,6 @@ TEST(HostileInputs, HeadersAnnouncingBillionsOfEntries) {
                 "<DataArray NumberOfComponents=\"3\" format=\"ascii\">0 0 0</DataArray>\n"
                 "</Points></Piece></UnstructuredGrid></VTKFile>\n",
                 3, "DataArray Points (line 3) holds 3 values, 6000000000 expected");
-}
-
-TEST(HostileInputs, ReserveIsBoundedByWhatIsLeftOfTheFile) {
-  const io::TextCursor in("x", std::string(1000, ' '));
-  EXPECT_LE(in.reserve_limit(2'000'000'000, 6), 1000u / 6 + 1);
-  const std::string big(100'000'000, ' ');
-  EXPECT_LE(io::TextCursor("x", big).reserve_limit(2'000'000'000, 2), io::TextCursor::kMaxReserve);
-  EXPECT_EQ(io::TextCursor("x", big).reserve_limit(10, 2), 10u);
 }
 
 TEST(HostileInputs, NegativeAndOverflowingIndices) {

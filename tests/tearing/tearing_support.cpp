@@ -2,47 +2,25 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <tuple>
 
-#include "criteria2d.hpp"
-#include "criteria3d.hpp"
-#include "fem2d.hpp"
-#include "fem3d.hpp"
-#include "mass_spring2d.hpp"
-#include "mass_spring3d.hpp"
 #include "rift/scene/scene.hpp"
 #include "rift/scene/scene_setup.hpp"
-#include "topology2d.hpp"
-#include "topology3d.hpp"
 
 namespace rift::tearing_test {
 
-const PackRegistry& standard_packs() {
-  static const PackRegistry packs = [] {
-    PackRegistry r;
-    rift_register_pack_mass_spring2d(r);
-    rift_register_pack_mass_spring3d(r);
-    rift_register_pack_fem2d(r);
-    rift_register_pack_fem3d(r);
-    rift_register_pack_criteria2d(r);
-    rift_register_pack_criteria3d(r);
-    rift_register_pack_topology2d(r);
-    rift_register_pack_topology3d(r);
-    return r;
-  }();
-  return packs;
-}
-
-std::unique_ptr<Simulation> simulate(const std::string& name, const std::string& toml) {
+std::unique_ptr<Simulation> simulate(const std::string& name, const std::string& toml,
+                                     bool check_each_rewrite, SetupReport* report) {
   const std::string path = ::testing::TempDir() + "rift_tearing_" + name + ".toml";
   std::ofstream(path) << toml;
   const Scene scene = read_scene(path, standard_packs().catalog());
   SetupOptions options;
-  options.check_each_rewrite = true;
-  return build_simulation(scene, standard_packs(), options);
+  options.check_each_rewrite = check_each_rewrite;
+  return build_simulation(scene, standard_packs(), options, report);
 }
 
 std::string static_scene(const std::string& mesh, const std::string& scale, double total_mass,
@@ -122,6 +100,13 @@ void store_forces(Simulation& sim) {
   const ForceInput in{sim.position().values().data(), sim.velocity().values().data()};
   for (const auto& model : sim.force_models())
     model->add_forces(in, f.data(), true);
+  // The total internal force per vertex, where a pack declares it (as the
+  // simulation stores it: same orbit as position, so the same slots).
+  if (Embedding<Vec3> total = sim.map().embedding<Vec3>(embedding_names::kVertexForce)) {
+    std::vector<Vec3>& out = total.values();
+    std::copy(f.begin(), f.begin() + static_cast<std::ptrdiff_t>(std::min(f.size(), out.size())),
+              out.begin());
+  }
 }
 
 std::vector<Dart> apply_first_candidate(Simulation& sim, std::size_t c) {

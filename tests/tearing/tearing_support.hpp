@@ -9,16 +9,19 @@
 
 #include "rift/gmap/gmap.hpp"
 #include "rift/pack/pack.hpp"
+#include "rift/scene/scene_setup.hpp"
 #include "rift/sim/simulation.hpp"
+#include "standard_packs.hpp"
 
 namespace rift::tearing_test {
 
-/// Every standard pack (rules/CMakeLists.txt), registered once.
-const PackRegistry& standard_packs();
+using test_support::standard_packs;
 
 /// A simulation of the scene `toml` (written to a temporary file named after
-/// `name`), checking the G-map after every rewrite.
-std::unique_ptr<Simulation> simulate(const std::string& name, const std::string& toml);
+/// `name`), checking the G-map after every rewrite unless told otherwise
+/// (a test that checks it itself).
+std::unique_ptr<Simulation> simulate(const std::string& name, const std::string& toml,
+                                     bool check_each_rewrite = true, SetupReport* report = nullptr);
 
 /// The TOML of a static scene: no gravity, a tiny dt (one step barely moves
 /// anything), `total_mass` spread over `mesh` scaled by `scale`, then the
@@ -48,7 +51,8 @@ std::vector<Vec3> split_positions(const Simulation& sim);
 std::vector<Vec3> element_centres(const Simulation& sim);
 
 /// Every interaction computes and stores its forces at the current state,
-/// as the first stage of a step does (criteria read them).
+/// and vertex_force their sum where a pack declares it, as the first stage
+/// of a step does (criteria read them). No external forces.
 void store_forces(Simulation& sim);
 
 /// The first candidate of criterion `c`, applied by hand as the simulation

@@ -267,6 +267,7 @@ class GmshReader {
     }
     if (!node_index_.insert(tag, static_cast<std::uint32_t>(mesh_.points.size())))
       in_.fail(line, "node " + std::to_string(tag) + " is defined twice");
+    grow_for_next_entry(mesh_.points, announced_nodes_);
     mesh_.points.push_back(p);
   }
 
@@ -283,7 +284,7 @@ class GmshReader {
 
   void read_nodes_v12(const Token& header) {
     const std::size_t n = in_.count("the number of nodes");
-    mesh_.points.reserve(in_.reserve_limit(n, 6));
+    announced_nodes_ = n;
     for (std::size_t k = 0; k < n; ++k) {
       const Token tag = entry(header, k, n, "nodes");
       const Vec3 p = coordinates(tag.line, in_.to_integer(tag, "a node tag"));
@@ -298,7 +299,7 @@ class GmshReader {
     const std::size_t n = in_.count("the number of nodes");
     in_.integer("the smallest node tag");
     in_.integer("the largest node tag");
-    mesh_.points.reserve(in_.reserve_limit(n, 6));
+    announced_nodes_ = n;
     std::size_t done = 0;
     std::vector<Token> tags;
     for (std::size_t b = 0; b < blocks; ++b) {
@@ -562,7 +563,7 @@ class GmshReader {
     const std::size_t n = in_.count("the number of nodes");
     in_.skip_line();
     check_room(n, 4 + 3 * 8, header, "nodes");
-    mesh_.points.reserve(in_.reserve_limit(n, 28));
+    announced_nodes_ = n;
     for (std::size_t k = 0; k < n; ++k) {
       const std::int64_t tag = int32("a node tag");
       add_node(tag, in_.line(), binary_point(tag));
@@ -610,7 +611,7 @@ class GmshReader {
     size_value("the smallest node tag");
     size_value("the largest node tag");
     check_room(n, static_cast<std::size_t>(size_bytes_) + 24, header, "nodes");
-    mesh_.points.reserve(in_.reserve_limit(n, 32));
+    announced_nodes_ = n;
     std::size_t done = 0;
     std::vector<std::int64_t> tags;
     for (std::size_t b = 0; b < blocks; ++b) {
@@ -693,6 +694,9 @@ class GmshReader {
   MeshData mesh_;
   ElementCollector elements_;
   TagIndex node_index_;
+  // The count of the $Nodes header: mesh_.points grows with the nodes read,
+  // never past it (grow_for_next_entry), so a lying count reserves nothing.
+  std::size_t announced_nodes_ = 0;
   int elements_line_ = 0;
   bool saw_nodes_ = false;
   // Physical group of the element being read (v1, v2: its first tag; v4:

@@ -128,7 +128,6 @@ class MeditReader {
     if (dimension_ == 0) in_.fail(key.line, "Vertices before Dimension");
     if (!mesh_.points.empty()) in_.fail(key.line, "a second Vertices section");
     const std::size_t n = in_.count("the number of vertices");
-    mesh_.points.reserve(in_.reserve_limit(n, 6));
     for (std::size_t k = 0; k < n; ++k) {
       Vec3 p = Vec3::Zero();
       for (int c = 0; c < dimension_; ++c) {
@@ -137,6 +136,7 @@ class MeditReader {
         p[c] = in_.to_coordinate(value(key, k, n), what);
       }
       in_.to_integer(value(key, k, n), "the reference of vertex " + std::to_string(k + 1));
+      grow_for_next_entry(mesh_.points, n);
       mesh_.points.push_back(p);
     }
   }

@@ -135,7 +135,6 @@ class VtkLegacyReader {
     if (!mesh_.points.empty()) in_.fail(key.line, "a second POINTS section");
     const std::size_t n = in_.count("the number of points");
     in_.expect("the data type of the points");
-    mesh_.points.reserve(in_.reserve_limit(n, 6));
     for (std::size_t k = 0; k < n; ++k) {
       Vec3 p;
       for (int c = 0; c < 3; ++c) {
@@ -143,6 +142,7 @@ class VtkLegacyReader {
             value(key, 3 * k + static_cast<std::size_t>(c), 3 * n),
             "coordinate " + std::to_string(c + 1) + " of point " + std::to_string(k));
       }
+      grow_for_next_entry(mesh_.points, n);
       mesh_.points.push_back(p);
     }
   }
@@ -153,7 +153,6 @@ class VtkLegacyReader {
     const std::size_t n = in_.count("the number of cells");
     const std::size_t size = in_.count("the size of the cell list");
     if (same_word(in_.peek().text, "OFFSETS")) return read_offset_cells(key, n, size);
-    cells.connectivity.reserve(in_.reserve_limit(size));
     std::size_t used = 0;
     for (std::size_t c = 0; c < n; ++c) {
       const Token count_token = value(key, used, size);
@@ -164,6 +163,7 @@ class VtkLegacyReader {
                                        " values, but its cells need more");
       }
       for (std::size_t k = 0; k < count; ++k) {
+        grow_for_next_entry(cells.connectivity, size);
         cells.connectivity.push_back(
             vtk_point_id(in_, value(key, used + 1 + k, size), mesh_.points.size(), c));
       }
@@ -209,7 +209,6 @@ class VtkLegacyReader {
       in_.fail(conn.line, "expected CONNECTIVITY, found " + quote_text(conn.text));
     }
     in_.expect("the data type of the connectivity");
-    cells.connectivity.reserve(in_.reserve_limit(size));
     cells.lines.assign(offsets - 1, 0);
     std::size_t cell = 0;
     for (std::size_t k = 0; k < size; ++k) {
@@ -217,6 +216,7 @@ class VtkLegacyReader {
         ++cell;
       const Token t = value(conn, k, size);
       if (k == cells.offsets[cell]) cells.lines[cell] = t.line;
+      grow_for_next_entry(cells.connectivity, size);
       cells.connectivity.push_back(vtk_point_id(in_, t, mesh_.points.size(), cell));
     }
     for (std::size_t c = 0; c < cells.size(); ++c) {

@@ -366,9 +366,10 @@ class VtuReader {
     if (!array) return groups;
     ArrayValues values =
         values_of(array, std::string(data.name()) + " '" + array.attribute("Name").value() + "'");
-    groups.reserve(values.cursor().reserve_limit(count));
-    for (std::size_t k = 0; k < count; ++k)
+    for (std::size_t k = 0; k < count; ++k) {
+      grow_for_next_entry(groups, count);
       groups.push_back(values.integer(k, count, "a group"));
+    }
     values.no_more(count);
     return groups;
   }
@@ -417,7 +418,6 @@ class VtuReader {
     // VTU offsets are end offsets: cell c ends at offsets[c].
     ArrayValues offs = values_of(offsets_array, "offsets");
     std::vector<std::size_t> ends;
-    ends.reserve(offs.cursor().reserve_limit(n_cells));
     for (std::size_t c = 0; c < n_cells; ++c) {
       const std::int64_t end = offs.integer(c, n_cells, "an offset");
       if (end < 0 || static_cast<std::size_t>(end) < (ends.empty() ? 0 : ends.back())) {
@@ -425,6 +425,7 @@ class VtuReader {
                                                  std::to_string(c) +
                                                  " is smaller than the one before");
       }
+      grow_for_next_entry(ends, n_cells);
       ends.push_back(static_cast<std::size_t>(end));
     }
     offs.no_more(n_cells);

@@ -227,9 +227,4 @@ void TextCursor::fail(int line, const std::string& problem) const {
   throw MeshError(source_, line, problem);
 }
 
-std::size_t TextCursor::reserve_limit(std::size_t announced, std::size_t min_entry_bytes) const {
-  const std::size_t left = text_.size() - std::min(pos_, text_.size());
-  return std::min({announced, left / std::max<std::size_t>(min_entry_bytes, 1) + 1, kMaxReserve});
-}
-
 }  // namespace rift::io

@@ -5,10 +5,12 @@
 // text, so line tracking lives here once.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "rift/mesh/mesh_data.hpp"
 #include "rift/mesh/mesh_error.hpp"
@@ -77,13 +79,6 @@ class TextCursor {
 
   /// Throws MeshError(source, line, problem).
   [[noreturn]] void fail(int line, const std::string& problem) const;
-  /// Upper bound for reserve() calls so that a lying count cannot exhaust
-  /// memory: what is left of the file cannot hold more than one entry per
-  /// `min_entry_bytes` bytes, and beyond kMaxReserve entries the vector grows as
-  /// the data is read (geometric growth keeps that linear), so memory follows
-  /// the data actually present, not the header's claim.
-  std::size_t reserve_limit(std::size_t announced, std::size_t min_entry_bytes = 2) const;
-  static constexpr std::size_t kMaxReserve = std::size_t{1} << 20;
 
  private:
   void skip_blanks(bool cross_lines);
@@ -98,5 +93,17 @@ class TextCursor {
 
 /// Quotes a token for a message, shortened if it is long (binary garbage).
 std::string quote_text(std::string_view text);
+
+/// Makes room for one more entry of a section whose header announced
+/// `announced` entries. The capacity follows the entries actually read (it
+/// doubles, from 256, and never passes the announced count): a header that
+/// claims billions allocates nothing before its data is there and at most
+/// twice what the data holds, and an honest header ends at its exact size.
+template <class T>
+void grow_for_next_entry(std::vector<T>& entries, std::size_t announced) {
+  if (entries.size() < entries.capacity()) return;
+  const std::size_t doubled = std::max<std::size_t>(2 * entries.size(), 256);
+  entries.reserve(std::max(entries.size() + 1, std::min(doubled, announced)));
+}
 
 }  // namespace rift::io

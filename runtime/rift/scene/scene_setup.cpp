@@ -9,6 +9,7 @@
 #include "rift/core/input_error.hpp"
 #include "rift/io/read_mesh.hpp"
 #include "rift/mesh/generators.hpp"
+#include "rift/scene/inert_components.hpp"
 #include "rift/scene/notch.hpp"
 
 namespace rift {
@@ -306,18 +307,7 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
   }
   sim->initialise();
   rep.total_mass = sim->total_mass();
-  for (const auto& model : sim->force_models()) {
-    if (model->active_matches() > 0) continue;
-    std::string criteria;
-    for (const ComponentUse& u : scene.criteria)
-      criteria += (criteria.empty() ? "" : ", ") + u.name;
-    rep.warnings.push_back(
-        "interaction '" + model->name() + "' matches no element of the mesh '" + scene.mesh.source +
-        "' (its pattern needs other elements): it exerts no force" +
-        (criteria.empty()
-             ? std::string()
-             : ", and criteria that read its forces (of: " + criteria + ") cannot fire"));
-  }
+  rep.warnings = inert_component_warnings(scene, packs, *sim);
   return sim;
 }
 

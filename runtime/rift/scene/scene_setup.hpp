@@ -18,9 +18,10 @@ struct SetupReport {
   std::size_t held_vertices = 0;  ///< by [[handle]] tables
   std::size_t notch_cuts = 0;     ///< edges (2D) or faces (3D) separated by notches
   Real total_mass = 0;
-  /// Components that cannot act on this mesh (an interaction whose pattern
-  /// matches no element, such as `corotational`, a tetrahedron, on hexahedra):
-  /// its forces stay zero, and so do the criteria that read them.
+  /// Components that cannot act on this mesh (inert_components.hpp): an
+  /// interaction whose pattern matches no element, such as `corotational`, a
+  /// tetrahedron, on hexahedra, and criteria that read only forces no
+  /// interaction of the scene stores here.
   std::vector<std::string> warnings;
 };
 

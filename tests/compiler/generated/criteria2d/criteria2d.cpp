@@ -1191,38 +1191,38 @@ Pack::Pack(const Params& params) : params_(params), description_("2D tearing cri
   embeddings_.push_back({"f_membrane", rift::ValueType::kVec3, rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   catalog_.criteria.push_back({"stretch_strain", "A stretch spring whose strain passes the threshold removes the elements of its edge (§5.1, §4.4). (on <0>; applies rule remove_edge_elements)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(0.2)), "strain (l - l0) / l0", true, false},
-  }, kDimension});
+  }, kDimension, {}, {"position", "stretch_rest"}});
   catalog_.criteria.push_back({"stretch_force", "A stretch spring whose force passes the threshold removes the elements of its edge (§5.1, §4.4). (on <0>; applies rule remove_edge_elements)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N", true, false},
-  }, kDimension});
+  }, kDimension, {}, {"f_stretch"}});
   catalog_.criteria.push_back({"spring_split", "A stretch spring whose force passes the threshold splits its extremities, perpendicular to the force (§5.1, Fig. 9b). (on <0>; applies rule split_ends)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N", true, false},
     {"both_ends", rift::ValueType::kBool, rift::Value(rift::Bool(true)), "split both extremities (else the first only)", false, false},
-  }, kDimension});
+  }, kDimension, {}, {"f_stretch"}});
   catalog_.criteria.push_back({"shear_force", "A linear shear spring whose force passes the threshold removes its face (§5.1). (on <0,1>; applies rule remove_element)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N", true, false},
-  }, kDimension});
+  }, kDimension, {}, {"f_shear"}});
   catalog_.criteria.push_back({"bend_force", "A bending spring (linear or angular) whose force passes the threshold separates its two faces (§5.1). (on <2>; applies rule separate_faces)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N", true, false},
-  }, kDimension});
+  }, kDimension, {}, {"f_bend", "f_abend"}});
   catalog_.criteria.push_back({"element_stress", "A co-rotational triangle whose largest principal stress passes the threshold is removed (§5.1). (on <0,1>; applies rule remove_element)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(100.0)), "N/m", true, false},
-  }, kDimension});
+  }, kDimension, {}, {"position", "f_membrane"}});
   catalog_.criteria.push_back({"interaction_force", "The largest force a single interaction exerts on a vertex passes the threshold: the vertex splits perpendicular to it (§5.1, Fig. 9a). (on <1,2>; applies rule split_along_largest_force)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N", true, false},
-  }, kDimension});
+  }, kDimension, {}, {"f_membrane", "f_shear", "f_stretch"}});
   catalog_.criteria.push_back({"vertex_stress", "The vertex stress tensor (mass-weighted mean of its elements', eq. 1-2) has an eigenvalue past the threshold: split perpendicular to its eigenvector (§5.2). (on <1,2>; applies rule split_vertex)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(100.0)), "N/m", true, false},
-  }, kDimension});
+  }, kDimension, {}, {"position", "corner_mass", "f_membrane"}});
   catalog_.criteria.push_back({"vertex_sum", "The sum of the internal forces on a vertex passes the threshold: split perpendicular to it (§5.2, Fig. 9c). (on <1,2>; applies rule split_vertex)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N", true, false},
-  }, kDimension});
+  }, kDimension, {}, {"vertex_force"}});
   catalog_.criteria.push_back({"atomic_edge", "Atomic edge criterion, eq. (4): |(f1 - f2) . n| past the threshold, both faces contracting, separates them (§5.3, Fig. 9e). (on <0,2>; applies rule separate_faces)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N", true, false},
-  }, kDimension});
+  }, kDimension, {}, {"position", "f_stretch", "f_shear", "f_membrane"}});
   catalog_.criteria.push_back({"global_edge", "Global edge criterion, eq. (5): |(fA + fB) . n| past the threshold separates the faces of the edge (§5.3, Fig. 9d). (on <0,2>; applies rule separate_faces)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(0.5)), "N", true, false},
-  }, kDimension});
+  }, kDimension, {}, {"position", "vertex_force"}});
 }
 
 std::vector<std::string> Pack::rule_names() const {

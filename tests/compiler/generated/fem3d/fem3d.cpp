@@ -835,7 +835,7 @@ Pack::Pack(const Params& params) : params_(params), description_("Co-rotational 
     {"young", rift::ValueType::kReal, rift::Value(rift::Real(100000.0)), "Pa", true, false},
     {"poisson", rift::ValueType::kReal, rift::Value(rift::Real(0.3)), "", false, true},
     {"damping", rift::ValueType::kReal, rift::Value(rift::Real(0.0)), "s (stiffness-proportional)", false, true},
-  }, kDimension});
+  }, kDimension, {"f_fem"}});
 }
 
 std::vector<std::string> Pack::rule_names() const {

@@ -2491,15 +2491,15 @@ Pack::Pack(const Params& params) : params_(params), description_("Mass-spring in
   catalog_.interactions.push_back({"stretch", "Damped stretching spring on every half-edge <0> (atomic: one per face of each volume); forces on darts. (support <0>; forces stored in f_stretch)", {
     {"stiffness", rift::ValueType::kReal, rift::Value(rift::Real(60.0)), "N/m", true, false},
     {"damping", rift::ValueType::kReal, rift::Value(rift::Real(0.1)), "N s/m", false, true},
-  }, kDimension});
+  }, kDimension, {"f_stretch"}});
   catalog_.interactions.push_back({"shear", "Damped linear shear springs on the two diagonals of every quad face <0,1> of every volume; forces on face corners <1>. (support <0,1>; forces stored in f_shear)", {
     {"stiffness", rift::ValueType::kReal, rift::Value(rift::Real(43.0)), "N/m", true, false},
     {"damping", rift::ValueType::kReal, rift::Value(rift::Real(0.1)), "N s/m", false, true},
-  }, kDimension});
+  }, kDimension, {"f_shear"}});
   catalog_.interactions.push_back({"volume_shear", "Damped 3D shear springs on the four body diagonals of every hexahedron <0,1,2>; forces on volume corners <1,2>. (support <0,1,2>; forces stored in f_volume_shear)", {
     {"stiffness", rift::ValueType::kReal, rift::Value(rift::Real(43.0)), "N/m", true, false},
     {"damping", rift::ValueType::kReal, rift::Value(rift::Real(0.1)), "N s/m", false, true},
-  }, kDimension});
+  }, kDimension, {"f_volume_shear"}});
 }
 
 std::vector<std::string> Pack::rule_names() const {
