@@ -81,6 +81,31 @@ TEST(NotchedSheet, TearStartsAtTheTipAndRunsAcrossThePull) {
   EXPECT_GE(ahead, 3);
 }
 
+// Resolution independence: the notched sheet at 20 x 20 and 40 x 40 starts
+// tearing at the same pull with Griffith's criterion at the mesh scale
+// (vertex_energy: the strain energy of a vertex's share of its triangles per
+// unit of its size, which tends to K^2 / E at a crack tip whatever the element
+// size). A stress criterion would not: the tip elements' stress grows like
+// 1 / sqrt(h), so vertex_stress starts the crack at 0.70 of the pull on the
+// finer mesh (docs/experiments.md, with the force criteria's 1.3 the other way;
+// 40 x 40 against 80 x 80 is measured there too: minutes, too slow for a test).
+TEST(ResolutionIndependence, GriffithCriterionStartsTheCrackAtTheSamePull) {
+  auto pull_at_first_tear = [](int n) {
+    const std::string criterion = "[[criterion]]\nname = \"vertex_energy\"\ntoughness = 0.02\n";
+    auto sim = simulate(scene_of("resolution", notched_sheet(n, 0.033, 0.1, criterion)));
+    const auto rest = rest_points(*sim);
+    const auto before = free_sides(*sim);
+    EXPECT_LT(steps_to_first_tear(*sim, 20000), 20000);
+    // At the notch's tip (x = 0.035 at 20 x 20, 0.0325 at 40 x 40).
+    for (const Vec3& c : torn_centres(*sim, before, rest))
+      EXPECT_LT((c - Vec3(0.034, 0.05, 0)).norm(), 2.5 * 0.1 / n)
+          << "first tear at " << c.transpose();
+    return 0.1 * sim->time();
+  };
+  const double coarse = pull_at_first_tear(20), fine = pull_at_first_tear(40);
+  EXPECT_NEAR(fine / coarse, 1.0, 0.15) << "20 x 20: " << coarse << ", 40 x 40: " << fine;
+}
+
 // A longer notch tears at a smaller pull, as fracture mechanics says
 // (K = sigma sqrt(pi a) F(a / W)) -- when the specimen is tall enough for the
 // notch to be short beside the grips' distance. In the square sheet above
@@ -299,8 +324,8 @@ TEST(Liver, TearsNearTheGrasp) {
   const std::string toml = "[mesh]\nsource = \"" + mesh + R"("
 scale = 0.035
 [simulation]
-integrator = "rk4"
-dt = 2e-4
+integrator = "implicit_euler"
+dt = 2e-3
 gravity = [0, 0, 0]
 [mass]
 density = 1060.0
@@ -321,7 +346,9 @@ threshold = 3500.0
   auto sim = simulate(scene_of("liver", toml));
   const auto rest = rest_points(*sim);
   const auto before = free_sides(*sim);
-  ASSERT_LT(steps_to_first_tear(*sim, 3000), 3000) << "the liver never tore";
+  // Backward Euler at 10 times rk4's step (the example's integrator): the
+  // first tear comes after about 175 steps (0.35 s, as with rk4 at 0.2 ms).
+  ASSERT_LT(steps_to_first_tear(*sim, 300), 300) << "the liver never tore";
   ASSERT_TRUE(bounded(*sim, 2.0));
   const auto torn = torn_centres(*sim, before, rest);
   ASSERT_FALSE(torn.empty());

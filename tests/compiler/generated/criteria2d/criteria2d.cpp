@@ -348,6 +348,15 @@ namespace {
     return p;
   }
 
+  [[maybe_unused]] VertexEnergyParams VertexEnergyParams_from([[maybe_unused]] const rift::ComponentUse& use) {
+    VertexEnergyParams p;
+    if (auto it = use.params.find("toughness"); it != use.params.end()) {
+      p.toughness = value_as<rift::Real>(it->second.value, "criterion 'vertex_energy': parameter 'toughness'");
+    }
+    if (!(p.toughness > 0)) throw std::invalid_argument("criterion 'vertex_energy': parameter 'toughness' must be > 0");
+    return p;
+  }
+
   [[maybe_unused]] VertexSumParams VertexSumParams_from([[maybe_unused]] const rift::ComponentUse& use) {
     VertexSumParams p;
     if (auto it = use.params.find("threshold"); it != use.params.end()) {
@@ -387,6 +396,16 @@ void declare_embeddings(rift::GMap& g) {
     g.add_embedding<rift::Real>("stretch_rest", rift::Orbit{0}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
   } else if (g.find_column("stretch_rest")->type() != rift::ValueType::kReal || !(g.attachment_of("stretch_rest")->orbit() == rift::Orbit{0})) {
     throw std::invalid_argument("the map's embedding 'stretch_rest' is not the pack's real on <0>");
+  }
+  if (!g.has_embedding("membrane_mu")) {
+    g.add_embedding<rift::Real>("membrane_mu", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+  } else if (g.find_column("membrane_mu")->type() != rift::ValueType::kReal || !(g.attachment_of("membrane_mu")->orbit() == rift::Orbit{0, 1})) {
+    throw std::invalid_argument("the map's embedding 'membrane_mu' is not the pack's real on <0,1>");
+  }
+  if (!g.has_embedding("membrane_lambda")) {
+    g.add_embedding<rift::Real>("membrane_lambda", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+  } else if (g.find_column("membrane_lambda")->type() != rift::ValueType::kReal || !(g.attachment_of("membrane_lambda")->orbit() == rift::Orbit{0, 1})) {
+    throw std::invalid_argument("the map's embedding 'membrane_lambda' is not the pack's real on <0,1>");
   }
   if (!g.has_embedding("side")) {
     g.add_embedding<rift::Bool>("side", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Bool(false));
@@ -969,6 +988,45 @@ bool VertexStressCriterion::apply(rift::GMap& g, const rift::TearCandidate& cand
   return apply_split_vertex(g, hooks, args, pack_, &touched);
 }
 
+// ---- criterion 'vertex_energy' on rift::Orbit{1, 2}
+
+void VertexEnergyCriterion::initialise(rift::GMap& g) {
+  rift::packs::criteria2d::declare_embeddings(g);
+  e_corner_mass = require_embedding<rift::Real>(g, "corner_mass", "criterion 'vertex_energy'");
+  e_f_membrane = require_embedding<rift::Vec3>(g, "f_membrane", "criterion 'vertex_energy'");
+  e_membrane_lambda = require_embedding<rift::Real>(g, "membrane_lambda", "criterion 'vertex_energy'");
+  e_membrane_mu = require_embedding<rift::Real>(g, "membrane_mu", "criterion 'vertex_energy'");
+  e_position = require_embedding<rift::Vec3>(g, "position", "criterion 'vertex_energy'");
+}
+
+void VertexEnergyCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
+  g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart d_v) {
+    rift::throw_if_interrupted();
+    [[maybe_unused]] const rift::Real l_stored = [&]() { rift::Real acc0 = rift::Real(0); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&]([[maybe_unused]] rift::Dart d_f) { rift::throw_if_interrupted(); acc0 = rift::Real(acc0 + (((e_membrane_mu[d_f] > 0.0) && ((rift::Vec3((rift::Vec3(e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f])))).norm() > 0.0)) ? rift::Real(((((rift::Mat3(rift::Mat3([&]() { rift::Mat3 acc2 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc2 = rift::Mat3(acc2 + rift::Mat3((e_f_membrane[d_c]) * (e_position[d_c]).transpose())); }); return acc2; }() + rift::Mat3(([&]() { rift::Mat3 acc3 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc3 = rift::Mat3(acc3 + rift::Mat3((e_f_membrane[d_c]) * (e_position[d_c]).transpose())); }); return acc3; }()).transpose())) * rift::Mat3([&]() { rift::Mat3 acc4 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc4 = rift::Mat3(acc4 + rift::Mat3((e_f_membrane[d_c]) * (e_position[d_c]).transpose())); }); return acc4; }() + rift::Mat3(([&]() { rift::Mat3 acc5 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc5 = rift::Mat3(acc5 + rift::Mat3((e_f_membrane[d_c]) * (e_position[d_c]).transpose())); }); return acc5; }()).transpose())))).trace() / (16.0 * e_membrane_mu[d_f])) - ((e_membrane_lambda[d_f] * std::pow((2.0 * ([&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc1 = rift::Mat3(acc1 + rift::Mat3((e_f_membrane[d_c]) * (e_position[d_c]).transpose())); }); return acc1; }()).trace()), 2.0)) / ((32.0 * e_membrane_mu[d_f]) * (e_membrane_lambda[d_f] + e_membrane_mu[d_f])))) / (1.5 * (rift::Vec3((rift::Vec3(e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f])))).norm()))) : rift::Real(0.0))); }); return acc0; }();
+    [[maybe_unused]] const rift::Real l_share = [&]() { rift::Real acc0 = rift::Real(0); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&]([[maybe_unused]] rift::Dart d_f) { rift::throw_if_interrupted(); acc0 = rift::Real(acc0 + ((rift::Vec3((rift::Vec3(e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f])))).norm() / 6.0)); }); return acc0; }();
+    [[maybe_unused]] const rift::Mat3 l_weighted = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&]([[maybe_unused]] rift::Dart d_f) { rift::throw_if_interrupted(); acc0 = rift::Mat3(acc0 + (((rift::Vec3((rift::Vec3(e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f])))).norm() > 0.0) ? rift::Mat3(rift::Mat3(((collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}) * 2.0) / (rift::Vec3((rift::Vec3(e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f])))).norm()) * [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc1 = rift::Mat3(acc1 + rift::Mat3((e_f_membrane[d_c]) * (e_position[d_c]).transpose())); }); return acc1; }())) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()))); }); return acc0; }();
+    const rift::Real measure = ((l_share > 0.0) ? rift::Real((l_stored / std::sqrt(l_share))) : rift::Real(0.0));
+    const rift::Real threshold = p_.toughness;
+    if (!(measure > threshold)) return;
+    rift::TearCandidate c;
+    c.at = d_v;
+    c.measure = measure - threshold;
+    c.normal = symmetric_max_eigenvector(rift::Mat3((-0.5) * rift::Mat3(l_weighted + rift::Mat3((l_weighted).transpose()))));
+    c.point = e_position[d_v];
+    out.push_back(c);
+  });
+}
+
+bool VertexEnergyCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
+  if (!g.is_alive(candidate.at)) return false;
+  [[maybe_unused]] const rift::Dart d_v = candidate.at;
+  split_vertex_args args;
+  args.normal = candidate.normal;
+  args.point = candidate.point;
+  const rift::Dart hooks[] = {d_v};
+  return apply_split_vertex(g, hooks, args, pack_, &touched);
+}
+
 // ---- criterion 'vertex_sum' on rift::Orbit{1, 2}
 
 void VertexSumCriterion::initialise(rift::GMap& g) {
@@ -1176,6 +1234,8 @@ bool SplitEndsRule::apply(rift::GMap& g, std::span<const rift::Dart> hooks, std:
 Pack::Pack(const Params& params) : params_(params), description_("2D tearing criteria (§5): atomic, cumulative and element separation, with their rewrites.") {
   embeddings_.push_back({"vertex_force", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"stretch_rest", rift::ValueType::kReal, rift::Orbit{0}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
+  embeddings_.push_back({"membrane_mu", rift::ValueType::kReal, rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
+  embeddings_.push_back({"membrane_lambda", rift::ValueType::kReal, rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"side", rift::ValueType::kBool, rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Bool(false))});
   embeddings_.push_back({"position", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3::Zero()))});
   embeddings_.push_back({"velocity", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
@@ -1214,6 +1274,9 @@ Pack::Pack(const Params& params) : params_(params), description_("2D tearing cri
   catalog_.criteria.push_back({"vertex_stress", "The vertex stress tensor (mass-weighted mean of its elements', eq. 1-2) has an eigenvalue past the threshold: split perpendicular to its eigenvector (§5.2). (on <1,2>; applies rule split_vertex)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(100.0)), "N/m", true, false},
   }, kDimension, {}, {"position", "corner_mass", "f_membrane"}});
+  catalog_.criteria.push_back({"vertex_energy", "Griffith at the mesh scale: the strain energy of a vertex's share of its membrane triangles per unit of its size passes the toughness: split perpendicular to the largest principal stress. (on <1,2>; applies rule split_vertex)", {
+    {"toughness", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N/m (energy release rate times thickness)", true, false},
+  }, kDimension, {}, {"membrane_mu", "position", "f_membrane", "membrane_lambda", "corner_mass"}});
   catalog_.criteria.push_back({"vertex_sum", "The sum of the internal forces on a vertex passes the threshold: split perpendicular to it (§5.2, Fig. 9c). (on <1,2>; applies rule split_vertex)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N", true, false},
   }, kDimension, {}, {"vertex_force"}});
@@ -1262,6 +1325,9 @@ std::unique_ptr<rift::Criterion> Pack::make_criterion(const rift::ComponentUse& 
   }
   if (use.name == "vertex_stress") {
     return std::make_unique<VertexStressCriterion>(VertexStressParams_from(use), params_);
+  }
+  if (use.name == "vertex_energy") {
+    return std::make_unique<VertexEnergyCriterion>(VertexEnergyParams_from(use), params_);
   }
   if (use.name == "vertex_sum") {
     return std::make_unique<VertexSumCriterion>(VertexSumParams_from(use), params_);

@@ -260,6 +260,33 @@ class VertexStressCriterion final : public rift::Criterion {
 };
 
 /// Parameters given by the scene.
+struct VertexEnergyParams {
+  rift::Real toughness = 1.0;  ///< N/m (energy release rate times thickness)
+};
+/// Criterion 'vertex_energy': applies rule 'split_vertex' where its measure passes.
+class VertexEnergyCriterion final : public rift::Criterion {
+ public:
+  explicit VertexEnergyCriterion(const VertexEnergyParams& p = {}, const Params& pack = {})
+      : p_(p), pack_(pack) {}
+  const std::string& name() const override { return name_; }
+  const VertexEnergyParams& params() const { return p_; }
+  void initialise(rift::GMap& g) override;
+  void collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const override;
+  bool apply(rift::GMap& g, const rift::TearCandidate& candidate,
+             std::vector<rift::Dart>& touched) override;
+
+ private:
+  std::string name_ = "vertex_energy";
+  VertexEnergyParams p_;
+  Params pack_;
+  rift::Embedding<rift::Real> e_corner_mass;
+  rift::Embedding<rift::Vec3> e_f_membrane;
+  rift::Embedding<rift::Real> e_membrane_lambda;
+  rift::Embedding<rift::Real> e_membrane_mu;
+  rift::Embedding<rift::Vec3> e_position;
+};
+
+/// Parameters given by the scene.
 struct VertexSumParams {
   rift::Real threshold = 1.0;  ///< N
 };
