@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "rift/core/parallel.hpp"
 #include "rift/scene/scene_setup.hpp"
 
 namespace rift::cli {
@@ -17,12 +18,22 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& options) {
   cmd->add_option("SCENE", options.scene, "The scene file (TOML)")->required();
   cmd->add_option("--steps", options.steps, "Number of steps (default: the scene's)")
       ->check(CLI::PositiveNumber);
-  cmd->add_flag("--json", options.json,
-                "Print one JSON object: ns_per_step (median), steps, tears, vertices, ...");
+  cmd->add_flag(
+      "--json", options.json,
+      "Print one JSON object: ns_per_step (median), steps, tears, vertices, threads, ...");
+  add_threads_option(*cmd, options.threads);
   return cmd;
 }
 
+void add_threads_option(CLI::App& cmd, int& threads) {
+  cmd.add_option("--threads", threads,
+                 "Threads of the parallel passes (default: every core); the results are the "
+                 "same for any number")
+      ->check(CLI::Range(1, 4096));
+}
+
 int run_bench(const BenchOptions& options, const PackRegistry& packs) {
+  set_thread_count(options.threads);
   const Scene scene = read_scene(options.scene, packs.catalog());
   std::unique_ptr<Simulation> sim = build_simulation(scene, packs);
   const std::int64_t steps = options.steps.value_or(scene.steps);
@@ -46,14 +57,15 @@ int run_bench(const BenchOptions& options, const PackRegistry& packs) {
     fmt::print(
         "{{\"scene\": \"{}\", \"ns_per_step\": {:.0f}, \"mean_ns_per_step\": {:.0f}, "
         "\"min_ns_per_step\": {:.0f}, \"steps\": {}, \"tears\": {}, \"vertices\": {}, "
-        "\"elements\": {}}}\n",
-        scene.name, median, mean, sorted.front(), steps, sim->tears(), vertices, elements);
+        "\"elements\": {}, \"threads\": {}}}\n",
+        scene.name, median, mean, sorted.front(), steps, sim->tears(), vertices, elements,
+        thread_count());
   } else {
     fmt::print(
         "{}: {} steps, median {:.3f} ms/step (mean {:.3f}, min {:.3f}), {} tears, {} "
-        "vertices, {} elements\n",
+        "vertices, {} elements, {} threads\n",
         scene.name, steps, median * 1e-6, mean * 1e-6, sorted.front() * 1e-6, sim->tears(),
-        vertices, elements);
+        vertices, elements, thread_count());
   }
   return 0;
 }

@@ -21,6 +21,7 @@ struct RunOptions {
   std::string out;
   bool check = false;
   bool quiet = false;
+  int threads = 0;  ///< 0: every core
 };
 CLI::App* add_run_command(CLI::App& app, RunOptions& options);
 int run_run(const RunOptions& options, const PackRegistry& packs);
@@ -29,7 +30,10 @@ struct BenchOptions {
   std::string scene;
   std::optional<std::int64_t> steps;
   bool json = false;
+  int threads = 0;  ///< 0: every core
 };
+/// Declares --threads on a subcommand (run, bench): a whole number of threads >= 1.
+void add_threads_option(CLI::App& cmd, int& threads);
 CLI::App* add_bench_command(CLI::App& app, BenchOptions& options);
 int run_bench(const BenchOptions& options, const PackRegistry& packs);
 

@@ -9,6 +9,7 @@
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "rift/core/interrupt.hpp"
+#include "rift/core/parallel.hpp"
 #include "rift/output/frame_outputs.hpp"
 #include "rift/output/scenery.hpp"
 #include "rift/scene/scene_setup.hpp"
@@ -42,10 +43,12 @@ CLI::App* add_run_command(CLI::App& app, RunOptions& options) {
   cmd->add_flag("--check", options.check,
                 "Check the G-map's validity after every rewrite and stop at the first failure");
   cmd->add_flag("--quiet", options.quiet, "No progress bar and no summary");
+  add_threads_option(*cmd, options.threads);
   return cmd;
 }
 
 int run_run(const RunOptions& options, const PackRegistry& packs) {
+  set_thread_count(options.threads);
   const Scene scene = read_scene(options.scene, packs.catalog());
   SetupReport setup;
   std::unique_ptr<Simulation> sim = build_simulation(scene, packs, {options.check}, &setup);

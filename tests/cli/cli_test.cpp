@@ -89,6 +89,50 @@ std::vector<double> csv_column(const fs::path& file, int column) {
   return values;
 }
 
+/// A CSV written by rift run without its timing column (step_ms, found by
+/// name in the header): what must not change between two runs.
+std::string drop_timing_column(const std::string& csv) {
+  std::stringstream in(csv);
+  std::string line, out;
+  int timing = -1;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');)
+      cells.push_back(cell);
+    if (timing < 0) {
+      for (std::size_t k = 0; k < cells.size(); ++k) {
+        if (cells[k] == "step_ms") timing = static_cast<int>(k);
+      }
+    }
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      if (static_cast<int>(k) != timing) out += cells[k] + ",";
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+/// Compares every file of two output folders byte for byte (CSV without
+/// its timing column); returns how many were compared.
+int expect_same_outputs(const fs::path& a_dir, const fs::path& b_dir, const std::string& what) {
+  int compared = 0;
+  for (const auto& entry : fs::directory_iterator(a_dir)) {
+    const fs::path name = entry.path().filename();
+    EXPECT_TRUE(fs::exists(b_dir / name)) << what << ": " << name;
+    std::ifstream fa(entry.path(), std::ios::binary), fb(b_dir / name, std::ios::binary);
+    std::string a((std::istreambuf_iterator<char>(fa)), std::istreambuf_iterator<char>());
+    std::string b((std::istreambuf_iterator<char>(fb)), std::istreambuf_iterator<char>());
+    if (name.extension() == ".csv") {
+      a = drop_timing_column(a);
+      b = drop_timing_column(b);
+    }
+    EXPECT_TRUE(a == b) << what << ": " << name << " differs";
+    ++compared;
+  }
+  return compared;
+}
+
 class Cli : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -593,28 +637,6 @@ int expect_identical_runs(const fs::path& dir, const std::string& scene, const s
         run(RIFT_EXE, "run " + scene + " " + args + " --out " + (dir / out).string() + " --quiet");
     EXPECT_EQ(r.code, 0) << r.output;
   }
-  // The column named step_ms (found in the header) is the only timing.
-  auto drop_timing_column = [](const std::string& csv) {
-    std::stringstream in(csv);
-    std::string line, out;
-    int timing = -1;
-    while (std::getline(in, line)) {
-      std::vector<std::string> cells;
-      std::stringstream row(line);
-      for (std::string cell; std::getline(row, cell, ',');)
-        cells.push_back(cell);
-      if (timing < 0) {
-        for (std::size_t k = 0; k < cells.size(); ++k) {
-          if (cells[k] == "step_ms") timing = static_cast<int>(k);
-        }
-      }
-      for (std::size_t k = 0; k < cells.size(); ++k) {
-        if (static_cast<int>(k) != timing) out += cells[k] + ",";
-      }
-      out += "\n";
-    }
-    return out;
-  };
   int compared = 0;
   for (const auto& entry : fs::directory_iterator(dir / "a")) {
     const fs::path name = entry.path().filename();
@@ -639,6 +661,104 @@ TEST_F(Cli, TheSameSceneTwiceGivesByteIdenticalOutputs) {
   EXPECT_GE(expect_identical_runs(dir_, scene, "--steps 300"), 10);  // 4 VTU, 4 PNG, PVD, CSV
   const std::vector<double> tears = csv_column(dir_ / "a" / "fig11.csv", 4);
   EXPECT_GT(tears.back(), 0) << "the scene should tear";
+}
+
+// Issue 12: every core, the same bits. A tearing cloth (RK4: parallel force
+// passes, gathers rebuilt after each tear, parallel sweeps) and an implicit
+// beam (parallel Jacobians, products and fixed-block dot products), both
+// large enough that every pass has several blocks, run with 1, 2 and 8
+// threads: every VTU and CSV (timing column aside) byte-identical.
+TEST_F(Cli, AnyThreadCountGivesByteIdenticalOutputs) {
+  const std::string cloth = write("cloth.toml", R"([mesh]
+source = "grid:quad:80x80"
+rotate = [90, 0, 0]
+
+[simulation]
+integrator = "rk4"
+dt = 0.0005
+steps = 100
+gravity = [0, 0, -9.81]
+
+[mass]
+total = 2.0
+
+[pin]
+corners = ["top-left", "top-right"]
+
+[[interaction]]
+name = "stretch"
+stiffness = 60.0
+damping = 0.1
+
+[[interaction]]
+name = "shear"
+stiffness = 43.0
+damping = 0.1
+
+[[interaction]]
+name = "bend"
+stiffness = 10.0
+damping = 0.1
+
+[[criterion]]
+name = "atomic_edge"
+threshold = 0.2
+
+[output]
+every = 25
+formats = ["vtu", "csv"]
+)");
+  const std::string beam = write("beam.toml", R"([mesh]
+source = "block:tet:8x8x60"
+scale = [0.2, 0.2, 1.0]
+
+[simulation]
+integrator = "implicit_euler"
+dt = 0.002
+steps = 4
+gravity = [0, -9.81, 0]
+
+[mass]
+total = 1.0
+
+[pin]
+box = { min = [-1, -1, -0.001], max = [2, 2, 0.001] }
+
+[[interaction]]
+name = "corotational"
+young = 1.0e5
+poisson = 0.3
+
+[output]
+every = 2
+formats = ["vtu", "csv"]
+)");
+  for (const std::string& scene : {cloth, beam}) {
+    const std::string name = fs::path(scene).stem().string();
+    for (const char* threads : {"1", "2", "8"}) {
+      const fs::path out = dir_ / (name + "_" + threads);
+      const Result r = run(RIFT_EXE, "run " + scene + " --threads " + threads + " --out " +
+                                         out.string() + " --quiet");
+      ASSERT_EQ(r.code, 0) << r.output;
+    }
+    const fs::path one = dir_ / (name + "_1");
+    EXPECT_GE(expect_same_outputs(one, dir_ / (name + "_2"), name + ", 2 threads"), 4);
+    EXPECT_GE(expect_same_outputs(one, dir_ / (name + "_8"), name + ", 8 threads"), 4);
+  }
+  const std::vector<double> tears = csv_column(dir_ / "cloth_1" / "cloth.csv", 4);
+  EXPECT_GT(tears.back(), 0) << "the cloth should tear";
+}
+
+TEST_F(Cli, BadThreadCountsAreRefused) {
+  const std::string scene = write("cloth.toml", kCloth);
+  for (const char* bad : {"0", "-2", "two", "1.5"}) {
+    const Result r = sim("run " + scene + " --threads " + bad + " --out " + (dir_ / "o").string());
+    EXPECT_NE(r.code, 0) << bad;
+    EXPECT_NE(r.output.find("--threads"), std::string::npos) << bad << ": " << r.output;
+  }
+  const Result r = sim("bench " + scene + " --steps 3 --threads 2 --json");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("\"threads\": "), std::string::npos) << r.output;
 }
 
 // The same in 3D: a co-rotational cantilever of tetrahedra whose vertices

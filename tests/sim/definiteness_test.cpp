@@ -39,8 +39,7 @@ Real smallest_eigenvalue(const Eigen::MatrixXd& s) {
 TEST(Definiteness, StretchedSpringIsLeftExactlyAsItIs) {
   std::vector<Mat3> j = spring_jacobian(Vec3(0, 0, 0), Vec3(1.5, 0.2, 0.1), 100, 1.0);
   const std::vector<Mat3> before = j;
-  ProjectionScratch scratch(6);
-  EXPECT_FALSE(project_to_semidefinite(j.data(), 2, scratch));
+  EXPECT_FALSE(project_to_semidefinite(j.data(), 2));
   for (std::size_t b = 0; b < j.size(); ++b)
     EXPECT_EQ(j[b], before[b]);
 }
@@ -49,8 +48,7 @@ TEST(Definiteness, CompressedSpringBecomesSemidefiniteAlongItsAxisUnchanged) {
   const Vec3 a(0, 0, 0), b(0.5, 0.1, 0);
   std::vector<Mat3> j = spring_jacobian(a, b, 100, 1.0);  // half its rest length
   ASSERT_LT(smallest_eigenvalue(dense_minus(j, 2)), -1);  // transverse: k (1 - 1/0.5) < 0
-  ProjectionScratch scratch(6);
-  EXPECT_TRUE(project_to_semidefinite(j.data(), 2, scratch));
+  EXPECT_TRUE(project_to_semidefinite(j.data(), 2));
   const Eigen::MatrixXd s = dense_minus(j, 2);
   EXPECT_GE(smallest_eigenvalue(s), -1e-9);
   EXPECT_LT((s - s.transpose()).norm(), 1e-12);
@@ -78,8 +76,7 @@ TEST(Definiteness, ProjectionIsTheNearestSemidefiniteMatrix) {
     for (int i = 0; i < 4; ++i)
       for (int k = 0; k < 4; ++k)
         j[i * 4 + k] = -s.block<3, 3>(3 * i, 3 * k);
-    ProjectionScratch scratch(12);
-    ASSERT_TRUE(project_to_semidefinite(j.data(), 4, scratch));
+    ASSERT_TRUE(project_to_semidefinite(j.data(), 4));
     const Eigen::MatrixXd p = dense_minus(j, 4);
     EXPECT_GE(smallest_eigenvalue(p), -1e-9);
     const Real distance = (p - s).norm();

@@ -5,7 +5,8 @@
 //
 // Polling is one relaxed atomic load: cheap enough for every element of a
 // criterion pass or every few thousand matches of a force pass. Never poll
-// (throw) inside an OpenMP parallel region: poll before or after it.
+// (throw) inside a raw OpenMP region; inside a block of rift::parallel_blocks
+// (core/parallel.hpp) it is fine: the exception reaches the caller.
 #pragma once
 
 #include <atomic>

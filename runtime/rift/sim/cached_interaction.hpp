@@ -23,6 +23,16 @@
 //
 // and a kernel without them may give `static constexpr const char*
 // kJacobianUnavailable` (riftc's located reason).
+//
+// On several threads (rift/core/parallel.hpp) a kernel that supplies
+//
+//   static constexpr int kForceTerms;                   // forces per match
+//   void force_targets(const Match&, Slot* out) const;  // their vertex slots
+//   void force_terms_all(std::span<const Match>, const ForceInput&, Vec3* terms, bool store);
+//
+// has its matches evaluated in parallel blocks, each match writing its forces
+// to its own entries, then summed per vertex by a TermGather in match order:
+// the bits of the one-thread pass, whatever the thread count.
 #pragma once
 
 #include <algorithm>
@@ -30,8 +40,10 @@
 #include <utility>
 
 #include "rift/core/interrupt.hpp"
+#include "rift/core/parallel.hpp"
 #include "rift/sim/force_model.hpp"
 #include "rift/sim/match_cache.hpp"
+#include "rift/sim/term_gather.hpp"
 
 namespace rift {
 
@@ -45,6 +57,7 @@ class CachedInteraction final : public ForceModel {
   Kernel& kernel() { return kernel_; }
 
   void initialise(GMap& map) override {
+    gather_stale_ = true;
     kernel_.initialise(map);
     cache_.build(map, Kernel::kSupport, [&](const GMap& m, Dart d, typename Kernel::Match& out) {
       return kernel_.match(m, d, out);
@@ -52,6 +65,7 @@ class CachedInteraction final : public ForceModel {
   }
 
   void rematch(const GMap& map, std::span<const Dart> region) override {
+    gather_stale_ = true;
     cache_.rematch(
         map, Kernel::kSupport, Kernel::kRadius, region,
         [&](const GMap& m, Dart d, typename Kernel::Match& out) {
@@ -65,6 +79,12 @@ class CachedInteraction final : public ForceModel {
   void add_forces(const ForceInput& in, Vec3* f, bool store) override {
     using Match = typename Kernel::Match;
     const std::span<const Match> all(cache_.matches());
+    if constexpr (requires { Kernel::kForceTerms; }) {
+      if (thread_count() > 1 && all.size() >= kMinParallelBlocks * kParallelBlock) {
+        add_forces_parallel(in, f, store);
+        return;
+      }
+    }
     // The pass runs in blocks so that an interrupt is seen within one block
     // (a few thousand matches: microseconds), not one whole pass.
     for (std::size_t first = 0; first < all.size(); first += kInterruptBlock) {
@@ -110,13 +130,16 @@ class CachedInteraction final : public ForceModel {
 
   void jacobians(const ForceInput& in, Slot* slots, Mat3* dfdx, Mat3* dfdv) override {
     if constexpr (requires { Kernel::kJacobianVertices; }) {
-      constexpr int k = Kernel::kJacobianVertices;
-      std::size_t i = 0;
-      for (const auto& m : cache_.matches()) {
-        kernel_.vertex_slots(m, slots + i * k);
-        kernel_.jacobian(m, in, dfdx + i * k * k, dfdv + i * k * k);
-        ++i;
-      }
+      constexpr std::size_t k = Kernel::kJacobianVertices;
+      const auto all = cache_.matches();
+      // Each match writes its own blocks: parallel without any reduction.
+      auto run = [&](std::size_t first, std::size_t last) {
+        for (std::size_t i = first; i < last; ++i) {
+          kernel_.vertex_slots(all[i], slots + i * k);
+          kernel_.jacobian(all[i], in, dfdx + i * k * k, dfdv + i * k * k);
+        }
+      };
+      parallel_blocks(all.size(), kParallelBlock, run);
     }
   }
 
@@ -130,9 +153,36 @@ class CachedInteraction final : public ForceModel {
   const MatchCache<typename Kernel::Match>& cache() const { return cache_; }
 
  private:
+  void add_forces_parallel(const ForceInput& in, Vec3* f, bool store) {
+    using Match = typename Kernel::Match;
+    constexpr std::size_t k = Kernel::kForceTerms;
+    const std::span<const Match> all(cache_.matches());
+    if (gather_stale_) {
+      // Once per change of the matches (a tear), not per pass.
+      targets_.resize(all.size() * k);
+      for (std::size_t i = 0; i < all.size(); ++i)
+        kernel_.force_targets(all[i], targets_.data() + i * k);
+      gather_.build(targets_);
+      gather_stale_ = false;
+    }
+    terms_.resize(all.size() * k);  // keeps its capacity: no allocation once warm
+    auto run = [&](std::size_t first, std::size_t last) {
+      throw_if_interrupted();
+      kernel_.force_terms_all(all.subspan(first, last - first), in, terms_.data() + first * k,
+                              store);
+    };
+    parallel_blocks(all.size(), kParallelBlock, run);
+    gather_.add_to(terms_.data(), f);
+  }
+
   static constexpr std::size_t kInterruptBlock = 4096;
   Kernel kernel_;
   MatchCache<typename Kernel::Match> cache_;
+  // The force pass on several threads: per-match forces and their gather.
+  std::vector<Vec3> terms_;
+  std::vector<Slot> targets_;
+  TermGather gather_;
+  bool gather_stale_ = true;
 };
 
 }  // namespace rift

@@ -1,14 +1,16 @@
 #include "rift/sim/element_matrix.hpp"
 
-#include <algorithm>
-#include <cmath>
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <atomic>
+
+#include "rift/core/parallel.hpp"
 
 namespace rift {
 
 namespace {
 
-// The projection on a matrix type: fixed-size (on the stack, unrolled) for
-// the common element sizes, or the dynamic scratch for the others.
+// The projection, on whichever matrix type project_on_stack chooses.
 template <class Matrix, class Cholesky, class Eigensolver>
 bool project(Mat3* blocks, int k, Matrix& s, Cholesky& cholesky, Eigensolver& eigen) {
   const int dofs = 3 * k;
@@ -49,92 +51,112 @@ bool project(Mat3* blocks, int k, Matrix& s, Cholesky& cholesky, Eigensolver& ei
   return true;
 }
 
-template <int kDofs>
-bool project_fixed(Mat3* blocks, int k) {
-  using Matrix = Eigen::Matrix<Real, kDofs, kDofs>;
-  Matrix s;
-  Eigen::LLT<Matrix> cholesky;
-  Eigen::SelfAdjointEigenSolver<Matrix> eigen;
+// Fixed-size or bounded matrices live on the stack: each thread of the
+// assembly projects its own elements without shared scratch.
+template <int kDofs, int kMaxDofs = kDofs>
+bool project_on_stack(Mat3* blocks, int k) {
+  using Matrix = Eigen::Matrix<Real, kDofs, kDofs, 0, kMaxDofs, kMaxDofs>;
+  Matrix s(3 * k, 3 * k);
+  Eigen::LLT<Matrix> cholesky(3 * k);
+  Eigen::SelfAdjointEigenSolver<Matrix> eigen(3 * k);
   return project(blocks, k, s, cholesky, eigen);
 }
 
 }  // namespace
 
-bool project_to_semidefinite(Mat3* blocks, int k, ProjectionScratch& scratch) {
+bool project_to_semidefinite(Mat3* blocks, int k) {
   switch (k) {
     case 2:
-      return project_fixed<6>(blocks, k);  // springs
+      return project_on_stack<6>(blocks, k);  // springs
     case 3:
-      return project_fixed<9>(blocks, k);  // triangles
+      return project_on_stack<9>(blocks, k);  // triangles
     case 4:
-      return project_fixed<12>(blocks, k);  // tetrahedra, quads, hinges
+      return project_on_stack<12>(blocks, k);  // tetrahedra, quads, hinges
     default:
-      return project(blocks, k, scratch.dense, scratch.cholesky, scratch.eigen);
+      if (k <= 16) return project_on_stack<Eigen::Dynamic, 48>(blocks, k);  // hexahedra...
+      // Larger patterns are rare enough to allocate their scratch.
+      return project_on_stack<Eigen::Dynamic, Eigen::Dynamic>(blocks, k);
   }
 }
 
 void ElementMatrix::set_models(std::span<ForceModel* const> models) {
   elements_.clear();
-  scratch_.clear();
   for (ForceModel* m : models) {
     ElementBlocks e;
     e.model = m;
     e.k = m->jacobian_vertices();
-    scratch_.emplace_back(3 * e.k);
     elements_.push_back(std::move(e));
   }
 }
 
+void ElementMatrix::pattern_changed() {
+  for (ElementBlocks& e : elements_)
+    e.gather_stale = true;
+}
+
 void ElementMatrix::assemble(const ForceInput& in, Real h, std::size_t n, std::vector<Vec3>& kxv) {
-  kxv.assign(n, Vec3::Zero());
-  projected_ = 0;
-  for (std::size_t model = 0; model < elements_.size(); ++model) {
-    ElementBlocks& e = elements_[model];
+  kxv.resize(n);
+  parallel_for(n, [&](std::size_t i) { kxv[i].setZero(); });
+  // A count, the same whatever the order the blocks add to it in.
+  std::atomic<std::size_t> projected{0};
+  for (ElementBlocks& e : elements_) {
     const std::size_t k = static_cast<std::size_t>(e.k);
-    e.matches = e.model->active_matches();
+    const std::size_t matches = e.model->active_matches();
+    if (matches != e.matches) e.gather_stale = true;
+    e.matches = matches;
     // resize() keeps the capacity: after the largest match count seen,
     // assembling allocates nothing.
     e.slots.resize(e.matches * k);
     e.blocks.resize(e.matches * k * k);
     e.dfdv.resize(e.matches * k * k);
+    e.terms.resize(e.matches * k);
     e.model->jacobians(in, e.slots.data(), e.blocks.data(), e.dfdv.data());
+    if (e.gather_stale) {
+      e.gather.build(e.slots);
+      e.gather_stale = false;
+    }
     const Real h2 = h * h;
-    for (std::size_t m = 0; m < e.matches; ++m) {
+    // Row i of each match: its part of kxv (a term for the gather), then
+    // the blocks of A.
+    parallel_for(e.matches, [&](std::size_t m) {
       const Slot* s = e.slots.data() + m * k;
       Mat3* c = e.blocks.data() + m * k * k;
       Mat3* dv = e.dfdv.data() + m * k * k;
       if (project_) {
-        projected_ += project_to_semidefinite(c, e.k, scratch_[model]);
-        projected_ += project_to_semidefinite(dv, e.k, scratch_[model]);
+        const int changed = project_to_semidefinite(c, e.k) + project_to_semidefinite(dv, e.k);
+        if (changed) projected.fetch_add(changed, std::memory_order_relaxed);
       }
       for (std::size_t i = 0; i < k; ++i) {
+        Vec3 row = Vec3::Zero();
         for (std::size_t j = 0; j < k; ++j) {
           Mat3& b = c[i * k + j];  // holds ∂f_i/∂x_j on entry
-          if (s[i] != kNoSlot && s[j] != kNoSlot) kxv[s[i]] += b * in.v[s[j]];
+          if (s[i] != kNoSlot && s[j] != kNoSlot) row += b * in.v[s[j]];
           b = -(h2 * b + h * dv[i * k + j]);
         }
+        e.terms[m * k + i] = row;
       }
-    }
+    });
+    e.gather.add_to(e.terms.data(), kxv.data());
   }
+  projected_ = projected.load();
 }
 
 void ElementMatrix::multiply(const Vec3* p, Vec3* out, std::size_t n) const {
-  for (std::size_t i = 0; i < n; ++i)
-    out[i].setZero();
+  parallel_for(n, [&](std::size_t i) { out[i].setZero(); });
   for (const ElementBlocks& e : elements_) {
     const std::size_t k = static_cast<std::size_t>(e.k);
-    for (std::size_t m = 0; m < e.matches; ++m) {
+    parallel_for(e.matches, [&](std::size_t m) {
       const Slot* s = e.slots.data() + m * k;
       const Mat3* c = e.blocks.data() + m * k * k;
       for (std::size_t i = 0; i < k; ++i) {
-        if (s[i] == kNoSlot) continue;
         Vec3 sum = Vec3::Zero();
         for (std::size_t j = 0; j < k; ++j) {
           if (s[j] != kNoSlot) sum += c[i * k + j] * p[s[j]];
         }
-        out[s[i]] += sum;
+        e.terms[m * k + i] = sum;  // dropped by the gather when s[i] is kNoSlot
       }
-    }
+    });
+    e.gather.add_to(e.terms.data(), out);
   }
 }
 

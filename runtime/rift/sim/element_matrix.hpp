@@ -30,13 +30,12 @@
 // modified Newton step; the forces themselves are unchanged.
 #pragma once
 
-#include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
 #include <memory>
 #include <span>
 #include <vector>
 
 #include "rift/sim/force_model.hpp"
+#include "rift/sim/term_gather.hpp"
 
 namespace rift {
 
@@ -48,21 +47,18 @@ struct ElementBlocks {
   std::vector<Slot> slots;   ///< matches × k
   std::vector<Mat3> blocks;  ///< matches × k²: C_e (row-major i k + j)
   std::vector<Mat3> dfdv;    ///< scratch for ∂f/∂v while assembling
-};
-
-/// Scratch of the semidefinite projection for one element size (3k × 3k),
-/// sized once so that projecting allocates nothing.
-struct ProjectionScratch {
-  explicit ProjectionScratch(int dofs = 0) : dense(dofs, dofs), cholesky(dofs), eigen(dofs) {}
-  Eigen::MatrixXd dense;
-  Eigen::LLT<Eigen::MatrixXd> cholesky;
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen;
+  /// Products on every core: each match writes its k rows of C_e p to its
+  /// own entries of `terms`, summed per vertex in match order by `gather`
+  /// (built from `slots` when the matches changed).
+  mutable std::vector<Vec3> terms;
+  TermGather gather;
+  bool gather_stale = true;
 };
 
 /// Replaces the k×k blocks J (row-major, ∂f_i/∂x_j or ∂f_i/∂v_j) of one
 /// element by the nearest matrix whose negative is symmetric positive
 /// semidefinite. Returns true when it changed them.
-bool project_to_semidefinite(Mat3* blocks, int k, ProjectionScratch& scratch);
+bool project_to_semidefinite(Mat3* blocks, int k);
 
 class ElementMatrix {
  public:
@@ -72,6 +68,10 @@ class ElementMatrix {
 
   /// Projects every element matrix to semidefinite while assembling (above).
   void set_projection(bool on) { project_ = on; }
+
+  /// The matches changed (a tear): the gathers of the products are rebuilt
+  /// at the next assembly.
+  void pattern_changed();
 
   /// Evaluates every element Jacobian at `in` and stores C_e for step h.
   /// Also returns kxv = (∂f/∂x) v for the right-hand side of the linearised
@@ -91,7 +91,6 @@ class ElementMatrix {
 
  private:
   std::vector<ElementBlocks> elements_;
-  std::vector<ProjectionScratch> scratch_;  ///< one per interaction
   bool project_ = true;
   std::size_t projected_ = 0;
 };

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "rift/core/parallel.hpp"
+
 namespace rift {
 
 namespace {
@@ -54,8 +56,7 @@ void ImplicitEuler::apply_a(const ForceInput& at, const std::vector<Real>& mass,
   const std::size_t n = mass.size();
   if (settings_.jacobian == JacobianMode::kAssembled) {
     blocks_.multiply(p, out, n);
-    for (std::size_t i = 0; i < n; ++i)
-      out[i] += mass[i] * p[i];
+    parallel_for(n, [&](std::size_t i) { out[i] += mass[i] * p[i]; });
   } else {
     // A p = M p - (h² K + h D) p, with J·p evaluated by the interactions.
     scaled_h2_.resize(n), scaled_h_.resize(n);
@@ -126,14 +127,13 @@ void ImplicitEuler::step(const ForceFn& force, const std::vector<Real>& mass,
   linearise(at0, mass, is_free, h);
   rhs_.resize(n);
   dv_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
+  parallel_for(n, [&](std::size_t i) {
     rhs_[i] = h * (f_[i] + h * kxv_[i]);
     dv_[i] = is_free[i] ? Vec3::Zero() : Vec3((target_v ? target_v[i] : Vec3::Zero()) - v[i]);
-  }
+  });
   solve(at0, mass, is_free, h, dv_);
   v1_.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
-    v1_[i] = v[i] + dv_[i];
+  parallel_for(n, [&](std::size_t i) { v1_[i] = v[i] + dv_[i]; });
   stats_.newton_iterations = 1;
 
   // Newton on g(v1) = M (v1 - v0) - h f(x0 + h v1, v1), free vertices only
@@ -178,10 +178,10 @@ void ImplicitEuler::step(const ForceFn& force, const std::vector<Real>& mass,
     }
     stats_.residual = g;
   }
-  for (std::size_t i = 0; i < n; ++i) {
+  parallel_for(n, [&](std::size_t i) {
     v[i] = v1_[i];
     x[i] += h * v1_[i];
-  }
+  });
   times_.total += seconds_since(start);
 }
 

@@ -82,8 +82,11 @@ class ImplicitEuler {
   void set_models(std::span<ForceModel* const> models);
 
   /// The matches changed (after a tear): the incomplete-Cholesky pattern is
-  /// rebuilt at the next step. Element blocks need nothing.
-  void topology_changed() { pattern_changed_ = true; }
+  /// rebuilt at the next step, and the element blocks' gathers.
+  void topology_changed() {
+    pattern_changed_ = true;
+    blocks_.pattern_changed();
+  }
 
   /// One step of size h. mass[s]: vertex masses by slot; is_free[s] = 0 for
   /// constrained slots (pins, handles, dead slots); target_v: end-of-step

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "rift/core/parallel.hpp"
+
 namespace rift {
 
 std::optional<IntegratorKind> parse_integrator(std::string_view name) {
@@ -35,16 +37,16 @@ void Integrator::step(const AccelerationFn& accel, std::vector<Vec3>& x, std::ve
 
   switch (kind_) {
     case IntegratorKind::kExplicitEuler:
-      for (std::size_t i = 0; i < n; ++i) {
+      parallel_for(n, [&](std::size_t i) {
         x[i] += dt * v[i];
         v[i] += dt * a[i];
-      }
+      });
       return;
     case IntegratorKind::kSymplecticEuler:
-      for (std::size_t i = 0; i < n; ++i) {
+      parallel_for(n, [&](std::size_t i) {
         v[i] += dt * a[i];
         x[i] += dt * v[i];
-      }
+      });
       return;
     case IntegratorKind::kRK4:
       break;
@@ -60,37 +62,39 @@ void Integrator::step(const AccelerationFn& accel, std::vector<Vec3>& x, std::ve
   //   k3 = (v3, a3)           at (x + h k2x, v + h k2v)
   //   k4 = (v4, a4)           at (x + dt k3x, v + dt k3v)
   //   y += dt/6 (k1 + 2 k2 + 2 k3 + k4)
+  // Every sweep is per vertex, hence parallel with the same result on any
+  // number of threads.
   xs_.resize(n), vs_.resize(n), k2x_.resize(n), k2v_.resize(n), k4v_.resize(n);
   std::vector<Vec3>& x_sum = k2x_;  // running dt/6 (k1x + 2 k2x + 2 k3x + k4x)
   std::vector<Vec3>& v_sum = k2v_;
   std::vector<Vec3>& stage_a = k4v_;
   const Real h = dt / 2;
   const Real w1 = dt / 6, w2 = dt / 3;
-  for (std::size_t i = 0; i < n; ++i) {
+  parallel_for(n, [&](std::size_t i) {
     x_sum[i] = w1 * v[i];
     v_sum[i] = w1 * a[i];
     xs_[i] = x[i] + h * v[i];
     vs_[i] = v[i] + h * a[i];
-  }
+  });
   accel(xs_, vs_, stage_a);  // a2 at stage 2; vs_ holds v2
-  for (std::size_t i = 0; i < n; ++i) {
+  parallel_for(n, [&](std::size_t i) {
     x_sum[i] += w2 * vs_[i];
     v_sum[i] += w2 * stage_a[i];
     xs_[i] = x[i] + h * vs_[i];
     vs_[i] = v[i] + h * stage_a[i];
-  }
+  });
   accel(xs_, vs_, stage_a);  // a3; vs_ holds v3
-  for (std::size_t i = 0; i < n; ++i) {
+  parallel_for(n, [&](std::size_t i) {
     x_sum[i] += w2 * vs_[i];
     v_sum[i] += w2 * stage_a[i];
     xs_[i] = x[i] + dt * vs_[i];
     vs_[i] = v[i] + dt * stage_a[i];
-  }
+  });
   accel(xs_, vs_, stage_a);  // a4; vs_ holds v4
-  for (std::size_t i = 0; i < n; ++i) {
+  parallel_for(n, [&](std::size_t i) {
     x[i] += x_sum[i] + w1 * vs_[i];
     v[i] += v_sum[i] + w1 * stage_a[i];
-  }
+  });
 }
 
 }  // namespace rift

@@ -5,11 +5,16 @@
 // directions and the preconditioned residual are kept at zero on constrained
 // vertices, so the prescribed values of x there never change. The caller
 // puts the prescribed values into x before calling.
+//
+// Every sweep runs on every core; the dot products are fixed-block sums
+// (rift/core/parallel.hpp), so the iterates are the same bits whatever the
+// thread count.
 #pragma once
 
 #include <cmath>
 #include <vector>
 
+#include "rift/core/parallel.hpp"
 #include "rift/core/types.hpp"
 
 namespace rift {
@@ -35,22 +40,18 @@ PcgResult filtered_pcg(ApplyA&& apply_a, Precondition&& precondition,
   const std::size_t n = b.size();
   s.r.resize(n), s.z.resize(n), s.d.resize(n), s.q.resize(n);
   auto filter = [&](std::vector<Vec3>& a) {
-    for (std::size_t i = 0; i < n; ++i)
+    parallel_for(n, [&](std::size_t i) {
       if (!is_free[i]) a[i].setZero();
+    });
   };
   auto dot = [&](const std::vector<Vec3>& a, const std::vector<Vec3>& c) {
-    Real sum = 0;
-    for (std::size_t i = 0; i < n; ++i)
-      sum += a[i].dot(c[i]);
-    return sum;
+    return parallel_sum(n, [&](std::size_t i) { return a[i].dot(c[i]); });
   };
   // r = b - A x: the prescribed values of x enter the free rows here.
   apply_a(x.data(), s.r.data());
-  Real b_norm2 = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    s.r[i] = b[i] - s.r[i];
-    if (is_free[i]) b_norm2 += b[i].squaredNorm();
-  }
+  parallel_for(n, [&](std::size_t i) { s.r[i] = b[i] - s.r[i]; });
+  const Real b_norm2 =
+      parallel_sum(n, [&](std::size_t i) { return is_free[i] ? b[i].squaredNorm() : Real(0); });
   filter(s.r);
   PcgResult result;
   Real r_norm2 = dot(s.r, s.r);
@@ -61,7 +62,7 @@ PcgResult filtered_pcg(ApplyA&& apply_a, Precondition&& precondition,
   }
   precondition(s.r.data(), s.z.data());
   filter(s.z);
-  s.d = s.z;
+  parallel_for(n, [&](std::size_t i) { s.d[i] = s.z[i]; });
   Real delta = dot(s.r, s.z);
   for (int it = 0; it < max_iterations; ++it) {
     apply_a(s.d.data(), s.q.data());
@@ -69,10 +70,10 @@ PcgResult filtered_pcg(ApplyA&& apply_a, Precondition&& precondition,
     const Real dq = dot(s.d, s.q);
     if (!(dq > 0)) break;  // not positive definite along d: keep the best so far
     const Real alpha = delta / dq;
-    for (std::size_t i = 0; i < n; ++i) {
+    parallel_for(n, [&](std::size_t i) {
       x[i] += alpha * s.d[i];
       s.r[i] -= alpha * s.q[i];
-    }
+    });
     result.iterations = it + 1;
     r_norm2 = dot(s.r, s.r);
     if (r_norm2 <= stop2) break;
@@ -81,8 +82,7 @@ PcgResult filtered_pcg(ApplyA&& apply_a, Precondition&& precondition,
     const Real delta_new = dot(s.r, s.z);
     const Real beta = delta_new / delta;
     delta = delta_new;
-    for (std::size_t i = 0; i < n; ++i)
-      s.d[i] = s.z[i] + beta * s.d[i];
+    parallel_for(n, [&](std::size_t i) { s.d[i] = s.z[i] + beta * s.d[i]; });
   }
   result.relative_residual =
       std::sqrt(r_norm2 / std::max(b_norm2, std::numeric_limits<Real>::min()));

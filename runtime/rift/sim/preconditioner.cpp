@@ -3,6 +3,8 @@
 #include <Eigen/IterativeLinearSolvers>
 #include <algorithm>
 
+#include "rift/core/parallel.hpp"
+
 namespace rift {
 
 struct Preconditioner::Factor {
@@ -156,14 +158,12 @@ void Preconditioner::build_pattern(const ElementMatrix& blocks, std::size_t n) {
 void Preconditioner::apply(const Vec3* r, Vec3* z) const {
   switch (kind_) {
     case PreconditionerKind::kNone:
-      for (std::size_t i = 0; i < n_; ++i)
-        z[i] = r[i];
+      parallel_for(n_, [&](std::size_t i) { z[i] = r[i]; });
       return;
     case PreconditionerKind::kJacobi:
     case PreconditionerKind::kIncompleteCholesky:
       if (diagonal_only_) {
-        for (std::size_t i = 0; i < n_; ++i)
-          z[i] = inverse_diagonal_[i] * r[i];
+        parallel_for(n_, [&](std::size_t i) { z[i] = inverse_diagonal_[i] * r[i]; });
         return;
       }
       for (std::size_t i = 0; i < n_; ++i)

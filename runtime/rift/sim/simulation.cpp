@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "rift/core/interrupt.hpp"
+#include "rift/core/parallel.hpp"
 #include "rift/sim/mass_model.hpp"
 
 namespace rift {
@@ -136,7 +137,8 @@ void Simulation::refresh_inverse_mass(Slot s) {
 void Simulation::accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
                                std::vector<Vec3>& a, bool store) {
   const std::size_t n = x.size();
-  forces_.assign(n, Vec3::Zero());
+  forces_.resize(n);
+  parallel_for(n, [&](std::size_t s) { forces_[s].setZero(); });
   const ForceInput in{x.data(), v.data()};
   for (auto& model : models_)
     model->add_forces(in, forces_.data(), store);
@@ -162,10 +164,10 @@ void Simulation::accelerations(const std::vector<Vec3>& x, const std::vector<Vec
   }
   a.resize(n);
   const Vec3 g = settings_.gravity;
-  for (std::size_t s = 0; s < n; ++s) {
+  parallel_for(n, [&](std::size_t s) {
     const Real w = inverse_mass_[s];
     a[s] = w > 0 ? Vec3(forces_[s] * w + g) : Vec3::Zero();
-  }
+  });
 }
 
 void Simulation::step() {

@@ -1,0 +1,44 @@
+// Sums per-element contributions ("terms") into per-vertex totals on every
+// core, in an order that does not depend on the thread count.
+//
+// A force pass or a matrix product scatters: each element adds a term to each
+// of its vertices, and two elements sharing a vertex would race on it. Here
+// the elements write their terms into their own entries of a flat array (in
+// parallel, no conflict), and a second, per-vertex pass adds to each vertex
+// its terms in increasing entry order: the order in which a one-thread
+// scatter over the same entries adds them, so the sums are bit for bit those
+// of the sequential loop, whatever the threads.
+//
+// The entry-to-vertex map is a CSR built by a counting sort from the targets
+// (the element's vertex slots in entry order), once per change of the
+// elements (a tear), not per pass.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "rift/core/types.hpp"
+
+namespace rift {
+
+class TermGather {
+ public:
+  /// Term t goes to vertex slot targets[t] (kNoSlot: nowhere). O(terms +
+  /// slots); reuses its arrays, so rebuilding to a size seen before
+  /// allocates nothing.
+  void build(std::span<const Slot> targets);
+
+  /// out[s] += terms[t] for every t with targets[t] == s, t increasing, in
+  /// parallel over the slots. `terms` is in the entry order of build().
+  void add_to(const Vec3* terms, Vec3* out) const;
+
+  /// Slots that receive a term: max target + 1.
+  std::size_t slots() const { return offsets_.empty() ? 0 : offsets_.size() - 1; }
+
+ private:
+  std::vector<std::uint32_t> offsets_;  ///< slots() + 1: where each slot's entries start
+  std::vector<std::uint32_t> entries_;  ///< term indices, by slot, increasing within a slot
+};
+
+}  // namespace rift
