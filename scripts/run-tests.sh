@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Command (b) of the README, and exactly what CI runs (.ci/run): set up a
 # fresh Debian machine, build everything (warnings are errors) and run the
-# whole test suite; then the reliability jobs of docs/reliability.md:
-# clang-tidy, the clang ASan+UBSan build with the fast suites, and each fuzz
-# target for a short time. RIFT_RELIABILITY=0 runs the first job alone.
+# whole test suite; then the reliability jobs of docs/reliability.md: the
+# clang ASan+UBSan build with the fast suites, each fuzz target for a short
+# time, and clang-tidy. RIFT_RELIABILITY=0 runs the first job alone.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
