@@ -12,6 +12,15 @@ namespace rift::emit {
 
 namespace {
 
+/// Counts the folds being rendered, one level per fold, for their names.
+struct FoldNesting {
+  explicit FoldNesting(int& depth) : depth_(depth) { ++depth_; }
+  ~FoldNesting() { --depth_; }
+  FoldNesting(const FoldNesting&) = delete;
+  FoldNesting& operator=(const FoldNesting&) = delete;
+  int& depth_;
+};
+
 using ast::Expr;
 using ast::Type;
 
@@ -87,7 +96,11 @@ class Emitter {
     const Expr& body = *e.args[0];
     const bool mean = e.op == "mean";
     // Folds nest: each gets its own names, so that no inner one shadows another.
-    const std::string id = std::to_string(folds_++);
+    // Named by nesting depth, not by a running count: sibling folds are
+    // separate lambdas and may share names, and the names do not depend on
+    // the order in which the compiler that built riftc evaluates operands.
+    const std::string id = std::to_string(fold_depth_);
+    const FoldNesting nesting(fold_depth_);
     const std::string acc = "acc" + id, n = "n" + id;
     const Type acc_type = e.op == "count" ? Type::Int : e.type;
     const std::string t = cpp_type(acc_type);
@@ -200,7 +213,7 @@ class Emitter {
   }
 
   const ExprContext& ctx_;
-  int folds_ = 0;
+  int fold_depth_ = 0;  ///< folds enclosing the one being rendered
 };
 
 }  // namespace

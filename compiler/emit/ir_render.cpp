@@ -11,6 +11,15 @@ namespace rift::emit {
 
 namespace {
 
+/// Counts the folds being rendered, one level per fold, for their names.
+struct FoldNesting {
+  explicit FoldNesting(int& depth) : depth_(depth) { ++depth_; }
+  ~FoldNesting() { --depth_; }
+  FoldNesting(const FoldNesting&) = delete;
+  FoldNesting& operator=(const FoldNesting&) = delete;
+  int& depth_;
+};
+
 using ir::ExprId;
 using ir::Node;
 using ir::Op;
@@ -96,7 +105,11 @@ class Renderer {
     const bool mean = n.aggregate == ir::Aggregate::Mean;
     const bool count = n.aggregate == ir::Aggregate::Count;
     // Folds nest: each gets its own names, so that no inner one shadows another.
-    const std::string id = std::to_string(folds_++);
+    // Named by nesting depth, not by a running count: sibling folds are
+    // separate lambdas and may share names, and the names do not depend on
+    // the order in which the compiler that built riftc evaluates operands.
+    const std::string id = std::to_string(fold_depth_);
+    const FoldNesting nesting(fold_depth_);
     const std::string acc = std::string("acc") + id, cnt = std::string("n") + id;
     const std::string t = cpp_type(n.type);
     std::string init = zero_of(n.type);
@@ -193,7 +206,7 @@ class Renderer {
 
   const ir::Graph& g_;
   const RenderContext& ctx_;
-  int folds_ = 0;
+  int fold_depth_ = 0;  ///< folds enclosing the one being rendered
 };
 
 }  // namespace
