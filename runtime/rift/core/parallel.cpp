@@ -29,11 +29,11 @@ std::atomic<int> g_requested_threads{0};  // 0: every core
 
 // Asked once: hardware_concurrency() reads a sysfs file on every call.
 int hardware_threads() {
-  static const int n = [] {
+  static const int kCores = [] {
     const unsigned cores = std::thread::hardware_concurrency();
     return cores == 0 ? 1 : static_cast<int>(cores);
   }();
-  return n;
+  return kCores;
 }
 
 // Set while a thread runs a block: a pass started from inside a block runs

@@ -100,10 +100,10 @@ SolidLayout make_layout(ElementType type) {
 }
 
 const SolidLayout& layout_of(ElementType type) {
-  static const SolidLayout layouts[] = {
+  static const SolidLayout kLayouts[] = {
       SolidLayout{}, make_layout(ElementType::Tetra), make_layout(ElementType::Hexa),
       make_layout(ElementType::Wedge), make_layout(ElementType::Pyramid)};
-  return layouts[static_cast<int>(type)];
+  return kLayouts[static_cast<int>(type)];
 }
 
 // `seen[p]` holds the index of the last element that visited point p, which
@@ -320,7 +320,8 @@ GMap assemble_gmap(const MeshData& mesh, AssemblyReport* report) {
       validate_element(mesh, mesh.elements[k], k, seen);
   }
   for (const MeshElement& e : mesh.elements) {
-    dart_count += mesh.dimension == 2 ? 2 * e.count : layout_of(e.type).dart_vertex.size();
+    dart_count +=
+        mesh.dimension == 2 ? 2 * std::size_t{e.count} : layout_of(e.type).dart_vertex.size();
   }
 
   const int n = mesh.dimension;
@@ -431,7 +432,8 @@ GMap assemble_gmap(const MeshData& mesh, AssemblyReport* report) {
       element_index[d] = static_cast<std::int64_t>(k);
       if (element_tag) element_tag[d] = mesh.element_tags[k];
       const MeshElement& e = mesh.elements[k];
-      d += static_cast<Dart>(n == 2 ? 2 * e.count : layout_of(e.type).dart_vertex.size());
+      d += static_cast<Dart>(n == 2 ? 2 * std::size_t{e.count}
+                                    : layout_of(e.type).dart_vertex.size());
     }
   }
   // Point groups (VTU point data), for the same selections.

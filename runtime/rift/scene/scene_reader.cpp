@@ -602,6 +602,7 @@ class SceneReader {
       fail(*node, "'" + key + "' must be written as [[" + key + "]] tables");
     }
     std::vector<std::string> names;
+    names.reserve(known.size());
     for (const ComponentSpec& c : known)
       names.push_back(c.name);
     for (const toml::node& entry : *list) {

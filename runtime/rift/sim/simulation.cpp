@@ -28,7 +28,7 @@ Embedding<T> find_or_add(GMap& map, const char* name, Orbit orbit, MergePolicy p
 
 }  // namespace
 
-Simulation::Simulation(GMap map, SimulationSettings settings)
+Simulation::Simulation(GMap map, const SimulationSettings& settings)
     : map_(std::move(map)), settings_(settings), integrator_(settings.integrator) {
   if (!(settings_.dt > 0)) throw std::invalid_argument("the time step dt must be positive");
   const int n = map_.dimension();

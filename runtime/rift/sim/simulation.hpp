@@ -59,7 +59,7 @@ inline constexpr const char* kVertexForce = "vertex_force";
 
 class Simulation {
  public:
-  Simulation(GMap map, SimulationSettings settings);
+  Simulation(GMap map, const SimulationSettings& settings);
 
   GMap& map() { return map_; }
   const GMap& map() const { return map_; }
