@@ -6,6 +6,8 @@
 #include <chrono>
 #include <vector>
 
+#include <sys/resource.h>
+
 #include "cli/commands.hpp"
 #include "rift/core/parallel.hpp"
 #include "rift/scene/scene_setup.hpp"
@@ -20,7 +22,8 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& options) {
       ->check(CLI::PositiveNumber);
   cmd->add_flag(
       "--json", options.json,
-      "Print one JSON object: ns_per_step (median), steps, tears, vertices, threads, ...");
+      "Print one JSON object: ns_per_step (median), steps, tears, vertices, threads, setup_ms, "
+      "peak_rss_mb, ...");
   add_threads_option(*cmd, options.threads);
   return cmd;
 }
@@ -35,7 +38,11 @@ void add_threads_option(CLI::App& cmd, int& threads) {
 int run_bench(const BenchOptions& options, const PackRegistry& packs) {
   set_thread_count(options.threads);
   const Scene scene = read_scene(options.scene, packs.catalog());
+  const auto setup_start = std::chrono::steady_clock::now();
   std::unique_ptr<Simulation> sim = build_simulation(scene, packs);
+  const double setup_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - setup_start)
+          .count();
   const std::int64_t steps = options.steps.value_or(scene.steps);
   std::vector<double> ns(static_cast<std::size_t>(steps));
   for (std::int64_t s = 0; s < steps; ++s) {
@@ -53,19 +60,23 @@ int run_bench(const BenchOptions& options, const PackRegistry& packs) {
   mean /= static_cast<double>(ns.size());
   const std::size_t vertices = sim->map().count_cells_of_dimension(0);
   const std::size_t elements = sim->map().count_cells(Orbit::all(sim->map().dimension() - 1));
+  // The process's peak resident set so far: set-up and every step (Linux reports KiB).
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const double peak_rss_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;
   if (options.json) {
     fmt::print(
         "{{\"scene\": \"{}\", \"ns_per_step\": {:.0f}, \"mean_ns_per_step\": {:.0f}, "
         "\"min_ns_per_step\": {:.0f}, \"steps\": {}, \"tears\": {}, \"vertices\": {}, "
-        "\"elements\": {}, \"threads\": {}}}\n",
+        "\"elements\": {}, \"threads\": {}, \"setup_ms\": {:.1f}, \"peak_rss_mb\": {:.1f}}}\n",
         scene.name, median, mean, sorted.front(), steps, sim->tears(), vertices, elements,
-        thread_count());
+        thread_count(), setup_ms, peak_rss_mb);
   } else {
     fmt::print(
         "{}: {} steps, median {:.3f} ms/step (mean {:.3f}, min {:.3f}), {} tears, {} "
-        "vertices, {} elements, {} threads\n",
+        "vertices, {} elements, {} threads; set-up {:.1f} ms, peak RSS {:.1f} MiB\n",
         scene.name, steps, median * 1e-6, mean * 1e-6, sorted.front() * 1e-6, sim->tears(),
-        vertices, elements, thread_count());
+        vertices, elements, thread_count(), setup_ms, peak_rss_mb);
   }
   return 0;
 }

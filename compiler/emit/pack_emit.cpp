@@ -303,7 +303,7 @@ void write_declare(Writer& w, const PackModel& m) {
       const std::string orbit = orbit_code(e.orbit.dims);
       const std::string def = default_of(e);
       w.open("if (!g.has_embedding(" + name + ")) {");
-      w.line("g.add_embedding<" + storage_type(e.type) + ">(" + name + ", " + orbit + ", " +
+      w.line("g.declare_embedding<" + storage_type(e.type) + ">(" + name + ", " + orbit + ", " +
              policy_of(e) + ", " + storage_type(e.type) + "(" + def + "));");
       w.middle("} else if (g.find_column(" + name + ")->type() != " + value_type_enum(e.type) +
                " || !(g.attachment_of(" + name + ")->orbit() == " + orbit + ")) {");
@@ -319,7 +319,7 @@ void write_declare(Writer& w, const PackModel& m) {
     if (!ci.interaction->tagged) continue;
     const std::string name = quote(tag_embedding(ci.interaction->name.text));
     w.open("if (!g.has_embedding(" + name + ")) {");
-    w.line("g.add_embedding<rift::Bool>(" + name +
+    w.line("g.declare_embedding<rift::Bool>(" + name +
            ", rift::Orbit(), rift::MergePolicy::kKeepFirst, rift::Bool(false));");
     w.close();
   }

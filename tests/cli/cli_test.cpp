@@ -303,6 +303,10 @@ TEST_F(Cli, BenchJson) {
   EXPECT_EQ(j["steps"], 30);
   EXPECT_EQ(j["tears"], 0);
   EXPECT_EQ(j["vertices"], 49);
+  // Set-up time and the process's peak RSS (issue 12): present and plausible.
+  EXPECT_GT(j["setup_ms"].get<double>(), 0);
+  EXPECT_GT(j["peak_rss_mb"].get<double>(), 1);
+  EXPECT_LT(j["peak_rss_mb"].get<double>(), 1e5);
 }
 
 TEST_F(Cli, BadScenesExitWithFileLineAndReason) {

@@ -130,5 +130,80 @@ TEST(Embedding, DeletingDartsFreesSlots) {
   EXPECT_TRUE(map.is_valid());
 }
 
+// Declared embeddings hold no storage until first asked for (issue 12, lean
+// memory); until then every slot reads as the default, through sews, unsews,
+// new darts and compaction, and asking gives a column of the right size.
+TEST(Embedding, DeclaredColumnsGetStorageOnlyWhenAskedFor) {
+  GMap map = assemble_gmap(make_grid(GridKind::Quad, 3, 3));
+  map.declare_embedding<Vec3>("force", Orbit{}, MergePolicy::kKeepFirst, Vec3(1, 2, 3));
+  map.declare_embedding<Real>("k", Orbit{0}, MergePolicy::kSum, 0.0);
+  const ColumnBase* force = map.find_column("force");
+  const ColumnBase* k = map.find_column("k");
+  ASSERT_TRUE(force && k);
+  EXPECT_FALSE(force->allocated());
+  EXPECT_FALSE(k->allocated());
+  EXPECT_EQ(std::get<Vec3>(force->get(5)), Vec3(1, 2, 3));
+  // Tearing an interior edge (unsew) and adding darts: still no storage.
+  Dart inner = kNoDart;
+  map.for_each_dart([&](Dart d) {
+    if (inner == kNoDart && !map.is_free(d, 2)) inner = d;
+  });
+  ASSERT_NE(inner, kNoDart);
+  map.unsew(inner, 2);
+  const Dart fresh = map.create_darts(4);
+  map.link(fresh, fresh + 1, 0);
+  map.link(fresh + 2, fresh + 3, 0);
+  for (const auto& attachment : map.attachments())
+    map.assign_missing_slots(*attachment);
+  EXPECT_FALSE(force->allocated());
+  EXPECT_FALSE(k->allocated());
+  EXPECT_TRUE(map.is_valid());
+  // Asking allocates every slot, new darts included, holding the default.
+  Embedding<Vec3> f = map.embedding<Vec3>("force");
+  EXPECT_TRUE(force->allocated());
+  EXPECT_EQ(f.values().size(), f.attachment().slot_capacity());
+  map.for_each_dart([&](Dart d) { EXPECT_EQ(f[d], Vec3(1, 2, 3)) << d; });
+  // Once allocated, a column grows with the darts a rewrite creates.
+  const Dart more = map.create_darts(2);
+  for (const auto& attachment : map.attachments())
+    map.assign_missing_slots(*attachment);
+  f[more + 1] = Vec3(4, 5, 6);
+  EXPECT_EQ(f[more], Vec3(1, 2, 3));
+  EXPECT_EQ(f[more + 1], Vec3(4, 5, 6));
+  EXPECT_GE(f.values().size(), f.attachment().slot_capacity());
+  // Compaction keeps an unallocated column unallocated and sized right for later.
+  map.compact();
+  EXPECT_FALSE(k->allocated());
+  Embedding<Real> kk = map.embedding<Real>("k");
+  EXPECT_EQ(kk.values().size(), kk.attachment().slot_capacity());
+  EXPECT_EQ(kk[0], 0.0);
+  EXPECT_TRUE(map.is_valid());
+}
+
+// A sum of two non-zero defaults is not the default: such a merge needs
+// storage, and gets it; a zero default or a mean merges to itself without it.
+TEST(Embedding, UnallocatedColumnsMergeLikeAllocatedOnes) {
+  TwoTriangles t;
+  t.map.declare_embedding<Real>("sum_one", Orbit{1, 2}, MergePolicy::kSum, 1.0);
+  t.map.declare_embedding<Real>("sum_zero", Orbit{1, 2}, MergePolicy::kSum, 0.0);
+  t.map.declare_embedding<Real>("mean_two", Orbit{1, 2}, MergePolicy::kMean, 2.0);
+  ASSERT_TRUE(t.map.sew(t.a, t.b, 2));
+  EXPECT_TRUE(t.map.find_column("sum_one")->allocated());
+  EXPECT_FALSE(t.map.find_column("sum_zero")->allocated());
+  EXPECT_FALSE(t.map.find_column("mean_two")->allocated());
+  EXPECT_EQ(t.map.embedding<Real>("sum_one")[t.a], 2.0);
+  const Dart apex = t.map.alpha(t.map.alpha(t.map.alpha(t.a, 0), 1), 0);
+  EXPECT_EQ(t.map.embedding<Real>("sum_one")[apex], 1.0);  // a vertex the sew left alone
+  EXPECT_EQ(t.map.embedding<Real>("mean_two")[t.a], 2.0);
+  // Setting a value through the type-erased face allocates only when it differs.
+  ColumnBase* zero = t.map.find_column("sum_zero");
+  zero->set(0, Real(0));
+  EXPECT_FALSE(zero->allocated());
+  zero->set(0, Real(5));
+  EXPECT_TRUE(zero->allocated());
+  EXPECT_EQ(std::get<Real>(zero->get(0)), 5.0);
+  EXPECT_TRUE(t.map.is_valid());
+}
+
 }  // namespace
 }  // namespace rift

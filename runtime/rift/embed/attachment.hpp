@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "rift/core/huge_pages.hpp"
 #include "rift/embed/column.hpp"
 #include "rift/gmap/orbit.hpp"
 
@@ -44,23 +45,33 @@ class OrbitAttachment {
     column->resize(slot_capacity());
     columns_.push_back(std::move(column));
   }
-  void resize_darts(std::size_t capacity) { slot_of_dart_.resize(capacity, kNoSlot); }
+  void resize_darts(std::size_t capacity) { grow_huge(slot_of_dart_, capacity, kNoSlot); }
 
   /// A fresh slot holding every column's default value, not yet owned by any dart.
   Slot allocate_slot() {
-    Slot s;
-    if (!free_slots_.empty()) {
-      s = free_slots_.back();
-      free_slots_.pop_back();
-    } else {
-      s = static_cast<Slot>(dart_count_.size());
+    const Slot s = reserve_slot();
+    grow_columns();
+    return s;
+  }
+
+  /// A fresh slot like allocate_slot, but a slot past the columns' end is
+  /// left for grow_columns() to fill: giving many orbits slots at once then
+  /// grows each column once rather than once per slot.
+  Slot reserve_slot() {
+    if (free_slots_.empty()) {
       dart_count_.push_back(0);
-      for (auto& c : columns_)
-        c->resize(dart_count_.size());
+      return static_cast<Slot>(dart_count_.size() - 1);
     }
+    const Slot s = free_slots_.back();
+    free_slots_.pop_back();
     for (auto& c : columns_)
       c->set_default(s);
     return s;
+  }
+  /// Gives every column a value (the default) for each slot reserve_slot appended.
+  void grow_columns() {
+    for (auto& c : columns_)
+      c->resize(dart_count_.size());
   }
 
   void assign(Dart d, Slot s) {

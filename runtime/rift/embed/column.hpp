@@ -1,10 +1,20 @@
 // A typed column of embedding values, indexed by slot (one slot per orbit).
+//
+// A column holds no storage until it is first asked for its values (issue 12,
+// lean memory): a pack declares every embedding its interactions might use,
+// but a scene that uses only some of them pays only for those. While a column
+// is unallocated every slot reads as the default, which is exactly what its
+// storage would hold, so topology changes (copy, merge, compaction) have
+// nothing to do for it.
 #pragma once
+
+#include <cassert>
 
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "rift/core/huge_pages.hpp"
 #include "rift/embed/value.hpp"
 
 namespace rift {
@@ -23,6 +33,11 @@ class ColumnBase {
   ValueType type() const { return type_; }
   MergePolicy policy() const { return policy_; }
 
+  /// True once the column has storage (see the file comment).
+  bool allocated() const { return allocated_; }
+  /// Gives the column storage for every slot, holding the default value.
+  virtual void allocate() = 0;
+
   virtual void resize(std::size_t slots) = 0;
   virtual void copy_slot(Slot from, Slot to) = 0;
   /// Combines the value of `from` into `into` following the merge policy.
@@ -32,6 +47,9 @@ class ColumnBase {
   virtual Value get(Slot s) const = 0;
   virtual void set(Slot s, const Value& v) = 0;
   virtual std::unique_ptr<ColumnBase> clone() const = 0;
+
+ protected:
+  bool allocated_ = false;
 
  private:
   std::string name_;
@@ -44,17 +62,67 @@ class Column final : public ColumnBase {
  public:
   Column(std::string name, MergePolicy policy, T default_value)
       : ColumnBase(std::move(name), ValueTypeOf<T>::value, policy),
-        default_(std::move(default_value)) {}
+        default_(std::move(default_value)) {
+    T merged = default_;
+    merge(merged, default_);
+    default_survives_merge_ = merged == default_;
+  }
 
-  std::vector<T>& values() { return values_; }
-  const std::vector<T>& values() const { return values_; }
+  /// The values by slot; only once allocated (GMap::embedding allocates).
+  std::vector<T>& values() {
+    assert(allocated_);
+    return values_;
+  }
+  const std::vector<T>& values() const {
+    assert(allocated_);
+    return values_;
+  }
   const T& default_value() const { return default_; }
 
-  void resize(std::size_t slots) override { values_.resize(slots, default_); }
-  void copy_slot(Slot from, Slot to) override { values_[to] = values_[from]; }
+  void allocate() override {
+    if (allocated_) return;
+    grow_huge(values_, slots_, default_);
+    allocated_ = true;
+  }
+  void resize(std::size_t slots) override {
+    slots_ = slots;
+    if (allocated_) grow_huge(values_, slots, default_);
+  }
+  void copy_slot(Slot from, Slot to) override {
+    if (allocated_) values_[to] = values_[from];
+  }
   void merge_into(Slot into, Slot from) override {
-    T& a = values_[into];
-    const T& b = values_[from];
+    if (!allocated_) {
+      // Two defaults merge into the default under every policy but a sum of
+      // non-zero defaults: only then does the merged value need storage.
+      if (default_survives_merge_) return;
+      allocate();
+    }
+    merge(values_[into], values_[from]);
+  }
+  bool equal(Slot a, Slot b) const override { return !allocated_ || values_[a] == values_[b]; }
+  void set_default(Slot s) override {
+    if (allocated_) values_[s] = default_;
+  }
+  Value get(Slot s) const override { return allocated_ ? values_[s] : default_; }
+  void set(Slot s, const Value& v) override {
+    const T& value = std::get<T>(v);
+    if (!allocated_) {
+      if (value == default_) return;
+      allocate();
+    }
+    values_[s] = value;
+  }
+  std::unique_ptr<ColumnBase> clone() const override {
+    auto c = std::make_unique<Column<T>>(name(), policy(), default_);
+    c->values_ = values_;
+    c->slots_ = slots_;
+    c->allocated_ = allocated_;
+    return c;
+  }
+
+ private:
+  void merge(T& a, const T& b) const {
     switch (policy()) {
       case MergePolicy::kKeepFirst:
       case MergePolicy::kRefuse:
@@ -77,19 +145,11 @@ class Column final : public ColumnBase {
         break;
     }
   }
-  bool equal(Slot a, Slot b) const override { return values_[a] == values_[b]; }
-  void set_default(Slot s) override { values_[s] = default_; }
-  Value get(Slot s) const override { return values_[s]; }
-  void set(Slot s, const Value& v) override { values_[s] = std::get<T>(v); }
-  std::unique_ptr<ColumnBase> clone() const override {
-    auto c = std::make_unique<Column<T>>(name(), policy(), default_);
-    c->values_ = values_;
-    return c;
-  }
 
- private:
   std::vector<T> values_;
+  std::size_t slots_ = 0;  // the attachment's slot capacity, allocated or not
   T default_;
+  bool default_survives_merge_ = true;
 };
 
 }  // namespace rift

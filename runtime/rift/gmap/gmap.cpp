@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "rift/core/huge_pages.hpp"
+
 namespace rift {
 
 GMap::GMap(int dimension) : dimension_(dimension) {
@@ -15,10 +17,13 @@ GMap::GMap(int dimension) : dimension_(dimension) {
 
 void GMap::reserve(std::size_t count) {
   const std::size_t want = alive_.size() + count;
-  for (int i = 0; i <= dimension_; ++i)
+  for (int i = 0; i <= dimension_; ++i) {
     alpha_[i].reserve(want);
+    advise_huge_pages(alpha_[i].data(), alpha_[i].capacity() * sizeof(Dart));
+  }
   alive_.reserve(want);
   mark_bits_.reserve(want);
+  advise_huge_pages(mark_bits_.data(), mark_bits_.capacity() * sizeof(std::uint32_t));
 }
 
 Dart GMap::create_dart() {
@@ -48,12 +53,12 @@ Dart GMap::create_darts(std::size_t count) {
   if (first + count >= kNoDart) throw std::length_error("G-map: out of 32-bit dart indices");
   const std::size_t end = first + count;
   for (int i = 0; i <= dimension_; ++i) {
-    alpha_[i].resize(end);
+    grow_huge(alpha_[i], end, Dart{0});
     for (std::size_t d = first; d < end; ++d)
       alpha_[i][d] = static_cast<Dart>(d);
   }
-  alive_.resize(end, 1);
-  mark_bits_.resize(end, 0);
+  grow_huge(alive_, end, std::uint8_t{1});
+  grow_huge(mark_bits_, end, std::uint32_t{0});
   for (auto& att : attachments_)
     att->resize_darts(end);
   return static_cast<Dart>(first);
@@ -191,13 +196,16 @@ OrbitAttachment* GMap::attachment_of(std::string_view name) const {
 
 void GMap::assign_missing_slots(OrbitAttachment& att) {
   const Orbit o = att.orbit();
+  // The columns grow once at the end: growing each of them by one value per
+  // new orbit dominated the set-up of large meshes (issue 12).
   for_each_dart([&](Dart d) {
     if (att.slot(d) != kNoSlot) return;
-    const Slot s = att.allocate_slot();
+    const Slot s = att.reserve_slot();
     for_each_in_orbit(d, o, [&](Dart x) {
       if (att.slot(x) == kNoSlot) att.assign(x, s);
     });
   });
+  att.grow_columns();
 }
 
 // ---- validity -------------------------------------------------------------------------

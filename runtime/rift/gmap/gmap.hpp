@@ -158,6 +158,14 @@ class GMap {
   template <class T>
   Embedding<T> add_embedding(std::string name, Orbit orbit,
                              MergePolicy policy = MergePolicy::kKeepFirst, T default_value = T{});
+  /// Declares an embedding column like add_embedding, without storage for its
+  /// values until the first embedding<T>(name): packs declare every embedding
+  /// they might use, and a scene pays only for those its components read.
+  template <class T>
+  void declare_embedding(std::string name, Orbit orbit,
+                         MergePolicy policy = MergePolicy::kKeepFirst, T default_value = T{});
+  /// Typed access to a declared embedding (empty when there is none); gives
+  /// the column its storage if it had none yet, hence not thread-safe.
   template <class T>
   Embedding<T> embedding(std::string_view name) const;
   bool has_embedding(std::string_view name) const { return find_column(name) != nullptr; }
@@ -333,17 +341,21 @@ void GMap::for_each_cell(Orbit o, F&& f) const {
 template <class T>
 Embedding<T> GMap::add_embedding(std::string name, Orbit orbit, MergePolicy policy,
                                  T default_value) {
+  const std::string key = name;
+  declare_embedding<T>(std::move(name), orbit, policy, std::move(default_value));
+  return embedding<T>(key);
+}
+
+template <class T>
+void GMap::declare_embedding(std::string name, Orbit orbit, MergePolicy policy, T default_value) {
   if (find_column(name)) throw std::invalid_argument("embedding '" + name + "' already exists");
   if (!orbit.fits(dimension_)) {
     throw std::invalid_argument("embedding '" + name + "': orbit " + orbit.str() +
                                 " does not fit a map of dimension " + std::to_string(dimension_));
   }
   OrbitAttachment& att = attachment_for(orbit);
-  auto column = std::make_unique<Column<T>>(std::move(name), policy, std::move(default_value));
-  Column<T>* raw = column.get();
-  att.add_column(std::move(column));
+  att.add_column(std::make_unique<Column<T>>(std::move(name), policy, std::move(default_value)));
   assign_missing_slots(att);
-  return Embedding<T>(&att, raw);
 }
 
 template <class T>
@@ -354,6 +366,7 @@ Embedding<T> GMap::embedding(std::string_view name) const {
         throw std::invalid_argument("embedding '" + std::string(name) + "' holds " +
                                     std::string(to_string(c->type())) + " values");
       }
+      c->allocate();
       return Embedding<T>(att.get(), static_cast<Column<T>*>(c));
     }
   }

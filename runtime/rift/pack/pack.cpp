@@ -8,7 +8,7 @@ namespace {
 
 template <class T>
 void declare_one(GMap& map, const EmbeddingDecl& d) {
-  map.add_embedding<T>(d.name, d.orbit, d.policy, std::get<T>(d.default_value));
+  map.declare_embedding<T>(d.name, d.orbit, d.policy, std::get<T>(d.default_value));
 }
 
 }  // namespace

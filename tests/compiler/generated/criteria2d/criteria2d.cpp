@@ -388,87 +388,87 @@ namespace {
 
 void declare_embeddings(rift::GMap& g) {
   if (!g.has_embedding("vertex_force")) {
-    g.add_embedding<rift::Vec3>("vertex_force", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+    g.declare_embedding<rift::Vec3>("vertex_force", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
   } else if (g.find_column("vertex_force")->type() != rift::ValueType::kVec3 || !(g.attachment_of("vertex_force")->orbit() == rift::Orbit{1, 2})) {
     throw std::invalid_argument("the map's embedding 'vertex_force' is not the pack's vec3 on <1,2>");
   }
   if (!g.has_embedding("stretch_rest")) {
-    g.add_embedding<rift::Real>("stretch_rest", rift::Orbit{0}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+    g.declare_embedding<rift::Real>("stretch_rest", rift::Orbit{0}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
   } else if (g.find_column("stretch_rest")->type() != rift::ValueType::kReal || !(g.attachment_of("stretch_rest")->orbit() == rift::Orbit{0})) {
     throw std::invalid_argument("the map's embedding 'stretch_rest' is not the pack's real on <0>");
   }
   if (!g.has_embedding("membrane_mu")) {
-    g.add_embedding<rift::Real>("membrane_mu", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+    g.declare_embedding<rift::Real>("membrane_mu", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
   } else if (g.find_column("membrane_mu")->type() != rift::ValueType::kReal || !(g.attachment_of("membrane_mu")->orbit() == rift::Orbit{0, 1})) {
     throw std::invalid_argument("the map's embedding 'membrane_mu' is not the pack's real on <0,1>");
   }
   if (!g.has_embedding("membrane_lambda")) {
-    g.add_embedding<rift::Real>("membrane_lambda", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+    g.declare_embedding<rift::Real>("membrane_lambda", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
   } else if (g.find_column("membrane_lambda")->type() != rift::ValueType::kReal || !(g.attachment_of("membrane_lambda")->orbit() == rift::Orbit{0, 1})) {
     throw std::invalid_argument("the map's embedding 'membrane_lambda' is not the pack's real on <0,1>");
   }
   if (!g.has_embedding("side")) {
-    g.add_embedding<rift::Bool>("side", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Bool(false));
+    g.declare_embedding<rift::Bool>("side", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Bool(false));
   } else if (g.find_column("side")->type() != rift::ValueType::kBool || !(g.attachment_of("side")->orbit() == rift::Orbit{0, 1})) {
     throw std::invalid_argument("the map's embedding 'side' is not the pack's bool on <0,1>");
   }
   if (!g.has_embedding("position")) {
-    g.add_embedding<rift::Vec3>("position", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3::Zero()));
+    g.declare_embedding<rift::Vec3>("position", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3::Zero()));
   } else if (g.find_column("position")->type() != rift::ValueType::kVec3 || !(g.attachment_of("position")->orbit() == rift::Orbit{1, 2})) {
     throw std::invalid_argument("the map's embedding 'position' is not the pack's vec3 on <1,2>");
   }
   if (!g.has_embedding("velocity")) {
-    g.add_embedding<rift::Vec3>("velocity", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+    g.declare_embedding<rift::Vec3>("velocity", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
   } else if (g.find_column("velocity")->type() != rift::ValueType::kVec3 || !(g.attachment_of("velocity")->orbit() == rift::Orbit{1, 2})) {
     throw std::invalid_argument("the map's embedding 'velocity' is not the pack's vec3 on <1,2>");
   }
   if (!g.has_embedding("corner_mass")) {
-    g.add_embedding<rift::Real>("corner_mass", rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+    g.declare_embedding<rift::Real>("corner_mass", rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
   } else if (g.find_column("corner_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("corner_mass")->orbit() == rift::Orbit{1})) {
     throw std::invalid_argument("the map's embedding 'corner_mass' is not the pack's real on <1>");
   }
   if (!g.has_embedding("vertex_mass")) {
-    g.add_embedding<rift::Real>("vertex_mass", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+    g.declare_embedding<rift::Real>("vertex_mass", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
   } else if (g.find_column("vertex_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("vertex_mass")->orbit() == rift::Orbit{1, 2})) {
     throw std::invalid_argument("the map's embedding 'vertex_mass' is not the pack's real on <1,2>");
   }
   if (!g.has_embedding("f_stretch")) {
-    g.add_embedding<rift::Vec3>("f_stretch", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+    g.declare_embedding<rift::Vec3>("f_stretch", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
   } else if (g.find_column("f_stretch")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_stretch")->orbit() == rift::Orbit{})) {
     throw std::invalid_argument("the map's embedding 'f_stretch' is not the pack's vec3 on <>");
   }
   if (!g.has_embedding("f_shear")) {
-    g.add_embedding<rift::Vec3>("f_shear", rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+    g.declare_embedding<rift::Vec3>("f_shear", rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
   } else if (g.find_column("f_shear")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_shear")->orbit() == rift::Orbit{1})) {
     throw std::invalid_argument("the map's embedding 'f_shear' is not the pack's vec3 on <1>");
   }
   if (!g.has_embedding("f_bend")) {
-    g.add_embedding<rift::Vec3>("f_bend", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+    g.declare_embedding<rift::Vec3>("f_bend", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
   } else if (g.find_column("f_bend")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_bend")->orbit() == rift::Orbit{})) {
     throw std::invalid_argument("the map's embedding 'f_bend' is not the pack's vec3 on <>");
   }
   if (!g.has_embedding("f_ashear")) {
-    g.add_embedding<rift::Vec3>("f_ashear", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+    g.declare_embedding<rift::Vec3>("f_ashear", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
   } else if (g.find_column("f_ashear")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_ashear")->orbit() == rift::Orbit{})) {
     throw std::invalid_argument("the map's embedding 'f_ashear' is not the pack's vec3 on <>");
   }
   if (!g.has_embedding("f_ashear_end")) {
-    g.add_embedding<rift::Vec3>("f_ashear_end", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+    g.declare_embedding<rift::Vec3>("f_ashear_end", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
   } else if (g.find_column("f_ashear_end")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_ashear_end")->orbit() == rift::Orbit{})) {
     throw std::invalid_argument("the map's embedding 'f_ashear_end' is not the pack's vec3 on <>");
   }
   if (!g.has_embedding("f_abend")) {
-    g.add_embedding<rift::Vec3>("f_abend", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+    g.declare_embedding<rift::Vec3>("f_abend", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
   } else if (g.find_column("f_abend")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_abend")->orbit() == rift::Orbit{})) {
     throw std::invalid_argument("the map's embedding 'f_abend' is not the pack's vec3 on <>");
   }
   if (!g.has_embedding("f_abend_wing")) {
-    g.add_embedding<rift::Vec3>("f_abend_wing", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+    g.declare_embedding<rift::Vec3>("f_abend_wing", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
   } else if (g.find_column("f_abend_wing")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_abend_wing")->orbit() == rift::Orbit{})) {
     throw std::invalid_argument("the map's embedding 'f_abend_wing' is not the pack's vec3 on <>");
   }
   if (!g.has_embedding("f_membrane")) {
-    g.add_embedding<rift::Vec3>("f_membrane", rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+    g.declare_embedding<rift::Vec3>("f_membrane", rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
   } else if (g.find_column("f_membrane")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_membrane")->orbit() == rift::Orbit{1})) {
     throw std::invalid_argument("the map's embedding 'f_membrane' is not the pack's vec3 on <1>");
   }

@@ -316,100 +316,100 @@ namespace {
 
 void declare_embeddings(rift::GMap& g) {
   if (!g.has_embedding("stretch_k")) {
-    g.add_embedding<rift::Real>("stretch_k", rift::Orbit{0}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+    g.declare_embedding<rift::Real>("stretch_k", rift::Orbit{0}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
   } else if (g.find_column("stretch_k")->type() != rift::ValueType::kReal || !(g.attachment_of("stretch_k")->orbit() == rift::Orbit{0})) {
     throw std::invalid_argument("the map's embedding 'stretch_k' is not the pack's real on <0>");
   }
   if (!g.has_embedding("stretch_rest")) {
-    g.add_embedding<rift::Real>("stretch_rest", rift::Orbit{0}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+    g.declare_embedding<rift::Real>("stretch_rest", rift::Orbit{0}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
   } else if (g.find_column("stretch_rest")->type() != rift::ValueType::kReal || !(g.attachment_of("stretch_rest")->orbit() == rift::Orbit{0})) {
     throw std::invalid_argument("the map's embedding 'stretch_rest' is not the pack's real on <0>");
   }
   if (!g.has_embedding("shear_k")) {
-    g.add_embedding<rift::Real>("shear_k", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+    g.declare_embedding<rift::Real>("shear_k", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
   } else if (g.find_column("shear_k")->type() != rift::ValueType::kReal || !(g.attachment_of("shear_k")->orbit() == rift::Orbit{0, 1})) {
     throw std::invalid_argument("the map's embedding 'shear_k' is not the pack's real on <0,1>");
   }
   if (!g.has_embedding("shear_rest02")) {
-    g.add_embedding<rift::Real>("shear_rest02", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+    g.declare_embedding<rift::Real>("shear_rest02", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
   } else if (g.find_column("shear_rest02")->type() != rift::ValueType::kReal || !(g.attachment_of("shear_rest02")->orbit() == rift::Orbit{0, 1})) {
     throw std::invalid_argument("the map's embedding 'shear_rest02' is not the pack's real on <0,1>");
   }
   if (!g.has_embedding("shear_rest13")) {
-    g.add_embedding<rift::Real>("shear_rest13", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+    g.declare_embedding<rift::Real>("shear_rest13", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
   } else if (g.find_column("shear_rest13")->type() != rift::ValueType::kReal || !(g.attachment_of("shear_rest13")->orbit() == rift::Orbit{0, 1})) {
     throw std::invalid_argument("the map's embedding 'shear_rest13' is not the pack's real on <0,1>");
   }
   if (!g.has_embedding("vshear_k")) {
-    g.add_embedding<rift::Real>("vshear_k", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+    g.declare_embedding<rift::Real>("vshear_k", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
   } else if (g.find_column("vshear_k")->type() != rift::ValueType::kReal || !(g.attachment_of("vshear_k")->orbit() == rift::Orbit{0, 1, 2})) {
     throw std::invalid_argument("the map's embedding 'vshear_k' is not the pack's real on <0,1,2>");
   }
   if (!g.has_embedding("vshear_rest0")) {
-    g.add_embedding<rift::Real>("vshear_rest0", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+    g.declare_embedding<rift::Real>("vshear_rest0", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
   } else if (g.find_column("vshear_rest0")->type() != rift::ValueType::kReal || !(g.attachment_of("vshear_rest0")->orbit() == rift::Orbit{0, 1, 2})) {
     throw std::invalid_argument("the map's embedding 'vshear_rest0' is not the pack's real on <0,1,2>");
   }
   if (!g.has_embedding("vshear_rest1")) {
-    g.add_embedding<rift::Real>("vshear_rest1", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+    g.declare_embedding<rift::Real>("vshear_rest1", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
   } else if (g.find_column("vshear_rest1")->type() != rift::ValueType::kReal || !(g.attachment_of("vshear_rest1")->orbit() == rift::Orbit{0, 1, 2})) {
     throw std::invalid_argument("the map's embedding 'vshear_rest1' is not the pack's real on <0,1,2>");
   }
   if (!g.has_embedding("vshear_rest2")) {
-    g.add_embedding<rift::Real>("vshear_rest2", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+    g.declare_embedding<rift::Real>("vshear_rest2", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
   } else if (g.find_column("vshear_rest2")->type() != rift::ValueType::kReal || !(g.attachment_of("vshear_rest2")->orbit() == rift::Orbit{0, 1, 2})) {
     throw std::invalid_argument("the map's embedding 'vshear_rest2' is not the pack's real on <0,1,2>");
   }
   if (!g.has_embedding("vshear_rest3")) {
-    g.add_embedding<rift::Real>("vshear_rest3", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+    g.declare_embedding<rift::Real>("vshear_rest3", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
   } else if (g.find_column("vshear_rest3")->type() != rift::ValueType::kReal || !(g.attachment_of("vshear_rest3")->orbit() == rift::Orbit{0, 1, 2})) {
     throw std::invalid_argument("the map's embedding 'vshear_rest3' is not the pack's real on <0,1,2>");
   }
   if (!g.has_embedding("position")) {
-    g.add_embedding<rift::Vec3>("position", rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3::Zero()));
+    g.declare_embedding<rift::Vec3>("position", rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3::Zero()));
   } else if (g.find_column("position")->type() != rift::ValueType::kVec3 || !(g.attachment_of("position")->orbit() == rift::Orbit{1, 2, 3})) {
     throw std::invalid_argument("the map's embedding 'position' is not the pack's vec3 on <1,2,3>");
   }
   if (!g.has_embedding("velocity")) {
-    g.add_embedding<rift::Vec3>("velocity", rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+    g.declare_embedding<rift::Vec3>("velocity", rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
   } else if (g.find_column("velocity")->type() != rift::ValueType::kVec3 || !(g.attachment_of("velocity")->orbit() == rift::Orbit{1, 2, 3})) {
     throw std::invalid_argument("the map's embedding 'velocity' is not the pack's vec3 on <1,2,3>");
   }
   if (!g.has_embedding("corner_mass")) {
-    g.add_embedding<rift::Real>("corner_mass", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+    g.declare_embedding<rift::Real>("corner_mass", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
   } else if (g.find_column("corner_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("corner_mass")->orbit() == rift::Orbit{1, 2})) {
     throw std::invalid_argument("the map's embedding 'corner_mass' is not the pack's real on <1,2>");
   }
   if (!g.has_embedding("vertex_mass")) {
-    g.add_embedding<rift::Real>("vertex_mass", rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+    g.declare_embedding<rift::Real>("vertex_mass", rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
   } else if (g.find_column("vertex_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("vertex_mass")->orbit() == rift::Orbit{1, 2, 3})) {
     throw std::invalid_argument("the map's embedding 'vertex_mass' is not the pack's real on <1,2,3>");
   }
   if (!g.has_embedding("f_stretch")) {
-    g.add_embedding<rift::Vec3>("f_stretch", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+    g.declare_embedding<rift::Vec3>("f_stretch", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
   } else if (g.find_column("f_stretch")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_stretch")->orbit() == rift::Orbit{})) {
     throw std::invalid_argument("the map's embedding 'f_stretch' is not the pack's vec3 on <>");
   }
   if (!g.has_embedding("f_shear")) {
-    g.add_embedding<rift::Vec3>("f_shear", rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+    g.declare_embedding<rift::Vec3>("f_shear", rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
   } else if (g.find_column("f_shear")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_shear")->orbit() == rift::Orbit{1})) {
     throw std::invalid_argument("the map's embedding 'f_shear' is not the pack's vec3 on <1>");
   }
   if (!g.has_embedding("f_volume_shear")) {
-    g.add_embedding<rift::Vec3>("f_volume_shear", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+    g.declare_embedding<rift::Vec3>("f_volume_shear", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
   } else if (g.find_column("f_volume_shear")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_volume_shear")->orbit() == rift::Orbit{1, 2})) {
     throw std::invalid_argument("the map's embedding 'f_volume_shear' is not the pack's vec3 on <1,2>");
   }
   if (!g.has_embedding("f_fem")) {
-    g.add_embedding<rift::Vec3>("f_fem", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+    g.declare_embedding<rift::Vec3>("f_fem", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
   } else if (g.find_column("f_fem")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_fem")->orbit() == rift::Orbit{1, 2})) {
     throw std::invalid_argument("the map's embedding 'f_fem' is not the pack's vec3 on <1,2>");
   }
   if (!g.has_embedding("shear_first_dart")) {
-    g.add_embedding<rift::Bool>("shear_first_dart", rift::Orbit(), rift::MergePolicy::kKeepFirst, rift::Bool(false));
+    g.declare_embedding<rift::Bool>("shear_first_dart", rift::Orbit(), rift::MergePolicy::kKeepFirst, rift::Bool(false));
   }
   if (!g.has_embedding("volume_shear_first_dart")) {
-    g.add_embedding<rift::Bool>("volume_shear_first_dart", rift::Orbit(), rift::MergePolicy::kKeepFirst, rift::Bool(false));
+    g.declare_embedding<rift::Bool>("volume_shear_first_dart", rift::Orbit(), rift::MergePolicy::kKeepFirst, rift::Bool(false));
   }
 }
 
