@@ -136,6 +136,9 @@ class GMap {
   void for_each_in_orbit(Dart d, Orbit o, F&& f) const;
   /// Marks every dart of <o>(d) with m (darts already marked stop the walk).
   void mark_orbit(Dart d, Orbit o, Mark m) const;
+  /// Unmarks the marked darts connected to d through <o> (all of <o>(d) when
+  /// mark_orbit marked it): costs what was marked, not the whole map.
+  void unmark_orbit(Dart d, Orbit o, Mark m) const;
   std::size_t orbit_size(Dart d, Orbit o) const;
   bool in_same_orbit(Dart a, Dart b, Orbit o) const;
 
@@ -305,9 +308,16 @@ void GMap::for_each_sub_orbit(Dart d, Orbit o, Orbit sub, F&& f) const {
   });
   guard.done = true;
   // Every dart of a sub-orbit lies in <o>(d) when sub is contained in o;
-  // otherwise marks may spill outside, so clear by sweeping what was marked.
+  // otherwise marks spill outside (a vertex's faces reach past the vertex),
+  // and each marked sub-orbit is unmarked from its dart in <o>(d): the cost
+  // is what was marked, where sweeping the whole map would make a pass over
+  // every vertex quadratic in the map's size.
   if ((sub.mask() & ~o.mask()) == 0) {
     for_each_in_orbit(d, o, [&](Dart x) { unmark(x, m); });
+  } else {
+    for_each_in_orbit(d, o, [&](Dart x) {
+      if (is_marked(x, m)) unmark_orbit(x, sub, m);
+    });
   }
   free_mark(m);
 }
