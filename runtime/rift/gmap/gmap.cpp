@@ -141,27 +141,6 @@ void GMap::mark_orbit(Dart d, Orbit o, Mark m) const {
   release_scratch();
 }
 
-void GMap::unmark_orbit(Dart d, Orbit o, Mark m) const {
-  if (!is_marked(d, m)) return;
-  std::vector<Dart>& stack = acquire_scratch();
-  stack.clear();
-  unmark(d, m);
-  stack.push_back(d);
-  while (!stack.empty()) {
-    const Dart x = stack.back();
-    stack.pop_back();
-    for (int i = 0; i <= dimension_; ++i) {
-      if (!o.contains(i)) continue;
-      const Dart y = alpha_[i][x];
-      if (is_marked(y, m)) {
-        unmark(y, m);
-        stack.push_back(y);
-      }
-    }
-  }
-  release_scratch();
-}
-
 std::size_t GMap::orbit_size(Dart d, Orbit o) const {
   std::size_t n = 0;
   for_each_in_orbit(d, o, [&](Dart) { ++n; });
