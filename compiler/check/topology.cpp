@@ -1,6 +1,8 @@
 #include "check/topology.hpp"
 
 #include <algorithm>
+#include <cstdlib>
+#include <optional>
 #include <set>
 
 #include "check/types.hpp"
@@ -302,6 +304,130 @@ std::vector<CheckedRule> check_rules(const ast::Program& program, diag::Diagnost
   return out;
 }
 
+namespace {
+
+/// `word` (alpha indices, applied left to right) in a shorter equal form:
+/// alpha_i is an involution, and alpha_i, alpha_j commute when |i - j| >= 2
+/// (the G-map condition), so two equal letters separated only by letters
+/// that commute with them cancel.
+std::vector<int> reduced(std::vector<int> word) {
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t i = 0; i < word.size() && !changed; ++i) {
+      for (std::size_t j = i + 1; j < word.size(); ++j) {
+        if (word[j] == word[i]) {
+          word.erase(word.begin() + static_cast<std::ptrdiff_t>(j));
+          word.erase(word.begin() + static_cast<std::ptrdiff_t>(i));
+          changed = true;
+          break;
+        }
+        if (std::abs(word[j] - word[i]) < 2) break;  // does not commute: stop looking
+      }
+    }
+  }
+  return word;
+}
+
+bool within(const std::vector<int>& word, const std::vector<int>& dims) {
+  for (int d : word) {
+    if (std::find(dims.begin(), dims.end(), d) == dims.end()) return false;
+  }
+  return true;
+}
+
+std::string orbit_text(const std::vector<int>& dims) {
+  std::string out = "<";
+  for (std::size_t k = 0; k < dims.size(); ++k) {
+    if (k) out += ',';
+    out += std::to_string(dims[k]);
+  }
+  return out + ">";
+}
+
+std::string word_text(const std::vector<int>& word) {
+  std::string out;
+  for (int d : word) {
+    out += '@';
+    out += std::to_string(d);
+  }
+  return out;
+}
+
+/// Each stored force orbit belongs to exactly one match (matches run in
+/// parallel and write stored forces without synchronisation). A match is one
+/// orbit of the support, reached from one dart c; a node of the pattern is
+/// c followed by the alpha word of its path from the hook. Two matches write
+/// the same place only if (a) the stored orbit is not inside the support
+/// orbit, for an embedding on a non-empty orbit, or (b) for an embedding on
+/// darts (<>), two nodes storing it are related by a word that leaves the
+/// support: the same node of two matches is never the same dart (a word of
+/// involutions is a bijection).
+void check_force_ownership(const ast::Interaction& inter, const RuleGraph& g,
+                           diag::Diagnostics& diags) {
+  const PatternSide& side = g.left;
+  if (g.hooks.empty()) return;
+  // The word of each node from the hook, breadth-first along explicit arcs.
+  std::vector<std::optional<std::vector<int>>> path(side.nodes.size());
+  std::vector<int> queue = {g.hooks[0]};
+  path[static_cast<std::size_t>(g.hooks[0])] = std::vector<int>{};
+  for (std::size_t q = 0; q < queue.size(); ++q) {
+    const int v = queue[q];
+    for (const GraphArc& arc : side.arcs) {
+      const int other = arc.a == v ? arc.b : arc.b == v ? arc.a : -1;
+      if (other < 0 || path[static_cast<std::size_t>(other)]) continue;
+      std::vector<int> w = *path[static_cast<std::size_t>(v)];
+      w.push_back(arc.dim);
+      path[static_cast<std::size_t>(other)] = w;
+      queue.push_back(other);
+    }
+  }
+  const std::vector<int>& support = inter.support.dims;
+  std::vector<const ast::Assign*> darts;  // stores into embeddings on <>
+  for (const ast::Assign& f : inter.forces) {
+    if (!f.target) continue;
+    const int node = side.find(f.node.text);
+    if (node < 0 || !path[static_cast<std::size_t>(node)]) continue;
+    const std::vector<int> word = reduced(*path[static_cast<std::size_t>(node)]);
+    if (f.target->orbit.dims.empty()) {
+      darts.push_back(&f);
+      continue;
+    }
+    if (within(f.target->orbit.dims, support) && within(word, support)) continue;
+    diags
+        .error(f.embedding.loc,
+               "'" + f.embedding.text + "' is stored per orbit " +
+                   orbit_text(f.target->orbit.dims) + " at '" + f.node.text +
+                   "', which is not inside the support orbit " + orbit_text(inter.support.dims) +
+                   " of the match: two matches could store into " +
+                   "the same orbit (stored forces are written, not added); store it on an " +
+                   "orbit inside the support, or on darts")
+        .notes.push_back({f.target->orbit.loc, "its orbit"});
+  }
+  for (std::size_t i = 0; i < darts.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      const ast::Assign& a = *darts[j];
+      const ast::Assign& b = *darts[i];
+      if (a.embedding.text != b.embedding.text || a.node.text == b.node.text) continue;
+      // c' with c'.w_b == c.w_a: c' = c.w_a.reverse(w_b).
+      std::vector<int> w = *path[static_cast<std::size_t>(side.find(a.node.text))];
+      const std::vector<int>& pb = *path[static_cast<std::size_t>(side.find(b.node.text))];
+      w.insert(w.end(), pb.rbegin(), pb.rend());
+      const std::vector<int> between = reduced(w);
+      if (within(between, support)) continue;
+      diags
+          .error(b.embedding.loc,
+                 "'" + b.embedding.text + "' is stored at '" + a.node.text + "' and at '" +
+                     b.node.text + "', which are " + a.node.text + word_text(between) +
+                     " apart, outside the support orbit " + orbit_text(inter.support.dims) +
+                     ": the '" + a.node.text + "' of one match can be the '" + b.node.text +
+                     "' of another, and both write it (stored forces are written, not added)")
+          .notes.push_back({a.embedding.loc, "the other store"});
+    }
+  }
+}
+
+}  // namespace
+
 std::vector<CheckedInteraction> check_interactions(const ast::Program& program,
                                                    diag::Diagnostics& diags) {
   std::vector<CheckedInteraction> out;
@@ -363,6 +489,7 @@ std::vector<CheckedInteraction> check_interactions(const ast::Program& program,
               .notes.push_back({f.target->orbit.loc, "its orbit"});
         }
       }
+      if (rc.ok() && diags.error_count() == before) check_force_ownership(inter, ci.graph, diags);
       ci.ok = rc.ok() && diags.error_count() == before;
       out.push_back(std::move(ci));
     }

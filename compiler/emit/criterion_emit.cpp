@@ -5,17 +5,32 @@
 // simulators and scripts that apply them by name with run-time arguments.
 #include "emit/emit_context.hpp"
 #include "emit/names.hpp"
+#include "lower/criterion_plan.hpp"
 
 namespace rift::emit {
 
 namespace {
 
-ExprContext criterion_context() {
-  ExprContext ctx;
-  ctx.dart = [](const std::string& node) { return dart_name(node); };
+RenderContext criterion_context(const ir::Body& body) {
+  RenderContext ctx;
+  ctx.dart = [&body](int node) { return dart_name(body.nodes[static_cast<std::size_t>(node)]); };
   ctx.args = "p_";
   ctx.params = "pack_";
   return ctx;
+}
+
+/// The lets in `wanted` not written yet, in source order; each is then written.
+void write_wanted_lets(Writer& w, BodyRenderer& r, const ir::Body& body,
+                       const std::vector<bool>& wanted, std::vector<bool>& written) {
+  for (std::size_t i = 0; i < body.lets.size(); ++i) {
+    if (!wanted[i] || written[i]) continue;
+    written[i] = true;
+    const ir::Let& l = body.lets[i];
+    write_rendered(w, r, l.loc,
+                   "const " + cpp_type(body.graph[l.value].type) + " " + let_name(l.name) + " = ",
+                   l.value, ";");
+    r.computed(l.value, let_name(l.name));
+  }
 }
 
 std::set<std::string> criterion_embeddings(const ast::Criterion& crit) {
@@ -28,14 +43,8 @@ std::set<std::string> criterion_embeddings(const ast::Criterion& crit) {
   return used;
 }
 
-/// The rule parameter an apply argument fills, and whether the candidate
-/// carries it (vec3 arguments named `normal` and `point`).
-const ast::Param* rule_param(const std::vector<ast::Param>& params, const std::string& name) {
-  for (const ast::Param& p : params) {
-    if (p.name.text == name) return &p;
-  }
-  return nullptr;
-}
+/// Whether the candidate carries an apply argument (vec3 arguments named
+/// `normal` and `point`).
 
 bool carried(const ast::ApplyArg& a) {
   return a.value->type == ast::Type::Vec3 && (a.name.text == "normal" || a.name.text == "point");
@@ -77,10 +86,10 @@ void declare_criterion(Writer& w, const ast::Criterion& crit, const PackModel& m
 void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& model) {
   const std::string cls = criterion_class(crit.name.text);
   const std::string user = "criterion '" + crit.name.text + "'";
-  const ExprContext ctx = criterion_context();
   const std::vector<ast::Param>& rule_params = *model.symbols->callee_params(crit.rule.text);
-  const ast::Expr& lhs = *crit.measure->args[0];
-  const ast::Expr& rhs = *crit.measure->args[1];
+  const lower::CriterionPlan plan = lower::plan_criterion(crit, rule_params);
+  const ir::Body& b = plan.body;
+  const RenderContext ctx = criterion_context(b);
   const std::string d = dart_name(crit.dart.text);
   w.line("// ---- criterion '" + crit.name.text + "' on " + orbit_code(crit.orbit.dims));
   w.line();
@@ -94,30 +103,52 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
   w.close();
   w.line();
 
+  // collect: the lets the measure reads, the measure; only where it passes,
+  // the lets the candidate's payload reads and the payload.
   w.open("void " + cls +
          "::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {");
   w.open("g.for_each_cell(" + orbit_code(crit.orbit.dims) + ", [&](rift::Dart " + d + ") {");
   // One relaxed load per cell: Ctrl-C is seen inside a long pass (a cell's
   // measure may traverse a large face).
   w.line("rift::throw_if_interrupted();");
-  write_lets(w, crit.lets, ctx);
-  write_sourced(w, lhs.loc,
-                "const rift::Real measure = " +
-                    convert(emit_expr(lhs, ctx), lhs.type, ast::Type::Real) + ";");
-  write_sourced(w, rhs.loc,
-                "const rift::Real threshold = " +
-                    convert(emit_expr(rhs, ctx), rhs.type, ast::Type::Real) + ";");
-  w.line("if (!(measure " + crit.measure->op + " threshold)) return;");
-  w.line("rift::TearCandidate c;");
-  w.line("c.at = " + d + ";");
-  // Candidates are applied largest first: the margin by which the measure
-  // passed, oriented by the comparison, puts the most critical first whether
-  // the criterion is written with > or <.
-  const bool above = crit.measure->op == ">" || crit.measure->op == ">=";
-  w.line(std::string("c.measure = ") + (above ? "measure - threshold;" : "threshold - measure;"));
-  for (const ast::ApplyArg& a : crit.apply_args) {
-    if (!carried(a)) continue;
-    write_sourced(w, a.value->loc, "c." + a.name.text + " = " + emit_expr(*a.value, ctx) + ";");
+  {
+    std::vector<bool> written(b.lets.size(), false), wanted(b.lets.size(), false);
+    std::vector<bool> for_payload(b.lets.size(), false);
+    lower::lets_read(b, plan.measure, wanted);
+    lower::lets_read(b, plan.threshold, wanted);
+    // Two segments: what every cell computes, and what only a candidate does
+    // (values are shared across both, folds are walked together within each).
+    std::vector<ir::ExprId> roots = {plan.measure, plan.threshold}, payload;
+    for (std::size_t k = 0; k < crit.apply_args.size(); ++k) {
+      if (!carried(crit.apply_args[k])) continue;
+      lower::lets_read(b, plan.args[k], for_payload);
+      payload.push_back(plan.args[k]);
+    }
+    for (std::size_t i = 0; i < b.lets.size(); ++i) {
+      if (wanted[i]) roots.push_back(b.lets[i].value);
+      if (for_payload[i] && !wanted[i]) payload.push_back(b.lets[i].value);
+    }
+    BodyRenderer r(b.graph, b.sharing, ctx, roots);
+    write_wanted_lets(w, r, b, wanted, written);
+    write_rendered(w, r, crit.measure->args[0]->loc, "const rift::Real measure = ", plan.measure,
+                   ";");
+    write_rendered(w, r, crit.measure->args[1]->loc,
+                   "const rift::Real threshold = ", plan.threshold, ";");
+    w.line("if (!(measure " + crit.measure->op + " threshold)) return;");
+    w.line("rift::TearCandidate c;");
+    w.line("c.at = " + d + ";");
+    // Candidates are applied largest first: the margin by which the measure
+    // passed, oriented by the comparison, puts the most critical first whether
+    // the criterion is written with > or <.
+    const bool above = crit.measure->op == ">" || crit.measure->op == ">=";
+    w.line(std::string("c.measure = ") + (above ? "measure - threshold;" : "threshold - measure;"));
+    r.segment(payload);
+    write_wanted_lets(w, r, b, for_payload, written);
+    for (std::size_t k = 0; k < crit.apply_args.size(); ++k) {
+      const ast::ApplyArg& a = crit.apply_args[k];
+      if (!carried(a)) continue;
+      write_rendered(w, r, a.value->loc, "c." + a.name.text + " = ", plan.args[k], ";");
+    }
   }
   w.line("out.push_back(c);");
   w.close("});");
@@ -126,25 +157,34 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
 
   // apply: the rule is matched again at the candidate's dart; `normal` and
   // `point` come from the candidate, other arguments are evaluated now.
-  bool evaluates = false;
-  for (const ast::ApplyArg& a : crit.apply_args)
-    evaluates = evaluates || !carried(a);
+  std::vector<bool> wanted(b.lets.size(), false), written(b.lets.size(), false);
+  std::vector<ir::ExprId> roots;
+  for (std::size_t k = 0; k < crit.apply_args.size(); ++k) {
+    if (carried(crit.apply_args[k])) continue;
+    lower::lets_read(b, plan.args[k], wanted);
+    roots.push_back(plan.args[k]);
+  }
+  const bool reads_dart = !roots.empty();
+  for (std::size_t i = 0; i < b.lets.size(); ++i) {
+    if (wanted[i]) roots.push_back(b.lets[i].value);
+  }
   w.open("bool " + cls +
          "::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& "
          "touched) {");
   w.line("if (!g.is_alive(candidate.at)) return false;");
-  w.line("[[maybe_unused]] const rift::Dart " + d + " = candidate.at;");
-  if (evaluates) write_lets(w, crit.lets, ctx);
+  w.line(std::string(reads_dart ? "" : "[[maybe_unused]] ") + "const rift::Dart " + d +
+         " = candidate.at;");
+  BodyRenderer r(b.graph, b.sharing, ctx, roots);
+  write_wanted_lets(w, r, b, wanted, written);
   w.line(crit.rule.text + "_args args;");
-  for (const ast::ApplyArg& a : crit.apply_args) {
+  for (std::size_t k = 0; k < crit.apply_args.size(); ++k) {
+    const ast::ApplyArg& a = crit.apply_args[k];
     const std::string field = "args." + member_name(a.name.text);
     if (carried(a)) {
       w.line(field + " = candidate." + a.name.text + ";");
       continue;
     }
-    const ast::Param* p = rule_param(rule_params, a.name.text);
-    write_sourced(w, a.value->loc,
-                  field + " = " + convert(emit_expr(*a.value, ctx), a.value->type, p->type) + ";");
+    write_rendered(w, r, a.value->loc, field + " = ", plan.args[k], ";");
   }
   std::string hooks;
   for (std::size_t k = 0; k < crit.apply_hooks.size(); ++k)

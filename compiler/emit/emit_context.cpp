@@ -25,6 +25,17 @@ void write_sourced(Writer& w, const diag::Location& loc, const std::string& stat
   w.resume();
 }
 
+std::string write_rendered(Writer& w, BodyRenderer& r, const diag::Location& loc,
+                           const std::string& before, ir::ExprId id, const std::string& after) {
+  std::string code = r.expr(id);
+  w.from_source(loc);
+  for (const std::string& local : r.take_locals())
+    w.line(local);
+  w.line(before + code + after);
+  w.resume();
+  return code;
+}
+
 void write_lets(Writer& w, const std::vector<ast::Let>& lets, const ExprContext& ctx) {
   for (const ast::Let& l : lets) {
     write_sourced(w, l.value->loc,

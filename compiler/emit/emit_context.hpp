@@ -10,6 +10,7 @@
 #include "ast/program.hpp"
 #include "check/topology.hpp"
 #include "emit/expr_emit.hpp"
+#include "emit/ir_render.hpp"
 #include "emit/writer.hpp"
 #include "lower/interaction_plan.hpp"
 #include "lower/rule_plan.hpp"
@@ -62,6 +63,10 @@ void write_body(Writer& w, const std::vector<ast::Let>& lets,
 
 /// One statement whose expression comes from `loc` in a .rules file.
 void write_sourced(Writer& w, const diag::Location& loc, const std::string& statement);
+/// `before + <id> + after` rendered by `r`, after the shared values it needs
+/// first, all from `loc`; returns the C++ of `id`.
+std::string write_rendered(Writer& w, BodyRenderer& r, const diag::Location& loc,
+                           const std::string& before, ir::ExprId id, const std::string& after);
 
 /// The matching code shared by rules and interactions: fills left_<v> for every
 /// left node from the rows already built; `fail` is the statement run on a mismatch.

@@ -1,8 +1,10 @@
 #include "emit/ir_render.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <utility>
 
 #include "emit/expr_emit.hpp"
 #include "emit/names.hpp"
@@ -11,203 +13,36 @@ namespace rift::emit {
 
 namespace {
 
-/// Counts the folds being rendered, one level per fold, for their names.
-struct FoldNesting {
-  explicit FoldNesting(int& depth) : depth_(depth) { ++depth_; }
-  ~FoldNesting() { --depth_; }
-  FoldNesting(const FoldNesting&) = delete;
-  FoldNesting& operator=(const FoldNesting&) = delete;
-  int& depth_;
-};
-
 using ir::ExprId;
 using ir::Node;
 using ir::Op;
 using ir::Type;
 
-class Renderer {
- public:
-  Renderer(const ir::Graph& g, const RenderContext& ctx) : g_(g), ctx_(ctx) {}
-
-  std::string expr(ExprId id) {
-    const Node& n = g_[id];
-    switch (n.op) {
-      case Op::Literal:
-        if (n.type == Type::Bool) return n.boolean ? "true" : "false";
-        if (n.type == Type::Int)
-          return std::string("std::int64_t{") + std::to_string(n.integer) + "}";
-        return real_literal(n.real);
-      case Op::Position:
-      case Op::Velocity:
-      case Op::Read:
-        if (ctx_.read) return ctx_.read(n);
-        return embedding_var(n.embedding) + "[" + place(n.place) + "]";
-      case Op::Param:
-        return ctx_.args + "." + member_name(n.name);
-      case Op::PackParam:
-        return ctx_.params + "." + member_name(n.name);
-      case Op::Let:
-        return let_name(n.name);
-      case Op::Neg:
-        return std::string("(-") + expr(n.a) + ")";
-      case Op::Not:
-        return std::string("(!") + expr(n.a) + ")";
-      case Op::ToReal:
-        return std::string("static_cast<rift::Real>(") + expr(n.a) + ")";
-      case Op::And:
-        return std::string("(") + expr(n.a) + " && " + expr(n.b) + ")";
-      case Op::Or:
-        return std::string("(") + expr(n.a) + " || " + expr(n.b) + ")";
-      case Op::Cond: {
-        const std::string t = cpp_type(n.type);
-        if (n.type == Type::Vec3 || n.type == Type::Mat3) {
-          return std::string("(") + expr(n.a) + " ? " + t + "(" + expr(n.b) + ") : " + t + "(" +
-                 expr(n.c) + "))";
-        }
-        return std::string("(") + expr(n.a) + " ? " + expr(n.b) + " : " + expr(n.c) + ")";
-      }
-      case Op::Index: {
-        std::string out = std::string("(") + expr(n.a) + ")(" + index(n.b);
-        if (n.c != ir::kNoExpr) out += std::string(", ") + index(n.c);
-        return out + ")";
-      }
-      case Op::Call:
-        return call(n);
-      case Op::Collect:
-        return std::string("collect_") + std::string(ir::aggregate_name(n.aggregate)) + "(" +
-               ctx_.map + ", " + embedding_var(n.embedding) + ", " + place(n.place) + ", " +
-               orbit_code(n.orbit) + ")";
-      case Op::Fold:
-        return fold(n);
-      default:
-        return std::string("(") + expr(n.a) + " " + std::string(ir::op_name(n.op)) + " " +
-               expr(n.b) + ")";
-    }
+/// The deepest fold whose variable a node reads (0: none).
+int level_of(std::uint32_t fold_vars) {
+  int level = 0;
+  for (int d = 1; d < 32; ++d) {
+    if ((fold_vars >> d) & 1U) level = d;
   }
+  return level;
+}
 
- private:
-  /// A constant index as a plain number: `(h)(0, 2)`.
-  std::string index(ExprId id) {
-    const Node& n = g_[id];
-    if (n.op == Op::Literal && n.type == Type::Int) return std::to_string(n.integer);
-    return expr(id);
-  }
+/// Whether `root` reads the dart of the fold variable `var` (a fold that
+/// counts does not need to: `count of true for each ...`).
+bool reads_dart(const ir::Graph& g, ExprId root, int var) {
+  bool reads = false;
+  ir::visit(g, root, [&](const Node& n) {
+    const bool placed = n.op == Op::Position || n.op == Op::Velocity || n.op == Op::Read ||
+                        n.op == Op::Collect || n.op == Op::Fold;
+    reads = reads || (placed && n.place.node == var);
+  });
+  return reads;
+}
 
-  std::string place(const ir::Place& p) {
-    std::string d = ctx_.dart(p.node);
-    for (int h : p.hops)
-      d = ctx_.map + ".alpha(" + d + ", " + std::to_string(h) + ")";
-    return d;
-  }
-
-  /// An immediately invoked lambda: one dart per sub-orbit, the body per dart.
-  std::string fold(const Node& n) {
-    const bool mean = n.aggregate == ir::Aggregate::Mean;
-    const bool count = n.aggregate == ir::Aggregate::Count;
-    // Folds nest: each gets its own names, so that no inner one shadows another.
-    // Named by nesting depth, not by a running count: sibling folds are
-    // separate lambdas and may share names, and the names do not depend on
-    // the order in which the compiler that built riftc evaluates operands.
-    const std::string id = std::to_string(fold_depth_);
-    const FoldNesting nesting(fold_depth_);
-    const std::string acc = std::string("acc") + id, cnt = std::string("n") + id;
-    const std::string t = cpp_type(n.type);
-    std::string init = zero_of(n.type);
-    if (n.aggregate == ir::Aggregate::Min)
-      init = std::string("std::numeric_limits<") + t + ">::max()";
-    if (n.aggregate == ir::Aggregate::Max)
-      init = std::string("std::numeric_limits<") + t + ">::lowest()";
-    const std::string value = expr(n.a);
-    std::string step;
-    if (count) {
-      step = std::string("if (") + value + ") ++" + acc + ";";
-    } else if (n.aggregate == ir::Aggregate::Min || n.aggregate == ir::Aggregate::Max) {
-      step = acc + " = std::" + std::string(ir::aggregate_name(n.aggregate)) + "<" + t + ">(" +
-             acc + ", " + value + ");";
-    } else {
-      step = acc + " += " + value + ";";
-    }
-    if (mean) step += std::string(" ++") + cnt + ";";
-    std::string out = std::string("[&]() { ") + t + " " + acc + " = " + init + ";";
-    if (mean) out += std::string(" std::int64_t ") + cnt + " = 0;";
-    out += std::string(" ") + ctx_.map + ".for_each_sub_orbit(" + place(n.place) + ", " +
-           orbit_code(n.outer) + ", " + orbit_code(n.orbit) + ", [&](rift::Dart " +
-           ctx_.dart(n.var) + ") { " + step + " });";
-    if (mean) {
-      out += std::string(" return ") + cnt + " > 0 ? " + t + "(" + acc +
-             " / static_cast<rift::Real>(" + cnt + ")) : " + t + "(" + zero_of(n.type) + ");";
-    } else {
-      out += std::string(" return ") + acc + ";";
-    }
-    return out + " }()";
-  }
-
-  std::string call(const Node& n) {
-    std::vector<std::string> x;
-    for (std::size_t k = 0; k < n.arity(); ++k)
-      x.push_back(expr(n.operand(k)));
-    auto join = [&] {
-      std::string out;
-      for (std::size_t k = 0; k < x.size(); ++k) {
-        if (k) out += ", ";
-        out += x[k];
-      }
-      return out;
-    };
-    using B = ir::Builtin;
-    switch (n.fn) {
-      case B::Vec3:
-        return std::string("rift::Vec3(") + join() + ")";
-      case B::Mat3:
-        return std::string("(rift::Mat3() << ") + join() + ").finished()";
-      case B::Identity:
-        return "rift::Mat3::Identity()";
-      case B::StopGradient:
-        return x[0];
-      case B::Real:
-        return std::string("static_cast<rift::Real>(") + x[0] + ")";
-      case B::Int:
-        return std::string("static_cast<std::int64_t>(") + x[0] + ")";
-      case B::Min:
-      case B::Max:
-      case B::Clamp:
-        return std::string("std::") + std::string(ir::builtin_name(n.fn)) + "<" + cpp_type(n.type) +
-               ">(" + join() + ")";
-      case B::Dot:
-        return std::string("(") + x[0] + ").dot(" + x[1] + ")";
-      case B::Cross:
-        return std::string("(") + x[0] + ").cross(" + x[1] + ")";
-      case B::Norm:
-        return std::string("(") + x[0] + ").norm()";
-      case B::Normalize:
-        return std::string("(") + x[0] + ").normalized()";
-      case B::Outer:
-        return std::string("(") + x[0] + ") * (" + x[1] + ").transpose()";
-      case B::Transpose:
-        return std::string("(") + x[0] + ").transpose()";
-      case B::Inverse:
-        return std::string("(") + x[0] + ").inverse()";
-      case B::Det:
-        return std::string("(") + x[0] + ").determinant()";
-      case B::Trace:
-        return std::string("(") + x[0] + ").trace()";
-      case B::Rotation:
-        return std::string("polar_rotation(") + x[0] + ")";
-      case B::MaxEigenvalue:
-        return std::string("symmetric_max_eigenvalue(") + x[0] + ")";
-      case B::MaxEigenvector:
-        return std::string("symmetric_max_eigenvector(") + x[0] + ")";
-      case B::Eigenvalues:
-        return std::string("symmetric_eigenvalues(") + x[0] + ")";
-      default:  // abs sqrt exp log sin cos tan acos asin atan atan2 pow
-        return std::string("std::") + std::string(ir::builtin_name(n.fn)) + "(" + join() + ")";
-    }
-  }
-
-  const ir::Graph& g_;
-  const RenderContext& ctx_;
-  int fold_depth_ = 0;  ///< folds enclosing the one being rendered
-};
+const ir::Sharing& no_sharing() {
+  static const ir::Sharing kNone;
+  return kNone;
+}
 
 }  // namespace
 
@@ -228,7 +63,397 @@ std::string real_literal(double v) {
 }
 
 std::string render(const ir::Graph& g, ir::ExprId id, const RenderContext& ctx) {
-  return Renderer(g, ctx).expr(id);
+  return BodyRenderer(g, no_sharing(), ctx, {id}).expr(id);
+}
+
+BodyRenderer::BodyRenderer(const ir::Graph& g, const ir::Sharing& sharing, const RenderContext& ctx,
+                           const std::vector<ir::ExprId>& roots)
+    : g_(g), sharing_(sharing), ctx_(ctx) {
+  blocks_.emplace_back();
+  segment(roots);
+}
+
+void BodyRenderer::segment(const std::vector<ExprId>& roots) {
+  uses_.clear();
+  groups_.clear();
+  group_index_.clear();
+  if (sharing_.fold_vars.empty()) return;
+  uses_ = ir::count_uses(g_, roots);
+  // Statement-level folds over the same sub-orbits of the same dart, each
+  // computable ahead of where it is written: one walk for all.
+  std::map<std::string, std::vector<ExprId>> by_walk;
+  for (std::size_t i = 0; i < uses_.size(); ++i) {
+    const Node& n = g_[static_cast<ExprId>(i)];
+    if (uses_[i] == 0 || n.op != Op::Fold || sharing_.fold_vars[i] != 0 || !sharing_.speculable[i])
+      continue;
+    if (known(static_cast<ExprId>(i), 0)) continue;
+    std::string key = std::to_string(n.place.node) + "@";
+    for (int h : n.place.hops)
+      key += std::to_string(h) + ",";
+    key += orbit_code(n.outer) + orbit_code(n.orbit) + std::to_string(n.var);
+    by_walk[key].push_back(static_cast<ExprId>(i));
+  }
+  for (auto& [key, group] : by_walk) {
+    if (group.size() < 2) continue;
+    for (ExprId id : group)
+      group_index_[id] = groups_.size();
+    groups_.push_back(std::move(group));
+  }
+}
+
+const std::vector<ExprId>* BodyRenderer::group_of(ExprId id) const {
+  const auto it = group_index_.find(id);
+  return it == group_index_.end() ? nullptr : &groups_[it->second];
+}
+
+std::string BodyRenderer::expr(ExprId root) {
+  // The root itself is the statement's value: only its operands are named.
+  if (const std::string* name = known(root, 0)) return *name;
+  if (const std::vector<ExprId>* group = group_of(root)) {
+    fused(*group);
+    return *known(root, 0);
+  }
+  return node(root);
+}
+
+std::vector<std::string> BodyRenderer::take_locals() {
+  return std::exchange(locals_, {});
+}
+
+void BodyRenderer::computed(ExprId id, const std::string& name) {
+  blocks_.back().emplace(id, name);
+}
+
+void BodyRenderer::open_block() {
+  blocks_.emplace_back();
+}
+
+void BodyRenderer::close_block() {
+  blocks_.pop_back();
+}
+
+/// Not worth a local: leaves, and what Eigen or the C++ compiler computes
+/// for free or nearly (a conversion, a transpose, a sign, a constant index)
+/// of such a node.
+bool BodyRenderer::cheap(const Node& n) const {
+  switch (n.op) {
+    case Op::Literal:
+    case Op::Param:
+    case Op::PackParam:
+    case Op::Let:
+      return true;
+    case Op::Position:
+    case Op::Velocity:
+    case Op::Read:
+      return n.place.hops.empty();
+    case Op::ToReal:
+    case Op::Neg:
+      return cheap(g_[n.a]);
+    case Op::Index:
+      return cheap(g_[n.a]) && g_[n.b].op == Op::Literal &&
+             (n.c == ir::kNoExpr || g_[n.c].op == Op::Literal);
+    case Op::Call:
+      return n.fn == ir::Builtin::Identity ||
+             ((n.fn == ir::Builtin::Transpose || n.fn == ir::Builtin::StopGradient) &&
+              cheap(g_[n.a]));
+    default:
+      return false;
+  }
+}
+
+const std::string* BodyRenderer::known(ExprId id, int level) const {
+  if (level > 0) {
+    const auto& names = folds_[static_cast<std::size_t>(level - 1)].names;
+    const auto it = names.find(id);
+    return it == names.end() ? nullptr : &it->second;
+  }
+  for (auto b = blocks_.rbegin(); b != blocks_.rend(); ++b) {
+    const auto it = b->find(id);
+    if (it != b->end()) return &it->second;
+  }
+  return nullptr;
+}
+
+std::string BodyRenderer::value(ExprId id) {
+  const Node& n = g_[id];
+  const auto i = static_cast<std::size_t>(id);
+  if (i >= uses_.size() || cheap(n) || !sharing_.speculable[i]) return node(id);
+  const int level = level_of(sharing_.fold_vars[i]);
+  if (const std::string* name = known(id, level)) return *name;
+  if (const std::vector<ExprId>* group = level == 0 ? group_of(id) : nullptr) {
+    fused(*group);
+    return *known(id, 0);
+  }
+  // Named when computed more than once: used twice, or inside a fold whose
+  // variable it does not read (it is then computed once before that fold).
+  if (uses_[i] < 2 && level == fold_depth_) return node(id);
+  const std::string code = node(id);
+  std::string name = std::string("s") + std::to_string(next_local_++);
+  std::string local = std::string("const ") + cpp_type(n.type) + " " + name + " = " + code + ";";
+  if (level > 0) {
+    FoldScope& scope = folds_[static_cast<std::size_t>(level - 1)];
+    scope.locals.push_back(std::move(local));
+    scope.names.emplace(id, name);
+  } else {
+    locals_.push_back(std::move(local));
+    blocks_.back().emplace(id, name);
+  }
+  return name;
+}
+
+std::string BodyRenderer::node(ExprId id) {
+  const Node& n = g_[id];
+  switch (n.op) {
+    case Op::Literal:
+      if (n.type == Type::Bool) return n.boolean ? "true" : "false";
+      if (n.type == Type::Int)
+        return std::string("std::int64_t{") + std::to_string(n.integer) + "}";
+      return real_literal(n.real);
+    case Op::Position:
+    case Op::Velocity:
+    case Op::Read:
+      if (ctx_.read) return ctx_.read(n);
+      return embedding_var(n.embedding) + "[" + place(n.place) + "]";
+    case Op::Param:
+      return ctx_.args + "." + member_name(n.name);
+    case Op::PackParam:
+      return ctx_.params + "." + member_name(n.name);
+    case Op::Let:
+      return let_name(n.name);
+    case Op::Neg:
+      return std::string("(-") + value(n.a) + ")";
+    case Op::Not:
+      return std::string("(!") + value(n.a) + ")";
+    case Op::ToReal:
+      return std::string("static_cast<rift::Real>(") + value(n.a) + ")";
+    case Op::Cond: {
+      // Operands one statement each: the order names are given in must not
+      // depend on the compiler that built riftc.
+      const std::string a = value(n.a);
+      const std::string b = value(n.b);
+      const std::string c = value(n.c);
+      const std::string t = cpp_type(n.type);
+      if (n.type == Type::Vec3 || n.type == Type::Mat3)
+        return std::string("(") + a + " ? " + t + "(" + b + ") : " + t + "(" + c + "))";
+      return std::string("(") + a + " ? " + b + " : " + c + ")";
+    }
+    case Op::Index: {
+      std::string out = std::string("(") + value(n.a) + ")(" + index(n.b);
+      if (n.c != ir::kNoExpr) out += std::string(", ") + index(n.c);
+      return out + ")";
+    }
+    case Op::Call:
+      return call(n);
+    case Op::Collect:
+      return std::string("collect_") + std::string(ir::aggregate_name(n.aggregate)) + "(" +
+             ctx_.map + ", " + embedding_var(n.embedding) + ", " + place(n.place) + ", " +
+             orbit_code(n.orbit) + ")";
+    case Op::Fold:
+      return fold(n);
+    default: {
+      const std::string a = value(n.a);
+      const std::string b = value(n.b);
+      const char* op = n.op == Op::And ? "&&" : n.op == Op::Or ? "||" : nullptr;
+      return std::string("(") + a + " " + (op ? std::string(op) : std::string(ir::op_name(n.op))) +
+             " " + b + ")";
+    }
+  }
+}
+
+/// A constant index as a plain number: `(h)(0, 2)`.
+std::string BodyRenderer::index(ExprId id) {
+  const Node& n = g_[id];
+  if (n.op == Op::Literal && n.type == Type::Int) return std::to_string(n.integer);
+  return value(id);
+}
+
+std::string BodyRenderer::place(const ir::Place& p) {
+  std::string d = ctx_.dart(p.node);
+  for (int h : p.hops)
+    d = ctx_.map + ".alpha(" + d + ", " + std::to_string(h) + ")";
+  return d;
+}
+
+/// An immediately invoked lambda: one dart per sub-orbit, the body per dart,
+/// the values shared inside the body computed at its top.
+std::string BodyRenderer::fold(const Node& n) {
+  const bool mean = n.aggregate == ir::Aggregate::Mean;
+  const bool count = n.aggregate == ir::Aggregate::Count;
+  // Folds nest: each gets its own names, so that no inner one shadows another.
+  // Named by nesting depth, not by a running count: sibling folds are
+  // separate lambdas and may share names, and the names do not depend on
+  // the order in which the compiler that built riftc evaluates operands.
+  const std::string id = std::to_string(fold_depth_);
+  const std::string start = place(n.place);
+  const std::string acc = std::string("acc") + id, cnt = std::string("n") + id;
+  const std::string t = cpp_type(n.type);
+  std::string init = zero_of(n.type);
+  if (n.aggregate == ir::Aggregate::Min)
+    init = std::string("std::numeric_limits<") + t + ">::max()";
+  if (n.aggregate == ir::Aggregate::Max)
+    init = std::string("std::numeric_limits<") + t + ">::lowest()";
+  ++fold_depth_;
+  folds_.emplace_back();
+  const std::string body = value(n.a);
+  FoldScope scope = std::move(folds_.back());
+  folds_.pop_back();
+  --fold_depth_;
+  std::string step;
+  for (const std::string& local : scope.locals)
+    step += local + " ";
+  if (count) {
+    step += std::string("if (") + body + ") ++" + acc + ";";
+  } else if (n.aggregate == ir::Aggregate::Min || n.aggregate == ir::Aggregate::Max) {
+    step += acc + " = std::" + std::string(ir::aggregate_name(n.aggregate)) + "<" + t + ">(" + acc +
+            ", " + body + ");";
+  } else {
+    step += acc + " += " + body + ";";
+  }
+  if (mean) step += std::string(" ++") + cnt + ";";
+  std::string out = std::string("[&]() { ") + t + " " + acc + " = " + init + ";";
+  if (mean) out += std::string(" std::int64_t ") + cnt + " = 0;";
+  out += std::string(" ") + ctx_.map + ".for_each_sub_orbit(" + start + ", " + orbit_code(n.outer) +
+         ", " + orbit_code(n.orbit) + ", [&](rift::Dart " + dart_parameter(n.var, {n.a}) + ") { " +
+         step + " });";
+  if (mean) {
+    out += std::string(" return ") + cnt + " > 0 ? " + t + "(" + acc +
+           " / static_cast<rift::Real>(" + cnt + ")) : " + t + "(" + zero_of(n.type) + ");";
+  } else {
+    out += std::string(" return ") + acc + ";";
+  }
+  return out + " }()";
+}
+
+std::string BodyRenderer::dart_parameter(int var, const std::vector<ExprId>& bodies) const {
+  for (ExprId body : bodies) {
+    if (reads_dart(g_, body, var)) return ctx_.dart(var);
+  }
+  return std::string("/*") + ctx_.dart(var) + "*/";
+}
+
+std::vector<ExprId> BodyRenderer::bodies_of(const std::vector<ExprId>& group) const {
+  std::vector<ExprId> bodies;
+  bodies.reserve(group.size());
+  for (ExprId id : group)
+    bodies.push_back(g_[id].a);
+  return bodies;
+}
+
+void BodyRenderer::fused(const std::vector<ExprId>& group) {
+  const Node& first = g_[group[0]];
+  const std::string start = place(first.place);
+  std::vector<std::string> names;
+  for (std::size_t k = 0; k < group.size(); ++k)
+    names.push_back(std::string("s") + std::to_string(next_local_++));
+  ++fold_depth_;
+  folds_.emplace_back();
+  std::vector<std::string> bodies;
+  bodies.reserve(group.size());
+  for (ExprId id : group)
+    bodies.push_back(value(g_[id].a));
+  FoldScope scope = std::move(folds_.back());
+  folds_.pop_back();
+  --fold_depth_;
+  std::string step;
+  for (const std::string& local : scope.locals)
+    step += local + " ";
+  std::vector<std::string> after;
+  for (std::size_t k = 0; k < group.size(); ++k) {
+    const Node& n = g_[group[k]];
+    const std::string& acc = names[k];
+    const std::string t = cpp_type(n.type);
+    std::string init = zero_of(n.type);
+    if (n.aggregate == ir::Aggregate::Min)
+      init = std::string("std::numeric_limits<") + t + ">::max()";
+    if (n.aggregate == ir::Aggregate::Max)
+      init = std::string("std::numeric_limits<") + t + ">::lowest()";
+    locals_.push_back(t + " " + acc + " = " + init + ";");
+    if (n.aggregate == ir::Aggregate::Count) {
+      step += std::string("if (") + bodies[k] + ") ++" + acc + "; ";
+    } else if (n.aggregate == ir::Aggregate::Min || n.aggregate == ir::Aggregate::Max) {
+      step += acc + " = std::" + std::string(ir::aggregate_name(n.aggregate)) + "<" + t + ">(" +
+              acc + ", " + bodies[k] + "); ";
+    } else {
+      step += acc + " += " + bodies[k] + "; ";
+    }
+    if (n.aggregate == ir::Aggregate::Mean) {
+      const std::string cnt = acc + "_n";
+      locals_.push_back(std::string("std::int64_t ") + cnt + " = 0;");
+      step += std::string("++") + cnt + "; ";
+      after.push_back(acc + " = " + cnt + " > 0 ? " + t + "(" + acc +
+                      " / static_cast<rift::Real>(" + cnt + ")) : " + t + "(" + zero_of(n.type) +
+                      ");");
+    }
+  }
+  step.pop_back();
+  locals_.push_back(ctx_.map + ".for_each_sub_orbit(" + start + ", " + orbit_code(first.outer) +
+                    ", " + orbit_code(first.orbit) + ", [&](rift::Dart " +
+                    dart_parameter(first.var, bodies_of(group)) + ") { " + step + " });");
+  locals_.insert(locals_.end(), after.begin(), after.end());
+  for (std::size_t k = 0; k < group.size(); ++k)
+    blocks_.back().emplace(group[k], names[k]);
+}
+
+std::string BodyRenderer::call(const Node& n) {
+  std::vector<std::string> x;
+  for (std::size_t k = 0; k < n.arity(); ++k)
+    x.push_back(value(n.operand(k)));
+  auto join = [&] {
+    std::string out;
+    for (std::size_t k = 0; k < x.size(); ++k) {
+      if (k) out += ", ";
+      out += x[k];
+    }
+    return out;
+  };
+  using B = ir::Builtin;
+  switch (n.fn) {
+    case B::Vec3:
+      return std::string("rift::Vec3(") + join() + ")";
+    case B::Mat3:
+      return std::string("(rift::Mat3() << ") + join() + ").finished()";
+    case B::Identity:
+      return "rift::Mat3::Identity()";
+    case B::StopGradient:
+      return x[0];
+    case B::Real:
+      return std::string("static_cast<rift::Real>(") + x[0] + ")";
+    case B::Int:
+      return std::string("static_cast<std::int64_t>(") + x[0] + ")";
+    case B::Min:
+    case B::Max:
+    case B::Clamp:
+      return std::string("std::") + std::string(ir::builtin_name(n.fn)) + "<" + cpp_type(n.type) +
+             ">(" + join() + ")";
+    case B::Dot:
+      return std::string("(") + x[0] + ").dot(" + x[1] + ")";
+    case B::Cross:
+      return std::string("(") + x[0] + ").cross(" + x[1] + ")";
+    case B::Norm:
+      return std::string("(") + x[0] + ").norm()";
+    case B::Normalize:
+      return std::string("(") + x[0] + ").normalized()";
+    case B::Outer:
+      return std::string("(") + x[0] + ") * (" + x[1] + ").transpose()";
+    case B::Transpose:
+      return std::string("(") + x[0] + ").transpose()";
+    case B::Inverse:
+      return std::string("(") + x[0] + ").inverse()";
+    case B::Det:
+      return std::string("(") + x[0] + ").determinant()";
+    case B::Trace:
+      return std::string("(") + x[0] + ").trace()";
+    case B::Rotation:
+      return std::string("polar_rotation(") + x[0] + ")";
+    case B::MaxEigenvalue:
+      return std::string("symmetric_max_eigenvalue(") + x[0] + ")";
+    case B::MaxEigenvector:
+      return std::string("symmetric_max_eigenvector(") + x[0] + ")";
+    case B::Eigenvalues:
+      return std::string("symmetric_eigenvalues(") + x[0] + ")";
+    default:  // abs sqrt exp log sin cos tan acos asin atan atan2 pow
+      return std::string("std::") + std::string(ir::builtin_name(n.fn)) + "(" + join() + ")";
+  }
 }
 
 }  // namespace rift::emit

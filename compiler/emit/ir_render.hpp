@@ -2,12 +2,24 @@
 // types. Rendering decides nothing: every type, overload and conversion is in
 // the IR. Operands are left as Eigen expressions inside one C++ expression
 // (they live until its end); a value is materialised where it is named (a
-// let, a force) and where the two branches of an `if` must agree on a type.
+// let, a force, a shared value) and where the two branches of an `if` must
+// agree on a type.
+//
+// A body that went through lower::share_common_subexpressions is rendered by
+// a BodyRenderer, which computes each value used more than once (or inside a
+// fold that does not change it) into one local `const T sN`, at the level
+// where its inputs exist: before the statement that first needs it, or at
+// the top of the fold body whose variable it reads. Folds of the statement
+// level over the same sub-orbits of the same dart (a vertex's faces) are
+// computed by one walk, whose body computes each shared term once (fusion).
 #pragma once
 
 #include <functional>
+#include <map>
 #include <string>
+#include <vector>
 
+#include "ir/body.hpp"
 #include "ir/expr.hpp"
 
 namespace rift::emit {
@@ -22,6 +34,68 @@ struct RenderContext {
   std::string map = "g";          // the rift::GMap
 };
 
+/// The expressions of one body rendered into one C++ function, in the order
+/// of its statements: a shared value is computed once and then read by name.
+class BodyRenderer {
+ public:
+  /// `roots`: every expression this function will render (how often each
+  /// value is used is counted over them). `sharing` may be empty: nothing is
+  /// then named.
+  BodyRenderer(const ir::Graph& g, const ir::Sharing& sharing, const RenderContext& ctx,
+               const std::vector<ir::ExprId>& roots);
+
+  /// The C++ of `root`, for one statement. The locals it reads that are not
+  /// computed yet are queued: write them (take_locals) before the statement.
+  std::string expr(ir::ExprId root);
+  /// `const T sN = ...;` statements queued by expr(), in the order to write them.
+  std::vector<std::string> take_locals();
+  /// The statement just written computed `id` into the C++ variable `name`
+  /// (a let): later statements read it.
+  void computed(ir::ExprId id, const std::string& name);
+  /// A C++ block (`{`, an `if constexpr` branch) opens or closes: what is
+  /// computed inside is not visible after it.
+  void open_block();
+  void close_block();
+  /// The statements written from now on render `roots` (how often values
+  /// are used, which folds are walked together); what is computed stays known.
+  void segment(const std::vector<ir::ExprId>& roots);
+
+ private:
+  struct FoldScope {
+    std::map<ir::ExprId, std::string> names;
+    std::vector<std::string> locals;
+  };
+
+  std::string value(ir::ExprId id);
+  std::string node(ir::ExprId id);
+  std::string index(ir::ExprId id);
+  std::string place(const ir::Place& p);
+  std::string fold(const ir::Node& n);
+  /// Computes the folds of `group` (one walk) into statement-level locals.
+  void fused(const std::vector<ir::ExprId>& group);
+  /// The name of a fold's dart parameter, commented out when no body reads it.
+  std::string dart_parameter(int var, const std::vector<ir::ExprId>& bodies) const;
+  std::vector<ir::ExprId> bodies_of(const std::vector<ir::ExprId>& group) const;
+  /// The fold group `id` belongs to, or nullptr when it is walked alone.
+  const std::vector<ir::ExprId>* group_of(ir::ExprId id) const;
+  std::string call(const ir::Node& n);
+  bool cheap(const ir::Node& n) const;
+  const std::string* known(ir::ExprId id, int level) const;
+
+  const ir::Graph& g_;
+  const ir::Sharing& sharing_;
+  const RenderContext& ctx_;
+  std::vector<int> uses_;  ///< per node, by the roots of the current segment
+  std::map<ir::ExprId, std::size_t> group_index_;  ///< statement-level fold -> groups_
+  std::vector<std::vector<ir::ExprId>> groups_;    ///< folds walked together, in node order
+  int fold_depth_ = 0;                             ///< folds enclosing the node being rendered
+  int next_local_ = 0;                             ///< sN: numbered in rendering order
+  std::vector<std::map<ir::ExprId, std::string>> blocks_;  ///< statement-level names, per block
+  std::vector<std::string> locals_;  ///< statement-level locals not yet written
+  std::vector<FoldScope> folds_;     ///< one per enclosing fold
+};
+
+/// One expression of a body without sharing.
 std::string render(const ir::Graph& g, ir::ExprId id, const RenderContext& ctx);
 
 /// A real literal as C++ ("0.5", "2.0").

@@ -133,6 +133,15 @@ void lets_used(const ir::Body& b, ir::ExprId root, std::vector<bool>& used) {
   });
 }
 
+/// The values of the lets and the conditions of the whens, in source order.
+std::vector<ir::ExprId> statement_roots(const ir::Body& b) {
+  std::vector<ir::ExprId> roots;
+  for (const ir::Stmt& s : b.stmts)
+    roots.push_back(s.kind == ir::Stmt::Kind::When ? s.cond
+                                                   : b.lets[static_cast<std::size_t>(s.let)].value);
+  return roots;
+}
+
 void write_find(Writer& w, const Kernel& k) {
   const lower::KernelPlan& plan = k.plan->kernel;
   auto node = [&](int v) { return dart_name(plan.nodes[static_cast<std::size_t>(v)]); };
@@ -210,10 +219,11 @@ void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
       w.line("const rift::Dart " + dart_name(plan.kernel.nodes[v]) + " = darts[" +
              std::to_string(v) + "];");
     }
-    write_sourced(w, init.loc,
-                  embedding_var(init.embedding) + "[" +
-                      dart_name(b.nodes[static_cast<std::size_t>(init.node)]) +
-                      "] = " + render(b.graph, init.value, ctx) + ";");
+    BodyRenderer r(b.graph, b.sharing, ctx, {init.value});
+    write_rendered(w, r, init.loc,
+                   embedding_var(init.embedding) + "[" +
+                       dart_name(b.nodes[static_cast<std::size_t>(init.node)]) + "] = ",
+                   init.value, ";");
     w.close("});");
   }
   w.close();
@@ -272,9 +282,14 @@ void write_evaluate(Writer& w, const Kernel& k) {
          (k.reads_state ? "const rift::ForceInput& in" : "const rift::ForceInput& /*in*/") + ", " +
          (k.columns.empty() ? "const Columns& /*c*/" : "const Columns& c") +
          ", Result& r) const {");
+  std::vector<ir::ExprId> roots = statement_roots(b);
+  for (const ir::Force& f : b.forces)
+    roots.push_back(f.value);
+  roots.push_back(b.energy);
+  BodyRenderer values(b.graph, b.sharing, ctx, roots);
   for (const ir::Stmt& s : b.stmts) {
     if (s.kind == ir::Stmt::Kind::When) {
-      write_sourced(w, s.loc, "if (!" + render(b.graph, s.cond, ctx) + ") return false;");
+      write_rendered(w, values, s.loc, "if (!", s.cond, ") return false;");
       continue;
     }
     const auto i = static_cast<std::size_t>(s.let);
@@ -282,23 +297,27 @@ void write_evaluate(Writer& w, const Kernel& k) {
     const bool in_forces = by_when[i] || by_force[i];
     const bool in_energy = by_when[i] || by_energy[i];
     const bool always = in_forces && (in_energy || !has_energy);
-    write_sourced(w, l.loc,
-                  std::string(always ? "" : "[[maybe_unused]] ") + "const " +
-                      cpp_type(b.graph[l.value].type) + " " + let_name(l.name) + " = " +
-                      render(b.graph, l.value, ctx) + ";");
+    write_rendered(w, values, l.loc,
+                   std::string(always ? "" : "[[maybe_unused]] ") + "const " +
+                       cpp_type(b.graph[l.value].type) + " " + let_name(l.name) + " = ",
+                   l.value, ";");
+    values.computed(l.value, let_name(l.name));
   }
   if (!b.forces.empty() && has_energy) {
     w.open("if constexpr (kForces) {");
   } else if (!b.forces.empty()) {
     w.open("{");
   }
-  for (const ir::Force& f : b.forces) {
-    write_sourced(w, f.loc, "r." + force_field(b, f) + " = " + render(b.graph, f.value, ctx) + ";");
-  }
+  values.open_block();
+  for (const ir::Force& f : b.forces)
+    write_rendered(w, values, f.loc, "r." + force_field(b, f) + " = ", f.value, ";");
+  values.close_block();
   if (has_energy) {
     if (!b.forces.empty()) w.middle("} else {");
     if (b.forces.empty()) w.open("if constexpr (!kForces) {");
-    write_sourced(w, k.inter->energy->loc, "r.energy = " + render(b.graph, b.energy, ctx) + ";");
+    values.open_block();
+    write_rendered(w, values, k.inter->energy->loc, "r.energy = ", b.energy, ";");
+    values.close_block();
   }
   if (!b.forces.empty() || has_energy) w.close();
   w.line("return true;");
@@ -439,15 +458,18 @@ void write_primal(Writer& w, const Kernel& k, const std::string& on_fail) {
   const ir::Body& b = k.plan->body;
   const RenderContext ctx = loop_context(k);
   if (!k.columns.empty()) w.line("[[maybe_unused]] const Columns c = columns();");
+  BodyRenderer values(b.graph, b.sharing, ctx, statement_roots(b));
   for (const ir::Stmt& s : b.stmts) {
     if (s.kind == ir::Stmt::Kind::When) {
-      write_sourced(w, s.loc, "if (!" + render(b.graph, s.cond, ctx) + ") " + on_fail);
+      write_rendered(w, values, s.loc, "if (!", s.cond, std::string(") ") + on_fail);
       continue;
     }
     const ir::Let& l = b.lets[static_cast<std::size_t>(s.let)];
-    write_sourced(w, l.loc,
-                  "[[maybe_unused]] const " + cpp_type(b.graph[l.value].type) + " " +
-                      let_name(l.name) + " = " + render(b.graph, l.value, ctx) + ";");
+    write_rendered(w, values, l.loc,
+                   "[[maybe_unused]] const " + cpp_type(b.graph[l.value].type) + " " +
+                       let_name(l.name) + " = ",
+                   l.value, ";");
+    values.computed(l.value, let_name(l.name));
   }
 }
 
@@ -564,9 +586,10 @@ void write_jacobian_product(Writer& w, const Kernel& k) {
     const std::string at =
         "m." +
         k.slots[static_cast<std::size_t>(k.derivative.vertex_slots[static_cast<std::size_t>(j)])];
-    // append: GCC 12's -Wrestrict misfires on `literal + std::string` once inlined.
-    tx.append(j ? ", " : "").append("px[").append(at).append("]");
-    tv.append(j ? ", " : "").append("pv[").append(at).append("]");
+    // Appended piece by piece (GCC 12 warns of `const char* + std::string&&`).
+    const char* sep = j ? ", " : "";
+    tx.append(sep).append("px[").append(at).append("]");
+    tv.append(sep).append("pv[").append(at).append("]");
   }
   w.line(tx + "};");
   w.line(tv + "};");

@@ -4,6 +4,7 @@
 // emit/; transformed by passes that need the expressions (Jacobians).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,20 @@ struct Force {
   diag::Location loc;
 };
 
+/// What lets a renderer compute each shared value once (lower/share.hpp),
+/// one entry per node of the graph; empty until the body is shared. (How
+/// often a node is used depends on what one function renders: ir::count_uses.)
+struct Sharing {
+  /// Bit d is set when the node reads the dart variable of the fold at
+  /// nesting depth d (1 = outermost): the node has one value per iteration
+  /// of that fold, and none outside it. 0: the same value in the whole body.
+  std::vector<std::uint32_t> fold_vars;
+  /// The node may be evaluated before the place where it is written (ahead of
+  /// an `if` that would skip it): false where that could be undefined
+  /// behaviour in C++ (an integer division, an index computed at run time).
+  std::vector<bool> speculable;
+};
+
 struct Body {
   Graph graph;
   /// Names of the darts places refer to: the pattern nodes (in pattern
@@ -47,6 +62,7 @@ struct Body {
   std::vector<Stmt> stmts;    // lets and whens, in source order
   std::vector<Force> forces;  // in source order
   ExprId energy = kNoExpr;    // a real, or kNoExpr when the interaction has none
+  Sharing sharing;            // filled by lower::share_common_subexpressions
 };
 
 }  // namespace rift::ir

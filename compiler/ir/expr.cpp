@@ -307,4 +307,27 @@ std::string to_text(const Graph& g, ExprId id, const std::vector<std::string>& n
   }
 }
 
+std::vector<int> count_uses(const Graph& g, const std::vector<ExprId>& roots) {
+  std::vector<int> uses(g.size(), 0);
+  std::vector<bool> seen(g.size(), false);
+  std::vector<ExprId> stack;
+  for (ExprId r : roots) {
+    if (r == kNoExpr) continue;
+    ++uses[static_cast<std::size_t>(r)];
+    stack.push_back(r);
+  }
+  while (!stack.empty()) {
+    const ExprId id = stack.back();
+    stack.pop_back();
+    if (seen[static_cast<std::size_t>(id)]) continue;
+    seen[static_cast<std::size_t>(id)] = true;
+    const Node& n = g[id];
+    for (std::size_t k = 0; k < n.arity(); ++k) {
+      ++uses[static_cast<std::size_t>(n.operand(k))];
+      stack.push_back(n.operand(k));
+    }
+  }
+  return uses;
+}
+
 }  // namespace rift::ir

@@ -182,6 +182,11 @@ void visit(const Graph& g, ExprId root, F&& f) {
   f(n);
 }
 
+/// For each node of `g`, how many times it is referenced from `roots` (each
+/// root once) and as an operand of the distinct nodes reachable from them: a
+/// node used more than once is worth computing once.
+std::vector<int> count_uses(const Graph& g, const std::vector<ExprId>& roots);
+
 /// The language's name of a built-in ("max_eigenvalue"), and back (false when unknown).
 std::string_view builtin_name(Builtin fn);
 bool builtin_from_name(std::string_view name, Builtin& out);

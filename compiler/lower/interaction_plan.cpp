@@ -1,6 +1,7 @@
 #include "lower/interaction_plan.hpp"
 
 #include "lower/expr_lower.hpp"
+#include "lower/share.hpp"
 
 namespace rift::lower {
 
@@ -72,6 +73,11 @@ InteractionPlan plan_interaction(const check::CheckedInteraction& ci,
     plan.embeddings.insert(p.embedding);
     embeddings_read(body.graph, p.value, plan.embeddings);
   }
+
+  std::vector<ir::ExprId*> init_roots;
+  for (InitPlan& p : plan.inits)
+    init_roots.push_back(&p.value);
+  share_common_subexpressions(body, init_roots);
 
   for (const SlotUse& s : plan.kernel.slots)
     plan.embeddings.insert(s.via);

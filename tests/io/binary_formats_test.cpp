@@ -281,18 +281,28 @@ std::string to_gmsh_binary(const Shape& s, int version, bool big_endian) {
     int tag = 1;
     for (const ShapeElement& e : s.elements) {
       b.int32(gmsh_type(e)), b.int32(1), b.int32(2);
-      b.int32(tag++), b.int32(99), b.int32(1);
+      b.int32(tag++), b.int32(7), b.int32(1);  // physical group 7, elementary 1
       for (std::uint32_t i : gmsh_order(e))
         b.int32(gmsh_tag(i));
     }
     text("\n$EndElements\n");
     return b.str();
   }
-  // 4.1: a binary $Entities section to skip, then one node block, then a line
-  // block and one block per element.
+  // 4.1: a binary $Entities section, then one node block, then a line block
+  // and one block per element. Entities: a point, the line's curve (physical
+  // group 3, bounded by the point and an oriented -1), and the elements'
+  // entity of the shape's dimension (groups 5 and 6: the first is theirs).
   text("$Entities\n");
-  for (int k = 0; k < 4; ++k)
-    b.int64(0);
+  b.int64(1), b.int64(1), b.int64(s.dimension == 2 ? 1 : 0), b.int64(s.dimension == 3 ? 1 : 0);
+  b.int32(1), b.real64(0), b.real64(0), b.real64(0), b.int64(0);
+  b.int32(1);
+  for (int c = 0; c < 6; ++c)
+    b.real64(c < 3 ? 0 : 1);
+  b.int64(1), b.int32(3), b.int64(2), b.int32(1), b.int32(-1);
+  b.int32(1);
+  for (int c = 0; c < 6; ++c)
+    b.real64(c < 3 ? 0 : 1);
+  b.int64(2), b.int32(5), b.int32(6), b.int64(0);
   text("\n$EndEntities\n$Nodes\n");
   b.int64(1), b.int64(static_cast<std::int64_t>(s.points.size())), b.int64(1),
       b.int64(gmsh_tag(s.points.size()));
@@ -331,6 +341,9 @@ TEST(BinaryGmsh, Version22And41ReadLikeTheAsciiFiles) {
       ASSERT_NO_THROW(got4 = io::read_gmsh(s.name + ".msh", to_gmsh_binary(s, 4, big)));
       expect_same_mesh(got4, ascii4, false);
       EXPECT_EQ(counts_of(assemble_gmap(got4)), s.expected);
+      // Physical groups: v2's first element tag, v4.1's entity's first tag.
+      EXPECT_EQ(got2.element_tags, std::vector<std::int64_t>(s.elements.size(), 7));
+      EXPECT_EQ(got4.element_tags, std::vector<std::int64_t>(s.elements.size(), 5));
     }
   }
 }
@@ -382,6 +395,23 @@ TEST(BinaryGmsh, DamagedBinaryDataIsALocatedError) {
   v4.replace(last, 8, std::string("\x39\x05\0\0\0\0\0\0", 8));
   EXPECT_NE(gmsh_error(v4).find("refers to node 1337, which is not defined"), std::string::npos)
       << gmsh_error(v4);
+  // 4.1: $Entities announcing more points than the file holds (the count is
+  // the first size_t after the header line), then a physical-tag count.
+  std::string entities = to_gmsh_binary(s, 4, false);
+  const std::size_t points = entities.find("$Entities\n") + 10;
+  entities.replace(points, 8, std::string("\0\0\0\x40\0\0\0\0", 8));
+  EXPECT_NE(gmsh_error(entities).find("section $Entities announces 1073741824 entities, more than "
+                                      "the rest of the file can hold"),
+            std::string::npos)
+      << gmsh_error(entities);
+  entities = to_gmsh_binary(s, 4, false);
+  // The point's physical-tag count: after its tag (4 bytes) and x, y, z.
+  const std::size_t physicals = entities.find("$Entities\n") + 10 + 32 + 4 + 24;
+  entities.replace(physicals, 8, std::string("\xff\xff\xff\0\0\0\0\0", 8));
+  EXPECT_NE(gmsh_error(entities).find("section $Entities announces 16777215 physical tags, more "
+                                      "than the rest of the file can hold"),
+            std::string::npos)
+      << gmsh_error(entities);
 }
 
 // ---- rift's own VTU writer ----

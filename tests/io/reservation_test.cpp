@@ -1,50 +1,18 @@
 // A header that announces billions of entries allocates nothing before its
 // data is there (issue 13): the readers' vectors grow with the entries read,
 // never past the announced count. Every operator new of this test binary is
-// watched for its largest single request while a reader runs on a file whose
+// watched (allocation_watch.hpp) for its largest single request while a reader runs on a file whose
 // header lies (2^31 - 1 announced, a few thousand present) and on the same
 // file with an honest header.
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
-#include <cstdlib>
 #include <functional>
-#include <new>
 #include <string>
 
+#include "allocation_watch.hpp"
 #include "rift/io/readers.hpp"
 #include "rift/mesh/mesh_error.hpp"
-
-namespace {
-std::atomic<bool> g_watching{false};
-std::atomic<std::size_t> g_largest{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  if (g_watching.load(std::memory_order_relaxed)) {
-    std::size_t seen = g_largest.load(std::memory_order_relaxed);
-    while (size > seen && !g_largest.compare_exchange_weak(seen, size)) {
-    }
-  }
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-  return operator new(size);
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
 
 namespace rift::test {
 namespace {
@@ -54,16 +22,13 @@ using Reader = std::function<MeshData(const std::string&, std::string_view)>;
 /// The largest single allocation while `read` runs on `text` (which may
 /// throw: a lying header ends in a located error).
 std::size_t largest_allocation(const Reader& read, const std::string& text, std::string* error) {
-  g_largest = 0;
-  g_watching = true;
+  test_support::reset_largest_allocation();
   try {
     read("f", text);
   } catch (const MeshError& e) {
-    g_watching = false;
     *error = e.what();
   }
-  g_watching = false;
-  return g_largest;
+  return test_support::largest_allocation();
 }
 
 constexpr std::size_t kEntries = 20'000;

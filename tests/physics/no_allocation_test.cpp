@@ -1,38 +1,11 @@
 // "A step allocates nothing" (issue 4): the generated packs' force passes,
 // the integrator and the criteria's evaluation run without a heap allocation
-// once warm. Every operator new of this test binary is counted.
+// once warm. Every operator new of this test binary is counted
+// (allocation_watch.hpp).
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
+#include "allocation_watch.hpp"
 #include "physics_setup.hpp"
-
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-  return operator new(size);
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
 
 namespace rift::physics_test {
 namespace {
@@ -54,11 +27,11 @@ long allocations_during_steps(GridKind kind, const std::vector<Use>& criteria, i
   auto sim = simulate(assemble_gmap(make_grid(kind, 10, 10)), setup);
   for (int s = 0; s < 10; ++s)
     sim->step();  // warm-up: buffers reach their size
-  const long before = g_allocations.load();
+  const long before = test_support::allocation_count();
   for (int s = 0; s < steps; ++s)
     sim->step();
   EXPECT_EQ(sim->tears(), 0u);
-  return g_allocations.load() - before;
+  return test_support::allocation_count() - before;
 }
 
 TEST(NoAllocation, Rk4StepsOfTheClothAllocateNothing) {
@@ -90,9 +63,9 @@ TEST(NoAllocation, CheckingAValidMapAllocatesNothing) {
     GMap map = assemble_gmap(make_generated_mesh(mesh));
     map.add_embedding<Real>("corner_value", Orbit{1}, MergePolicy::kKeepFirst, 0.0);
     ASSERT_TRUE(map.check_validity(5).empty()) << mesh;  // warm-up
-    const long before = g_allocations.load();
+    const long before = test_support::allocation_count();
     const bool valid = map.check_validity(5).empty();
-    EXPECT_EQ(g_allocations.load() - before, 0) << mesh;
+    EXPECT_EQ(test_support::allocation_count() - before, 0) << mesh;
     EXPECT_TRUE(valid) << mesh;
   }
 }
@@ -100,13 +73,13 @@ TEST(NoAllocation, CheckingAValidMapAllocatesNothing) {
 std::vector<int>* volatile g_sink = nullptr;
 
 TEST(NoAllocation, TheCounterSeesAllocations) {
-  const long before = g_allocations.load();
+  const long before = test_support::allocation_count();
   auto* p = new std::vector<int>(100);
   // Let the pointer escape: the compiler may otherwise elide the pair of
   // allocations (new-expressions may be merged or removed since C++14).
   g_sink = p;
   delete p;
-  EXPECT_GE(g_allocations.load() - before, 2);
+  EXPECT_GE(test_support::allocation_count() - before, 2);
 }
 
 }  // namespace

@@ -288,28 +288,31 @@ void GMap::for_each_in_orbit(Dart d, Orbit o, F&& f) const {
 
 template <class F>
 void GMap::for_each_sub_orbit(Dart d, Orbit o, Orbit sub, F&& f) const {
-  const Mark m = reserve_mark();
-  // When f throws (an interrupt), the mark is cleared by a full sweep.
+  // The darts of each visited sub-orbit are marked and remembered, and only
+  // they are unmarked at the end: a sub-orbit not contained in o spills out
+  // of <o>(d), and clearing the mark by a sweep would make a local walk (a
+  // tear's script) cost the size of the whole map. The guard also clears the
+  // mark when f throws (an interrupt).
   struct MarkGuard {
     const GMap& map;
     Mark m;
-    bool done = false;
+    std::vector<Dart>& marked;
     ~MarkGuard() {
-      if (!done) map.free_mark(m);
+      for (Dart x : marked)
+        map.unmark(x, m);
+      map.free_mark(m);
+      map.release_scratch();
     }
-  } guard{*this, m};
+  } guard{*this, reserve_mark(), acquire_scratch()};
+  guard.marked.clear();
   for_each_in_orbit(d, o, [&](Dart x) {
-    if (is_marked(x, m)) return;
-    mark_orbit(x, sub, m);
+    if (is_marked(x, guard.m)) return;
+    for_each_in_orbit(x, sub, [&](Dart y) {
+      mark(y, guard.m);
+      guard.marked.push_back(y);
+    });
     f(x);
   });
-  guard.done = true;
-  // Every dart of a sub-orbit lies in <o>(d) when sub is contained in o;
-  // otherwise marks may spill outside, so clear by sweeping what was marked.
-  if ((sub.mask() & ~o.mask()) == 0) {
-    for_each_in_orbit(d, o, [&](Dart x) { unmark(x, m); });
-  }
-  free_mark(m);
 }
 
 template <class F>

@@ -134,8 +134,8 @@ class GmshReader {
         } else {
           dialect_ == Dialect::kV4 ? read_elements_v4(header) : read_elements_v12(header);
         }
-      } else if (dialect_ == Dialect::kV4 && !binary_ && header.text == "$Entities") {
-        read_entities_v4(header);
+      } else if (dialect_ == Dialect::kV4 && header.text == "$Entities") {
+        binary_ ? read_entities_v4_binary(header) : read_entities_v4(header);
       } else {
         skip_section(header);
       }
@@ -593,7 +593,12 @@ class GmshReader {
       check_room(static_cast<std::size_t>(follow), entry_bytes, header, "elements");
       for (std::int64_t k = 0; k < follow; ++k) {
         const std::int64_t id = int32("an element number");
-        in_.take_bytes(4 * static_cast<std::size_t>(tags), "the element's tags");
+        // The first tag is the physical group, as in the ASCII file.
+        physical_.reset();
+        for (std::int64_t t = 0; t < tags; ++t) {
+          const std::int64_t value = int32("an element tag");
+          if (t == 0) physical_ = value;
+        }
         std::array<std::uint32_t, 8> v{};
         for (int m = 0; m < type.nodes; ++m)
           v[static_cast<std::size_t>(m)] = node(int32("a node tag"), in_.line(), id);
@@ -602,6 +607,41 @@ class GmshReader {
       done += static_cast<std::size_t>(follow);
     }
     expect_end(header, n, n, "elements");
+  }
+
+  // $Entities (v4.1 binary): the ASCII section's fields, with size_t counts
+  // and int tags; only each entity's first physical tag is kept.
+  void read_entities_v4_binary(const Token& header) {
+    in_.skip_line();
+    std::array<std::size_t, 4> counts{};
+    for (std::size_t& count : counts)
+      count = binary_count(size_value("the number of entities"), "the number of entities");
+    const auto size_bytes = static_cast<std::size_t>(size_bytes_);
+    for (int dim = 0; dim < 4; ++dim) {
+      const std::size_t n = counts[static_cast<std::size_t>(dim)];
+      // A point has its coordinates, the others their bounding box, then the
+      // count of physical tags (and of bounding entities beyond points).
+      const std::size_t fixed_bytes = 4 + (dim == 0 ? 24 : 48) + size_bytes * (dim == 0 ? 1 : 2);
+      check_room(n, fixed_bytes, header, "entities");
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::int64_t tag = int32("an entity tag");
+        in_.take_bytes(dim == 0 ? 24 : 48, "the entity's coordinates or bounding box");
+        const std::size_t physicals =
+            binary_count(size_value("the number of physical tags"), "the number of physical tags");
+        check_room(physicals, 4, header, "physical tags");
+        for (std::size_t t = 0; t < physicals; ++t) {
+          const std::int64_t physical = int32("a physical tag");
+          if (t == 0) entity_physical_[{dim, tag}] = physical;
+        }
+        if (dim > 0) {
+          const std::size_t bounding = binary_count(size_value("the number of bounding entities"),
+                                                    "the number of bounding entities");
+          check_room(bounding, 4, header, "bounding entities");
+          in_.take_bytes(4 * bounding, "the bounding entities' tags");
+        }
+      }
+    }
+    expect_end(header, counts[3], counts[3], "volumes");
   }
 
   void read_nodes_v4_binary(const Token& header) {
@@ -658,8 +698,9 @@ class GmshReader {
     std::size_t done = 0;
     for (std::size_t b = 0; b < blocks; ++b) {
       const int line = in_.line();
-      int32("an entity dimension");
-      int32("an entity tag");
+      const std::int64_t entity_dim = int32("an entity dimension");
+      const std::int64_t entity = int32("an entity tag");
+      physical_ = physical_of_entity(entity_dim, entity);
       const GmshType type = element_type(int32("an element type"), line);
       const std::size_t in_block =
           binary_count(size_value("the number of elements"), "elements in a block");
@@ -700,8 +741,7 @@ class GmshReader {
   int elements_line_ = 0;
   bool saw_nodes_ = false;
   // Physical group of the element being read (v1, v2: its first tag; v4:
-  // its entity's first physical tag, from $Entities; binary v4 files'
-  // $Entities are not read: their elements have no group).
+  // its entity's first physical tag, from $Entities).
   std::optional<std::int64_t> physical_;
   std::map<std::pair<std::int64_t, std::int64_t>, std::int64_t> entity_physical_;
 };

@@ -91,7 +91,7 @@ void frame(std::vector<std::uint8_t>& out, const Image& image, int delay_ms) {
   const int clear = 1 << min_code_size, end = clear + 1;
   // The dictionary as a trie: next[code * 256 + byte] is the code of that
   // string extended by `byte` (0: none yet).
-  std::vector<std::uint16_t> next(4096 * 256, 0);
+  std::vector<std::uint16_t> next(std::size_t{4096} * 256, 0);
   CodeStream codes(out);
   int width = min_code_size + 1;
   int free_code = end + 1;

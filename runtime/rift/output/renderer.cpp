@@ -17,7 +17,7 @@ Colour mix(const Colour& a, const Colour& b, float t) {
 
 }  // namespace
 
-Renderer::Renderer(RenderOptions options) : options_(std::move(options)) {
+Renderer::Renderer(const RenderOptions& options) : options_(options) {
   if (options_.width < 1 || options_.height < 1 || options_.width > 16384 ||
       options_.height > 16384) {
     throw std::invalid_argument("image size must be between 1x1 and 16384x16384");

@@ -46,7 +46,7 @@ struct Image {
 class Renderer {
  public:
   /// Throws std::invalid_argument for a size outside 1..16384 or a bad supersample.
-  explicit Renderer(RenderOptions options = {});
+  explicit Renderer(const RenderOptions& options = {});
 
   /// A camera that frames `frame` in this renderer's image; keep it for the
   /// following frames so that the view stays put.

@@ -43,7 +43,8 @@ std::vector<Dart> notch_cut_darts(const GMap& map, const SceneNotch& notch) {
     map.for_each_cell(Orbit{0, 2}, [&](Dart a) {
       if (map.is_free(a, 2)) return;
       const Dart b = map.alpha(a, 2);
-      const Vec3 p = position[a], q = position[map.alpha(a, 0)];
+      const Vec3& p = position[a];
+      const Vec3& q = position[map.alpha(a, 0)];
       const Vec3 mid = 0.5 * (p + q);
       const Real length = (q - p).norm();
       const Real s = (mid - notch.from).dot(d) / d.squaredNorm();

@@ -755,8 +755,8 @@ void StretchStrainCriterion::initialise(rift::GMap& g) {
 void StretchStrainCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{0}, [&](rift::Dart d_a) {
     rift::throw_if_interrupted();
-    [[maybe_unused]] const rift::Real l_l = (rift::Vec3(e_position[g.alpha(d_a, 0)] - e_position[d_a])).norm();
-    const rift::Real measure = ((e_stretch_rest[d_a] > 0.0) ? rift::Real(((l_l - e_stretch_rest[d_a]) / e_stretch_rest[d_a])) : rift::Real(0.0));
+    const rift::Real l_l = ((e_position[g.alpha(d_a, 0)] - e_position[d_a])).norm();
+    const rift::Real measure = ((e_stretch_rest[d_a] > 0.0) ? ((l_l - e_stretch_rest[d_a]) / e_stretch_rest[d_a]) : 0.0);
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
     rift::TearCandidate c;
@@ -818,14 +818,14 @@ void SpringSplitCriterion::collect(const rift::GMap& g, std::vector<rift::TearCa
     rift::TearCandidate c;
     c.at = d_a;
     c.measure = measure - threshold;
-    c.normal = rift::Vec3((e_f_stretch[d_a]).normalized());
+    c.normal = (e_f_stretch[d_a]).normalized();
     out.push_back(c);
   });
 }
 
 bool SpringSplitCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
-  [[maybe_unused]] const rift::Dart d_a = candidate.at;
+  const rift::Dart d_a = candidate.at;
   split_ends_args args;
   args.normal = candidate.normal;
   args.both = p_.both_ends;
@@ -843,7 +843,7 @@ void ShearForceCriterion::initialise(rift::GMap& g) {
 void ShearForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{0, 1}, [&](rift::Dart d_f) {
     rift::throw_if_interrupted();
-    const rift::Real measure = [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc0 = std::max<rift::Real>(acc0, (e_f_shear[d_c]).norm()); }); return acc0; }();
+    const rift::Real measure = [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, (e_f_shear[d_c]).norm()); }); return acc0; }();
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
     rift::TearCandidate c;
@@ -901,9 +901,9 @@ void ElementStressCriterion::initialise(rift::GMap& g) {
 void ElementStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{0, 1}, [&](rift::Dart d_f) {
     rift::throw_if_interrupted();
-    [[maybe_unused]] const rift::Real l_area = (0.5 * (rift::Vec3((rift::Vec3(e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f])))).norm());
-    [[maybe_unused]] const rift::Mat3 l_m = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc0 = rift::Mat3(acc0 + rift::Mat3((e_f_membrane[d_c]) * (e_position[d_c]).transpose())); }); return acc0; }();
-    const rift::Real measure = ((l_area > 0.0) ? rift::Real(symmetric_max_eigenvalue(rift::Mat3(rift::Mat3((-0.5) * rift::Mat3(l_m + rift::Mat3((l_m).transpose()))) / l_area))) : rift::Real(0.0));
+    const rift::Real l_area = (0.5 * (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm());
+    const rift::Mat3 l_m = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc0; }();
+    const rift::Real measure = ((l_area > 0.0) ? symmetric_max_eigenvalue((((-0.5) * (l_m + (l_m).transpose())) / l_area)) : 0.0);
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
     rift::TearCandidate c;
@@ -933,7 +933,7 @@ void InteractionForceCriterion::initialise(rift::GMap& g) {
 void InteractionForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart d_v) {
     rift::throw_if_interrupted();
-    const rift::Real measure = std::max<rift::Real>([&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc0 = std::max<rift::Real>(acc0, std::max<rift::Real>((e_f_membrane[d_c]).norm(), (e_f_shear[d_c]).norm())); }); return acc0; }(), [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&]([[maybe_unused]] rift::Dart d_x) { rift::throw_if_interrupted(); acc0 = std::max<rift::Real>(acc0, (e_f_stretch[d_x]).norm()); }); return acc0; }());
+    const rift::Real measure = std::max<rift::Real>([&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, std::max<rift::Real>((e_f_membrane[d_c]).norm(), (e_f_shear[d_c]).norm())); }); return acc0; }(), [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&](rift::Dart d_x) { acc0 = std::max<rift::Real>(acc0, (e_f_stretch[d_x]).norm()); }); return acc0; }());
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
     rift::TearCandidate c;
@@ -963,9 +963,13 @@ void VertexStressCriterion::initialise(rift::GMap& g) {
 void VertexStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart d_v) {
     rift::throw_if_interrupted();
-    [[maybe_unused]] const rift::Mat3 l_weighted = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&]([[maybe_unused]] rift::Dart d_f) { rift::throw_if_interrupted(); acc0 = rift::Mat3(acc0 + (((rift::Vec3((rift::Vec3(e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f])))).norm() > 0.0) ? rift::Mat3(rift::Mat3(((collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}) * 2.0) / (rift::Vec3((rift::Vec3(e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f])))).norm()) * [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc1 = rift::Mat3(acc1 + rift::Mat3((e_f_membrane[d_c]) * (e_position[d_c]).transpose())); }); return acc1; }())) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()))); }); return acc0; }();
-    [[maybe_unused]] const rift::Real l_mass = [&]() { rift::Real acc0 = rift::Real(0); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&]([[maybe_unused]] rift::Dart d_f) { rift::throw_if_interrupted(); acc0 = rift::Real(acc0 + collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1})); }); return acc0; }();
-    [[maybe_unused]] const rift::Mat3 l_s = ((l_mass > 0.0) ? rift::Mat3(rift::Mat3(rift::Mat3((-0.5) * rift::Mat3(l_weighted + rift::Mat3((l_weighted).transpose()))) / l_mass)) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
+    const rift::Mat3 s4 = (rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished();
+    rift::Mat3 s0 = rift::Mat3::Zero();
+    rift::Real s1 = rift::Real(0);
+    g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s2 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); const rift::Real s3 = collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}); s0 += ((s2 > 0.0) ? rift::Mat3((((s3 * 2.0) / s2) * [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }())) : rift::Mat3(s4)); s1 += s3; });
+    const rift::Mat3 l_weighted = s0;
+    const rift::Real l_mass = s1;
+    const rift::Mat3 l_s = ((l_mass > 0.0) ? rift::Mat3((((-0.5) * (l_weighted + (l_weighted).transpose())) / l_mass)) : rift::Mat3(s4));
     const rift::Real measure = symmetric_max_eigenvalue(l_s);
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
@@ -1002,16 +1006,20 @@ void VertexEnergyCriterion::initialise(rift::GMap& g) {
 void VertexEnergyCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart d_v) {
     rift::throw_if_interrupted();
-    [[maybe_unused]] const rift::Real l_stored = [&]() { rift::Real acc0 = rift::Real(0); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&]([[maybe_unused]] rift::Dart d_f) { rift::throw_if_interrupted(); acc0 = rift::Real(acc0 + (((e_membrane_mu[d_f] > 0.0) && ((rift::Vec3((rift::Vec3(e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f])))).norm() > 0.0)) ? rift::Real(((((rift::Mat3(rift::Mat3([&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc1 = rift::Mat3(acc1 + rift::Mat3((e_f_membrane[d_c]) * (e_position[d_c]).transpose())); }); return acc1; }() + rift::Mat3(([&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc1 = rift::Mat3(acc1 + rift::Mat3((e_f_membrane[d_c]) * (e_position[d_c]).transpose())); }); return acc1; }()).transpose())) * rift::Mat3([&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc1 = rift::Mat3(acc1 + rift::Mat3((e_f_membrane[d_c]) * (e_position[d_c]).transpose())); }); return acc1; }() + rift::Mat3(([&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc1 = rift::Mat3(acc1 + rift::Mat3((e_f_membrane[d_c]) * (e_position[d_c]).transpose())); }); return acc1; }()).transpose())))).trace() / (16.0 * e_membrane_mu[d_f])) - ((e_membrane_lambda[d_f] * std::pow((2.0 * ([&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc1 = rift::Mat3(acc1 + rift::Mat3((e_f_membrane[d_c]) * (e_position[d_c]).transpose())); }); return acc1; }()).trace()), 2.0)) / ((32.0 * e_membrane_mu[d_f]) * (e_membrane_lambda[d_f] + e_membrane_mu[d_f])))) / (1.5 * (rift::Vec3((rift::Vec3(e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f])))).norm()))) : rift::Real(0.0))); }); return acc0; }();
-    [[maybe_unused]] const rift::Real l_share = [&]() { rift::Real acc0 = rift::Real(0); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&]([[maybe_unused]] rift::Dart d_f) { rift::throw_if_interrupted(); acc0 = rift::Real(acc0 + ((rift::Vec3((rift::Vec3(e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f])))).norm() / 6.0)); }); return acc0; }();
-    [[maybe_unused]] const rift::Mat3 l_weighted = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&]([[maybe_unused]] rift::Dart d_f) { rift::throw_if_interrupted(); acc0 = rift::Mat3(acc0 + (((rift::Vec3((rift::Vec3(e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f])))).norm() > 0.0) ? rift::Mat3(rift::Mat3(((collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}) * 2.0) / (rift::Vec3((rift::Vec3(e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f])))).norm()) * [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc1 = rift::Mat3(acc1 + rift::Mat3((e_f_membrane[d_c]) * (e_position[d_c]).transpose())); }); return acc1; }())) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()))); }); return acc0; }();
-    const rift::Real measure = ((l_share > 0.0) ? rift::Real((l_stored / std::sqrt(l_share))) : rift::Real(0.0));
+    rift::Real s0 = rift::Real(0);
+    rift::Real s1 = rift::Real(0);
+    g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s2 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); const rift::Mat3 s3 = [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); const rift::Mat3 s4 = (s3 + (s3).transpose()); s0 += (((e_membrane_mu[d_f] > 0.0) && (s2 > 0.0)) ? (((((s4 * s4)).trace() / (16.0 * e_membrane_mu[d_f])) - ((e_membrane_lambda[d_f] * std::pow((2.0 * (s3).trace()), 2.0)) / ((32.0 * e_membrane_mu[d_f]) * (e_membrane_lambda[d_f] + e_membrane_mu[d_f])))) / (1.5 * s2)) : 0.0); s1 += (s2 / 6.0); });
+    const rift::Real l_stored = s0;
+    const rift::Real l_share = s1;
+    const rift::Real measure = ((l_share > 0.0) ? (l_stored / std::sqrt(l_share)) : 0.0);
     const rift::Real threshold = p_.toughness;
     if (!(measure > threshold)) return;
     rift::TearCandidate c;
     c.at = d_v;
     c.measure = measure - threshold;
-    c.normal = symmetric_max_eigenvector(rift::Mat3((-0.5) * rift::Mat3(l_weighted + rift::Mat3((l_weighted).transpose()))));
+    const rift::Mat3 s6 = (rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished();
+    const rift::Mat3 l_weighted = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s5 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); acc0 += ((s5 > 0.0) ? rift::Mat3((((collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}) * 2.0) / s5) * [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }())) : rift::Mat3(s6)); }); return acc0; }();
+    c.normal = symmetric_max_eigenvector(((-0.5) * (l_weighted + (l_weighted).transpose())));
     c.point = e_position[d_v];
     out.push_back(c);
   });
@@ -1044,7 +1052,7 @@ void VertexSumCriterion::collect(const rift::GMap& g, std::vector<rift::TearCand
     rift::TearCandidate c;
     c.at = d_v;
     c.measure = measure - threshold;
-    c.normal = rift::Vec3((e_vertex_force[d_v]).normalized());
+    c.normal = (e_vertex_force[d_v]).normalized();
     c.point = e_position[d_v];
     out.push_back(c);
   });
@@ -1073,15 +1081,17 @@ void AtomicEdgeCriterion::initialise(rift::GMap& g) {
 void AtomicEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{0, 2}, [&](rift::Dart d_a) {
     rift::throw_if_interrupted();
-    [[maybe_unused]] const rift::Vec3 l_ab = rift::Vec3(e_position[g.alpha(d_a, 0)] - e_position[d_a]);
-    [[maybe_unused]] const rift::Vec3 l_p1 = e_position[g.alpha(g.alpha(d_a, 1), 0)];
-    [[maybe_unused]] const rift::Vec3 l_p2 = e_position[g.alpha(g.alpha(g.alpha(d_a, 2), 1), 0)];
-    [[maybe_unused]] const rift::Vec3 l_f1 = rift::Vec3(rift::Vec3(rift::Vec3(rift::Vec3(rift::Vec3(collect_sum(g, e_f_stretch, d_a, rift::Orbit{1}) + collect_sum(g, e_f_stretch, g.alpha(d_a, 0), rift::Orbit{1})) + e_f_shear[d_a]) + e_f_shear[g.alpha(d_a, 0)]) + e_f_membrane[d_a]) + e_f_membrane[g.alpha(d_a, 0)]);
-    [[maybe_unused]] const rift::Vec3 l_f2 = rift::Vec3(rift::Vec3(rift::Vec3(rift::Vec3(rift::Vec3(collect_sum(g, e_f_stretch, g.alpha(d_a, 2), rift::Orbit{1}) + collect_sum(g, e_f_stretch, g.alpha(g.alpha(d_a, 2), 0), rift::Orbit{1})) + e_f_shear[g.alpha(d_a, 2)]) + e_f_shear[g.alpha(g.alpha(d_a, 2), 0)]) + e_f_membrane[g.alpha(d_a, 2)]) + e_f_membrane[g.alpha(g.alpha(d_a, 2), 0)]);
-    [[maybe_unused]] const rift::Vec3 l_mid = rift::Vec3(0.5 * rift::Vec3(e_position[d_a] + e_position[g.alpha(d_a, 0)]));
-    [[maybe_unused]] const bool l_contract = (((l_f1).dot(rift::Vec3(l_p1 - l_mid)) > 0.0) && ((l_f2).dot(rift::Vec3(l_p2 - l_mid)) > 0.0));
-    [[maybe_unused]] const rift::Vec3 l_across = rift::Vec3((l_ab).cross(rift::Vec3(rift::Vec3((l_ab).cross(rift::Vec3(l_p1 - e_position[d_a]))) + rift::Vec3((rift::Vec3(l_p2 - e_position[d_a])).cross(l_ab)))));
-    const rift::Real measure = ((((l_across).norm() > 0.0) && l_contract) ? rift::Real((std::abs((rift::Vec3(l_f1 - l_f2)).dot(l_across)) / (l_across).norm())) : rift::Real(0.0));
+    const rift::Vec3 s0 = e_position[g.alpha(d_a, 0)];
+    const rift::Vec3 l_ab = (s0 - e_position[d_a]);
+    const rift::Vec3 l_p1 = e_position[g.alpha(g.alpha(d_a, 1), 0)];
+    const rift::Vec3 l_p2 = e_position[g.alpha(g.alpha(g.alpha(d_a, 2), 1), 0)];
+    const rift::Vec3 l_f1 = (((((collect_sum(g, e_f_stretch, d_a, rift::Orbit{1}) + collect_sum(g, e_f_stretch, g.alpha(d_a, 0), rift::Orbit{1})) + e_f_shear[d_a]) + e_f_shear[g.alpha(d_a, 0)]) + e_f_membrane[d_a]) + e_f_membrane[g.alpha(d_a, 0)]);
+    const rift::Vec3 l_f2 = (((((collect_sum(g, e_f_stretch, g.alpha(d_a, 2), rift::Orbit{1}) + collect_sum(g, e_f_stretch, g.alpha(g.alpha(d_a, 2), 0), rift::Orbit{1})) + e_f_shear[g.alpha(d_a, 2)]) + e_f_shear[g.alpha(g.alpha(d_a, 2), 0)]) + e_f_membrane[g.alpha(d_a, 2)]) + e_f_membrane[g.alpha(g.alpha(d_a, 2), 0)]);
+    const rift::Vec3 l_mid = (0.5 * (e_position[d_a] + s0));
+    const bool l_contract = (((l_f1).dot((l_p1 - l_mid)) > 0.0) && ((l_f2).dot((l_p2 - l_mid)) > 0.0));
+    const rift::Vec3 l_across = (l_ab).cross(((l_ab).cross((l_p1 - e_position[d_a])) + ((l_p2 - e_position[d_a])).cross(l_ab)));
+    const rift::Real s1 = (l_across).norm();
+    const rift::Real measure = (((s1 > 0.0) && l_contract) ? (std::abs(((l_f1 - l_f2)).dot(l_across)) / s1) : 0.0);
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
     rift::TearCandidate c;
@@ -1110,10 +1120,10 @@ void GlobalEdgeCriterion::initialise(rift::GMap& g) {
 void GlobalEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{0, 2}, [&](rift::Dart d_a) {
     rift::throw_if_interrupted();
-    [[maybe_unused]] const rift::Vec3 l_ab = rift::Vec3(e_position[g.alpha(d_a, 0)] - e_position[d_a]);
-    [[maybe_unused]] const rift::Vec3 l_n = rift::Vec3((l_ab).cross(rift::Vec3(rift::Vec3((l_ab).cross(rift::Vec3(e_position[g.alpha(g.alpha(d_a, 1), 0)] - e_position[d_a]))) + rift::Vec3((rift::Vec3(e_position[g.alpha(g.alpha(g.alpha(d_a, 2), 1), 0)] - e_position[d_a])).cross(l_ab)))));
-    [[maybe_unused]] const rift::Real l_l = (l_n).norm();
-    const rift::Real measure = ((l_l > 0.0) ? rift::Real((std::abs((rift::Vec3(e_vertex_force[d_a] + e_vertex_force[g.alpha(d_a, 0)])).dot(l_n)) / l_l)) : rift::Real(0.0));
+    const rift::Vec3 l_ab = (e_position[g.alpha(d_a, 0)] - e_position[d_a]);
+    const rift::Vec3 l_n = (l_ab).cross(((l_ab).cross((e_position[g.alpha(g.alpha(d_a, 1), 0)] - e_position[d_a])) + ((e_position[g.alpha(g.alpha(g.alpha(d_a, 2), 1), 0)] - e_position[d_a])).cross(l_ab)));
+    const rift::Real l_l = (l_n).norm();
+    const rift::Real measure = ((l_l > 0.0) ? (std::abs(((e_vertex_force[d_a] + e_vertex_force[g.alpha(d_a, 0)])).dot(l_n)) / l_l) : 0.0);
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
     rift::TearCandidate c;

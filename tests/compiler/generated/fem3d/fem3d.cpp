@@ -653,7 +653,8 @@ inline bool CorotationalKernel::evaluate(const Match& m, const rift::ForceInput&
     r.f_fem_c2 = l_f2;
     r.f_fem_c3 = l_f3;
   } else {
-    r.energy = (c.fem_volume[m.orbit012_c0] * ((l_mu * (((l_strain).transpose() * l_strain)).trace()) + (((0.5 * l_lambda) * (l_strain).trace()) * (l_strain).trace())));
+    const rift::Real s0 = (l_strain).trace();
+    r.energy = (c.fem_volume[m.orbit012_c0] * ((l_mu * (((l_strain).transpose() * l_strain)).trace()) + (((0.5 * l_lambda) * s0) * s0)));
   }
   return true;
 }

@@ -473,12 +473,14 @@ inline bool StretchKernel::evaluate(const Match& m, const rift::ForceInput& in, 
   const rift::Real l_l = (l_d).norm();
   if (!(l_l > 0.0)) return false;
   [[maybe_unused]] const rift::Real l_inv = (1.0 / l_l);
-  [[maybe_unused]] const rift::Real l_t = ((c.stretch_k[m.orbit0_a] * (l_l - c.stretch_rest[m.orbit0_a])) + ((p_.damping * ((in.v[m.vertex_b] - in.v[m.vertex_a])).dot(l_d)) * l_inv));
+  const rift::Real s0 = (l_l - c.stretch_rest[m.orbit0_a]);
+  [[maybe_unused]] const rift::Real l_t = ((c.stretch_k[m.orbit0_a] * s0) + ((p_.damping * ((in.v[m.vertex_b] - in.v[m.vertex_a])).dot(l_d)) * l_inv));
   if constexpr (kForces) {
-    r.f_stretch_a = ((l_t * l_inv) * l_d);
-    r.f_stretch_b = ((-(l_t * l_inv)) * l_d);
+    const rift::Real s1 = (l_t * l_inv);
+    r.f_stretch_a = (s1 * l_d);
+    r.f_stretch_b = ((-s1) * l_d);
   } else {
-    r.energy = (((0.5 * c.stretch_k[m.orbit0_a]) * (l_l - c.stretch_rest[m.orbit0_a])) * (l_l - c.stretch_rest[m.orbit0_a]));
+    r.energy = (((0.5 * c.stretch_k[m.orbit0_a]) * s0) * s0);
   }
   return true;
 }
@@ -717,8 +719,10 @@ inline bool ShearKernel::evaluate(const Match& m, const rift::ForceInput& in, co
   const rift::Real l_lb = (l_db).norm();
   [[maybe_unused]] const rift::Real l_ia = ((l_la > 0.0) ? (1.0 / l_la) : 0.0);
   [[maybe_unused]] const rift::Real l_ib = ((l_lb > 0.0) ? (1.0 / l_lb) : 0.0);
-  [[maybe_unused]] const rift::Real l_ta = ((c.shear_k[m.orbit01_c0] * (l_la - c.shear_rest02[m.orbit01_c0])) + ((p_.damping * ((in.v[m.vertex_c2] - in.v[m.vertex_c0])).dot(l_da)) * l_ia));
-  [[maybe_unused]] const rift::Real l_tb = ((c.shear_k[m.orbit01_c0] * (l_lb - c.shear_rest13[m.orbit01_c0])) + ((p_.damping * ((in.v[m.vertex_c3] - in.v[m.vertex_c1])).dot(l_db)) * l_ib));
+  const rift::Real s0 = (l_la - c.shear_rest02[m.orbit01_c0]);
+  [[maybe_unused]] const rift::Real l_ta = ((c.shear_k[m.orbit01_c0] * s0) + ((p_.damping * ((in.v[m.vertex_c2] - in.v[m.vertex_c0])).dot(l_da)) * l_ia));
+  const rift::Real s1 = (l_lb - c.shear_rest13[m.orbit01_c0]);
+  [[maybe_unused]] const rift::Real l_tb = ((c.shear_k[m.orbit01_c0] * s1) + ((p_.damping * ((in.v[m.vertex_c3] - in.v[m.vertex_c1])).dot(l_db)) * l_ib));
   [[maybe_unused]] const rift::Vec3 l_fa = ((l_ta * l_ia) * l_da);
   [[maybe_unused]] const rift::Vec3 l_fb = ((l_tb * l_ib) * l_db);
   if constexpr (kForces) {
@@ -727,7 +731,7 @@ inline bool ShearKernel::evaluate(const Match& m, const rift::ForceInput& in, co
     r.f_shear_c1 = l_fb;
     r.f_shear_c3 = (-l_fb);
   } else {
-    r.energy = ((0.5 * c.shear_k[m.orbit01_c0]) * (((l_la - c.shear_rest02[m.orbit01_c0]) * (l_la - c.shear_rest02[m.orbit01_c0])) + ((l_lb - c.shear_rest13[m.orbit01_c0]) * (l_lb - c.shear_rest13[m.orbit01_c0]))));
+    r.energy = ((0.5 * c.shear_k[m.orbit01_c0]) * ((s0 * s0) + (s1 * s1)));
   }
   return true;
 }
@@ -2254,10 +2258,14 @@ inline bool VolumeShearKernel::evaluate(const Match& m, const rift::ForceInput& 
   [[maybe_unused]] const rift::Real l_i1 = ((l_l1 > 0.0) ? (1.0 / l_l1) : 0.0);
   [[maybe_unused]] const rift::Real l_i2 = ((l_l2 > 0.0) ? (1.0 / l_l2) : 0.0);
   [[maybe_unused]] const rift::Real l_i3 = ((l_l3 > 0.0) ? (1.0 / l_l3) : 0.0);
-  [[maybe_unused]] const rift::Vec3 l_g0 = ((((l_k * (l_l0 - c.vshear_rest0[m.orbit012_b0])) + ((p_.damping * ((in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(l_d0)) * l_i0)) * l_i0) * l_d0);
-  [[maybe_unused]] const rift::Vec3 l_g1 = ((((l_k * (l_l1 - c.vshear_rest1[m.orbit012_b0])) + ((p_.damping * ((in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(l_d1)) * l_i1)) * l_i1) * l_d1);
-  [[maybe_unused]] const rift::Vec3 l_g2 = ((((l_k * (l_l2 - c.vshear_rest2[m.orbit012_b0])) + ((p_.damping * ((in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(l_d2)) * l_i2)) * l_i2) * l_d2);
-  [[maybe_unused]] const rift::Vec3 l_g3 = ((((l_k * (l_l3 - c.vshear_rest3[m.orbit012_b0])) + ((p_.damping * ((in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(l_d3)) * l_i3)) * l_i3) * l_d3);
+  const rift::Real s0 = (l_l0 - c.vshear_rest0[m.orbit012_b0]);
+  [[maybe_unused]] const rift::Vec3 l_g0 = ((((l_k * s0) + ((p_.damping * ((in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(l_d0)) * l_i0)) * l_i0) * l_d0);
+  const rift::Real s1 = (l_l1 - c.vshear_rest1[m.orbit012_b0]);
+  [[maybe_unused]] const rift::Vec3 l_g1 = ((((l_k * s1) + ((p_.damping * ((in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(l_d1)) * l_i1)) * l_i1) * l_d1);
+  const rift::Real s2 = (l_l2 - c.vshear_rest2[m.orbit012_b0]);
+  [[maybe_unused]] const rift::Vec3 l_g2 = ((((l_k * s2) + ((p_.damping * ((in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(l_d2)) * l_i2)) * l_i2) * l_d2);
+  const rift::Real s3 = (l_l3 - c.vshear_rest3[m.orbit012_b0]);
+  [[maybe_unused]] const rift::Vec3 l_g3 = ((((l_k * s3) + ((p_.damping * ((in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(l_d3)) * l_i3)) * l_i3) * l_d3);
   if constexpr (kForces) {
     r.f_volume_shear_b0 = l_g0;
     r.f_volume_shear_s22 = (-l_g0);
@@ -2268,7 +2276,7 @@ inline bool VolumeShearKernel::evaluate(const Match& m, const rift::ForceInput& 
     r.f_volume_shear_b6 = l_g3;
     r.f_volume_shear_s12 = (-l_g3);
   } else {
-    r.energy = ((0.5 * l_k) * (((((l_l0 - c.vshear_rest0[m.orbit012_b0]) * (l_l0 - c.vshear_rest0[m.orbit012_b0])) + ((l_l1 - c.vshear_rest1[m.orbit012_b0]) * (l_l1 - c.vshear_rest1[m.orbit012_b0]))) + ((l_l2 - c.vshear_rest2[m.orbit012_b0]) * (l_l2 - c.vshear_rest2[m.orbit012_b0]))) + ((l_l3 - c.vshear_rest3[m.orbit012_b0]) * (l_l3 - c.vshear_rest3[m.orbit012_b0]))));
+    r.energy = ((0.5 * l_k) * ((((s0 * s0) + (s1 * s1)) + (s2 * s2)) + (s3 * s3)));
   }
   return true;
 }

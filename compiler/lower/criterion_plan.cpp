@@ -1,0 +1,52 @@
+#include "lower/criterion_plan.hpp"
+
+#include "lower/expr_lower.hpp"
+#include "lower/share.hpp"
+
+namespace rift::lower {
+
+CriterionPlan plan_criterion(const ast::Criterion& crit,
+                             const std::vector<ast::Param>& rule_params) {
+  CriterionPlan plan;
+  plan.criterion = &crit;
+  ir::Body& body = plan.body;
+  body.nodes.push_back(crit.dart.text);
+  ExprLowering lowering(body.graph, body.nodes, nullptr);
+  for (const ast::Let& let : crit.lets) {
+    const int index = static_cast<int>(body.lets.size());
+    body.lets.push_back({let.name.text, lowering.lower(*let.value), let.value->loc});
+    lowering.add_let(&let, index);
+    ir::Stmt s;
+    s.kind = ir::Stmt::Kind::Let;
+    s.let = index;
+    s.loc = let.value->loc;
+    body.stmts.push_back(s);
+  }
+  plan.measure = lowering.lower_as(*crit.measure->args[0], ir::Type::Real);
+  plan.threshold = lowering.lower_as(*crit.measure->args[1], ir::Type::Real);
+  for (const ast::ApplyArg& a : crit.apply_args) {
+    ir::Type to = a.value->type;
+    for (const ast::Param& p : rule_params) {
+      if (p.name.text == a.name.text) to = p.type;
+    }
+    plan.args.push_back(lowering.lower_as(*a.value, to));
+  }
+  std::vector<ir::ExprId*> roots = {&plan.measure, &plan.threshold};
+  for (ir::ExprId& a : plan.args)
+    roots.push_back(&a);
+  share_common_subexpressions(body, roots);
+  return plan;
+}
+
+void lets_read(const ir::Body& body, ir::ExprId root, std::vector<bool>& used) {
+  if (root == ir::kNoExpr) return;
+  ir::visit(body.graph, root, [&](const ir::Node& n) {
+    if (n.op != ir::Op::Let || n.index < 0) return;
+    const auto i = static_cast<std::size_t>(n.index);
+    if (used[i]) return;
+    used[i] = true;
+    lets_read(body, body.lets[i].value, used);
+  });
+}
+
+}  // namespace rift::lower

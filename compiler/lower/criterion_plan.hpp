@@ -1,0 +1,32 @@
+// A criterion lowered for emission: its lets, its measure and threshold and
+// the arguments of the rule it applies, as one body in the IR, shared
+// (lower/share.hpp) so that a value the criterion writes several times (a
+// triangle's area, an element's stress inside a fold over the faces of a
+// vertex) is computed once per place it can change.
+#pragma once
+
+#include <vector>
+
+#include "ast/decl.hpp"
+#include "ir/body.hpp"
+
+namespace rift::lower {
+
+struct CriterionPlan {
+  const ast::Criterion* criterion = nullptr;
+  /// nodes: the criterion's dart; lets in source order (no whens, forces, energy).
+  ir::Body body;
+  ir::ExprId measure = ir::kNoExpr;    // the left-hand side of the comparison, a real
+  ir::ExprId threshold = ir::kNoExpr;  // the right-hand side, a real
+  /// One per apply argument, parallel to Criterion::apply_args, of the type of
+  /// the rule parameter it fills (`rule_params`, by name).
+  std::vector<ir::ExprId> args;
+};
+
+CriterionPlan plan_criterion(const ast::Criterion& crit,
+                             const std::vector<ast::Param>& rule_params);
+
+/// Marks in `used` (one entry per let) the lets `root` reads, directly or through other lets.
+void lets_read(const ir::Body& body, ir::ExprId root, std::vector<bool>& used);
+
+}  // namespace rift::lower
