@@ -100,6 +100,39 @@ TEST(Orbits, NestedTraversalsDoNotInterfere) {
   EXPECT_EQ(map.reserved_marks(), 0);
 }
 
+// A vertex's faces (<0,1> sub-orbits of the vertex orbit <1,2>) reach past
+// the vertex: each is visited once, from a dart of the vertex, and every
+// mark is released with nothing left marked, call after call.
+TEST(Orbits, SubOrbitsReachingOutsideTheOrbitAreVisitedOnceAndUnmarked) {
+  GMap map = assemble_gmap(make_grid(GridKind::Tri, 4, 3));
+  const Mark probe = map.reserve_mark();
+  std::size_t visited = 0;
+  map.for_each_cell(Orbit{1, 2}, [&](Dart v) {
+    const std::set<Dart> vertex = reference_orbit(map, v, Orbit{1, 2});
+    std::set<std::set<Dart>> expected;
+    for (Dart x : vertex)
+      expected.insert(reference_orbit(map, x, Orbit{0, 1}));
+    std::set<std::set<Dart>> got;
+    map.for_each_sub_orbit(v, Orbit{1, 2}, Orbit{0, 1}, [&](Dart f) {
+      EXPECT_TRUE(vertex.count(f)) << "a dart outside the vertex";
+      EXPECT_TRUE(got.insert(reference_orbit(map, f, Orbit{0, 1})).second) << "a face twice";
+      map.mark(f, probe);
+    });
+    EXPECT_EQ(got, expected);
+    visited += got.size();
+  });
+  // Three corners per triangle: each face is visited from each of its vertices.
+  EXPECT_EQ(visited, 3 * map.count_cells_of_dimension(2));
+  // Only the probe's marks remain: one per visit.
+  EXPECT_EQ(map.marked_count(probe), visited);
+  map.free_mark(probe);
+  EXPECT_EQ(map.reserved_marks(), 0);
+  for (Dart d = 0; d < map.size(); ++d) {
+    for (Mark m = 0; m < GMap::kMaxMarks; ++m)
+      ASSERT_FALSE(map.is_marked(d, m)) << "dart " << d << " mark " << m;
+  }
+}
+
 TEST(Cells, ForEachCellGivesOneDartPerCell) {
   GMap map = assemble_gmap(make_grid(GridKind::Tri, 4, 3));
   std::set<std::set<Dart>> faces;
