@@ -110,7 +110,8 @@ ExprPtr call(std::string name, std::vector<ExprPtr> args, const rift::diag::Loca
 %token PACK "pack" DIMENSION "dimension" INCLUDE "include" EMBEDDING "embedding" ON "on"
        MERGE "merge" PARAM "param" INIT "init" RULE "rule" HOOK "hook" LEFT "left"
        RIGHT "right" WHEN "when" LET "let" UPDATE "update" INTERACTION "interaction"
-       PATTERN "pattern" FORCE "force" ENERGY "energy" CRITERION "criterion"
+       PATTERN "pattern" FORCE "force" ENERGY "energy" SEMIDEFINITE "semidefinite"
+       CRITERION "criterion"
        MEASURE "measure" APPLY "apply" AT "at" WITH "with" IF "if" THEN "then" ELSE "else"
        TRUE "true" FALSE "false" OVER "over" SUM "sum" MEAN "mean" COUNT "count" MIN "min"
        MAX "max" T_REAL "real" T_INT "int" T_BOOL "bool" T_VEC3 "vec3" T_MAT3 "mat3"
@@ -413,6 +414,13 @@ interaction_stmt
   | ENERGY expr SEMI {
       if (ctx.interaction.energy) ctx.diags.error(@1, "the interaction already has an energy");
       ctx.interaction.energy = $2;
+    }
+  | SEMIDEFINITE SEMI {
+      if (ctx.interaction.semidefinite) {
+        ctx.diags.error(@1, "the interaction is already declared semidefinite");
+      }
+      ctx.interaction.semidefinite = true;
+      ctx.interaction.semidefinite_loc = @1;
     }
   | body_stmt
   | error SEMI

@@ -108,6 +108,12 @@ struct Interaction {
   std::vector<BodyStmt> body;  // lets and whens in source order
   std::vector<Assign> forces;
   ExprPtr energy;
+  /// `semidefinite;`: the rule's author states that -∂f/∂x and -∂f/∂v of
+  /// every match are positive semidefinite at every state (with the
+  /// stop_gradient values held constant), so the implicit solver need not
+  /// test or project its element matrices (docs/language.md).
+  bool semidefinite = false;
+  Location semidefinite_loc;
 };
 
 struct ApplyArg {

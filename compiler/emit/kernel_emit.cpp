@@ -473,24 +473,38 @@ void write_primal(Writer& w, const Kernel& k, const std::string& on_fail) {
   }
 }
 
-/// Tangent lets (one per active let), then `per_force(i, tangent)` for each
-/// force with a nonzero tangent; tx[j], tv[j] are the tangents of vertex j.
+/// Tangent lets (one per active let whose tangent is not identically zero),
+/// then `per_force(i, tangent)` for each force with a nonzero tangent;
+/// tx[j], tv[j] are the tangents of vertex j. `seeded` says which state the
+/// pass differentiates by ("position", "velocity" or both): the tangents of
+/// the other are zero, so the lets that only carry them drop out of the pass
+/// (a pass per kind of direction then computes no zero tangent).
 template <class PerForce>
-void write_tangents(Writer& w, const Kernel& k, const ExprContext& primal, PerForce&& per_force) {
+void write_tangents(Writer& w, const Kernel& k, const ExprContext& primal, bool seed_x, bool seed_v,
+                    PerForce&& per_force) {
+  // Lets live in this pass: active ones, less those whose tangent turns out
+  // zero (later lets then read them as zero).
+  std::vector<bool> live = k.derivative.active_let;
   TangentContext t;
   t.primal = &primal;
   t.lets = &k.inter->lets;
-  t.active_let = &k.derivative.active_let;
-  t.state_tangent = [&k](const ast::Expr& read) {
-    const std::string j = std::to_string(jacobian_vertex_of_slot(k, slot_of(k, read)));
-    return std::string(read.name == check::kPositionEmbedding ? "tx[" : "tv[") + j + "]";
+  t.active_let = &live;
+  t.state_tangent = [&k, seed_x, seed_v](const ast::Expr& read) {
+    const bool x = read.name == check::kPositionEmbedding;
+    if (x ? !seed_x : !seed_v) return std::string();
+    std::string out = x ? "tx[" : "tv[";
+    out.append(std::to_string(jacobian_vertex_of_slot(k, slot_of(k, read)))).append("]");
+    return out;
   };
   for (std::size_t i = 0; i < k.inter->lets.size(); ++i) {
-    if (!k.derivative.active_let[i]) continue;
+    if (!live[i]) continue;
     const ast::Let& l = k.inter->lets[i];
-    std::string code = tangent_expr(*l.value, t);
+    const std::string code = tangent_expr(*l.value, t);
+    if (code.empty()) {
+      live[i] = false;
+      continue;
+    }
     const std::string type = cpp_type(l.value->type);
-    if (code.empty()) code = type + "(" + type + "::Zero())";
     write_sourced(
         w, l.value->loc,
         "[[maybe_unused]] const " + type + " " + tangent_name(l.name.text) + " = " + code + ";");
@@ -513,14 +527,19 @@ void write_vertex_slots(Writer& w, const Kernel& k) {
 
 // Dense blocks by forward mode: one tangent pass per direction (a
 // coordinate of one vertex's position or velocity), each giving one column
-// of the blocks of every force. Directions the forces do not depend on
-// (velocities of an undamped law) are skipped.
+// of the blocks of every force. The position and velocity directions are
+// two loops, each seeding only its own state, so neither computes the
+// tangents that only the other's seed feeds; a loop the forces do not
+// depend on at all (velocities of an undamped law) is left out. `flatten`
+// inlines the 3×3 products into the loop (at this size a call costs as
+// much as the product), and unrolling the loop makes each seed a constant
+// one-hot vector that the compiler folds into the first products.
 void write_jacobian(Writer& w, const Kernel& k) {
   const ExprContext ctx = ast_loop_context(k);
   const ir::Body& b = k.plan->body;
   const int n = static_cast<int>(k.derivative.vertex_slots.size());
   const std::string kk = std::to_string(n * n), k3 = std::to_string(3 * n);
-  w.open("void " + k.cls +
+  w.open("[[gnu::flatten]] void " + k.cls +
          "::jacobian([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, "
          "rift::Mat3* dfdx, rift::Mat3* dfdv) {");
   w.open("for (int b = 0; b < " + kk + "; ++b) {");
@@ -528,23 +547,25 @@ void write_jacobian(Writer& w, const Kernel& k) {
   w.line("dfdv[b].setZero();");
   w.close();
   write_primal(w, k, "return;");
-  const std::string first = k.derivative.depends_on_x ? "0" : k3;
-  const std::string last = k.derivative.depends_on_v ? std::to_string(6 * n) : k3;
-  w.open("for (int dir = " + first + "; dir < " + last + "; ++dir) {");
-  w.line("const bool wrt_x = dir < " + k3 + ";");
-  w.line("const int j = (dir % " + k3 + ") / 3, c3 = dir % 3;");
-  w.line("rift::Vec3 tx[" + std::to_string(n) + "], tv[" + std::to_string(n) + "];");
-  w.open("for (int v = 0; v < " + std::to_string(n) + "; ++v) {");
-  w.line("tx[v].setZero();");
-  w.line("tv[v].setZero();");
-  w.close();
-  w.line("(wrt_x ? tx : tv)[j][c3] = 1;");
-  write_tangents(w, k, ctx, [&](std::size_t i, const std::string& code) {
-    const int vi = jacobian_vertex_of_slot(k, b.forces[i].vertex_slot);
-    w.line("(wrt_x ? dfdx : dfdv)[" + std::to_string(vi * n) + " + j].col(c3) += rift::Vec3(" +
-           code + ");");
-  });
-  w.close();
+  for (const bool wrt_x : {true, false}) {
+    if (!(wrt_x ? k.derivative.depends_on_x : k.derivative.depends_on_v)) continue;
+    const std::string seed = wrt_x ? "tx" : "tv", out = wrt_x ? "dfdx" : "dfdv";
+    w.line("#pragma GCC unroll " + k3);
+    w.open("for (int dir = 0; dir < " + k3 + "; ++dir) {");
+    w.line("const int j = dir / 3, c3 = dir % 3;");
+    w.line("rift::Vec3 " + seed + "[" + std::to_string(n) + "];");
+    w.open("for (int v = 0; v < " + std::to_string(n) + "; ++v) {");
+    w.line(seed + "[v].setZero();");
+    w.close();
+    w.line(seed + "[j][c3] = 1;");
+    write_tangents(w, k, ctx, wrt_x, !wrt_x, [&](std::size_t i, const std::string& code) {
+      const int vi = jacobian_vertex_of_slot(k, b.forces[i].vertex_slot);
+      std::string line = out;
+      line.append("[").append(std::to_string(vi * n)).append(" + j].col(c3) += rift::Vec3(");
+      w.line(line.append(code).append(");"));
+    });
+    w.close();
+  }
   w.close();
   w.line();
 }
@@ -554,7 +575,7 @@ void write_jacobian_product(Writer& w, const Kernel& k) {
   const ExprContext ctx = ast_loop_context(k);
   const ir::Body& b = k.plan->body;
   const int n = static_cast<int>(k.derivative.vertex_slots.size());
-  w.open("void " + k.cls +
+  w.open("[[gnu::flatten]] void " + k.cls +
          "::jacobian_product([[maybe_unused]] const Match& m, [[maybe_unused]] const "
          "rift::ForceInput& in, [[maybe_unused]] const rift::Vec3* px, [[maybe_unused]] const "
          "rift::Vec3* pv, rift::Vec3* out) {");
@@ -572,7 +593,7 @@ void write_jacobian_product(Writer& w, const Kernel& k) {
   }
   w.line(tx + "};");
   w.line(tv + "};");
-  write_tangents(w, k, ctx, [&](std::size_t i, const std::string& code) {
+  write_tangents(w, k, ctx, true, true, [&](std::size_t i, const std::string& code) {
     w.line("out[m." + k.slots[static_cast<std::size_t>(b.forces[i].vertex_slot)] +
            "] += rift::Vec3(" + code + ");");
   });
@@ -661,11 +682,19 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
   }
   w.line("void reset_stored(const Match& m);");
   w.line("rift::Real energy(const Match& m, const rift::ForceInput& in) const;");
+  if (k.plan->body.energy != ir::kNoExpr) {
+    w.line("/// The rule gives an energy (the implicit Newton line search can use it).");
+    w.line("static constexpr bool kHasEnergy = true;");
+  }
   if (k.derivative.available) {
     w.line("/// Jacobians derived by riftc (forward mode): the match's vertices, the blocks");
     w.line("/// df_i/dx_j and df_i/dv_j (row-major), and the product J p.");
     w.line("static constexpr int kJacobianVertices = " +
            std::to_string(k.derivative.vertex_slots.size()) + ";");
+    if (k.inter->semidefinite) {
+      w.line("/// The rule states -J semidefinite (`semidefinite;`): no test, no projection.");
+      w.line("static constexpr bool kJacobianSemidefinite = true;");
+    }
     w.line("void vertex_slots(const Match& m, rift::Slot* out) const;");
     w.line(
         "void jacobian(const Match& m, const rift::ForceInput& in, rift::Mat3* dfdx, rift::Mat3* "

@@ -4,10 +4,13 @@
 // CG runs exactly 10 iterations (its tolerance is out of reach). Counters:
 // tetrahedra, and the fractions of the step spent assembling the element
 // Jacobians (with the block-Jacobi update), in A·p products, and in the
-// preconditioner. See docs/physics.md "The implicit step" for the figures.
+// preconditioner. Each case runs on 1 and on 2 threads (the last argument),
+// side by side in one run, timed on the wall clock (the point of threads).
+// See docs/physics.md "The implicit step" for the figures.
 #include <benchmark/benchmark.h>
 
 #include "../physics/physics_setup.hpp"
+#include "rift/core/parallel.hpp"
 #include "rift/mesh/load_map.hpp"
 
 namespace {
@@ -40,11 +43,13 @@ void BM_ImplicitCorotationalBeam(benchmark::State& state, rift::PreconditionerKi
     sim->step();
   rift::ImplicitEuler& implicit = *sim->implicit();
   implicit.reset_times();
+  rift::set_thread_count(static_cast<int>(state.range(0)));
   for (auto _ : state) {
     sim->step();
     benchmark::DoNotOptimize(sim->position().values().data());
     benchmark::ClobberMemory();
   }
+  rift::set_thread_count(0);
   for (const Vec3& x : sim->position().values()) {
     if (!x.allFinite()) {
       state.SkipWithError("the beam exploded");
@@ -52,6 +57,7 @@ void BM_ImplicitCorotationalBeam(benchmark::State& state, rift::PreconditionerKi
     }
   }
   const rift::ImplicitTimes& t = implicit.times();
+  state.counters["threads"] = static_cast<double>(state.range(0));
   state.counters["tets"] = static_cast<double>(sim->force_models()[0]->active_matches());
   state.counters["cg_iterations"] = implicit.last().cg_iterations;
   state.counters["assembly"] = t.assembly / t.total;
@@ -60,13 +66,22 @@ void BM_ImplicitCorotationalBeam(benchmark::State& state, rift::PreconditionerKi
 }
 
 BENCHMARK_CAPTURE(BM_ImplicitCorotationalBeam, jacobi, rift::PreconditionerKind::kJacobi, true)
-    ->Unit(benchmark::kMillisecond);
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 // The price of the semidefinite test (element_matrix.hpp) beside the above.
 BENCHMARK_CAPTURE(BM_ImplicitCorotationalBeam, jacobi_unprojected,
                   rift::PreconditionerKind::kJacobi, false)
-    ->Unit(benchmark::kMillisecond);
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(BM_ImplicitCorotationalBeam, incomplete_cholesky,
                   rift::PreconditionerKind::kIncompleteCholesky, true)
-    ->Unit(benchmark::kMillisecond);
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace

@@ -127,3 +127,78 @@ TEST(ImplicitCorotational, ExplicitIntegratorsExplodeAtThatStep) {
 
 }  // namespace
 }  // namespace rift::physics_test
+
+namespace rift::physics_test {
+namespace {
+
+// The Newton line search on the incremental potential of backward Euler,
+// E(v1) = ½ |v1 - v0|²_M + Φ(x0 + h v1), Φ = elastic energy - Σ m g·x: a
+// hanging cloth of undamped springs stepped from rest at 50 ms, far past its
+// explicit limit (springs stretch and compress: a stiff, nonlinear step).
+struct NewtonStep {
+  Real energy = 0;  // E(v1), computed here from the end state
+  ImplicitStats stats;
+};
+
+NewtonStep newton_step(LineSearch search, int iterations, Real damping = 0) {
+  SimSetup setup;
+  setup.settings.integrator = IntegratorKind::kImplicitEuler;
+  setup.settings.dt = 0.05;
+  setup.settings.gravity = Vec3(0, -9.81, 0);
+  setup.settings.implicit.newton_iterations = iterations;
+  setup.settings.implicit.newton_tolerance = 1e-12;
+  setup.settings.implicit.cg_tolerance = 1e-12;
+  setup.settings.implicit.cg_max_iterations = 2000;
+  setup.settings.implicit.line_search = search;
+  setup.interactions = {{"stretch", {{"stiffness", 600.0}, {"damping", damping}}},
+                        {"shear", {{"stiffness", 430.0}, {"damping", damping}}},
+                        {"bend", {{"stiffness", 10.0}, {"damping", damping}}}};
+  setup.prepare = [](Simulation& sim) {
+    sim.set_total_mass(0.1);
+    sim.pin_where([](const Vec3& p) { return p.y() > 0.999 && (p.x() < 1e-3 || p.x() > 0.999); });
+  };
+  auto sim = simulate(load_map("grid:quad:12x12"), setup);
+  sim->step();  // from rest: v0 = 0
+  NewtonStep out;
+  out.stats = sim->implicit()->last();
+  const auto& x = sim->position().values();
+  const auto& v = sim->velocity().values();
+  const auto& mass = sim->vertex_mass().values();
+  const auto& w = sim->inverse_masses();
+  out.energy = elastic_energy(*sim);
+  for (std::size_t s = 0; s < x.size(); ++s) {
+    if (w[s] > 0)
+      out.energy += 0.5 * mass[s] * v[s].squaredNorm() - mass[s] * Vec3(0, -9.81, 0).dot(x[s]);
+  }
+  return out;
+}
+
+TEST(ImplicitNewton, EnergyLineSearchDecreasesTheIncrementalPotentialMonotonically) {
+  Real previous = newton_step(LineSearch::kEnergy, 1).energy;
+  for (int k = 2; k <= 10; ++k) {
+    const NewtonStep s = newton_step(LineSearch::kEnergy, k);
+    EXPECT_TRUE(s.stats.energy_search);
+    EXPECT_LE(s.energy, previous + 1e-12 * std::abs(previous)) << "after " << k << " iterations";
+    previous = s.energy;
+  }
+}
+
+TEST(ImplicitNewton, EnergyLineSearchConvergesAtLeastAsWellAsTheResidualSearch) {
+  const NewtonStep energy = newton_step(LineSearch::kEnergy, 40);
+  const NewtonStep residual = newton_step(LineSearch::kResidual, 40);
+  EXPECT_TRUE(energy.stats.energy_search);
+  EXPECT_FALSE(residual.stats.energy_search);
+  // Converged: stopped by newton_tolerance, before the iteration limit.
+  EXPECT_LT(energy.stats.newton_iterations, 40);
+  EXPECT_GT(energy.stats.newton_iterations, 2);
+  EXPECT_LE(energy.stats.newton_iterations, residual.stats.newton_iterations);
+  EXPECT_LE(energy.energy, residual.energy + 1e-12 * std::abs(residual.energy));
+}
+
+TEST(ImplicitNewton, DampedForcesFallBackToTheResidualSearch) {
+  // Damping forces have no potential: E's minimum is not the step.
+  EXPECT_FALSE(newton_step(LineSearch::kEnergy, 3, 0.1).stats.energy_search);
+}
+
+}  // namespace
+}  // namespace rift::physics_test

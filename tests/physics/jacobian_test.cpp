@@ -8,6 +8,7 @@
 // nothing: σ = 0 and sym(dRᵀR) = 0), its velocity Jacobian everywhere.
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <random>
 
 #include "physics_setup.hpp"
@@ -156,6 +157,45 @@ TEST(Jacobians, ConservativeStiffnessIsSymmetric) {
     ASSERT_GT(scale, 0.0);
     EXPECT_LT((d.kx - d.kx.transpose()).cwiseAbs().maxCoeff(), 1e-10 * scale);
   }
+}
+
+// The smallest eigenvalue of the symmetric part of -J, relative to its largest.
+Real smallest_relative_eigenvalue(const Eigen::MatrixXd& j) {
+  const Eigen::MatrixXd s = -0.5 * (j + j.transpose());
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(s);
+  return eig.eigenvalues().minCoeff() / std::max(eig.eigenvalues().cwiseAbs().maxCoeff(), 1e-300);
+}
+
+TEST(Jacobians, InteractionsDeclaredSemidefiniteAreSo) {
+  // A rule's `semidefinite;` lets the implicit solver skip its test and
+  // projection (element_matrix.hpp): check the claim on strongly deformed,
+  // moving states, damped, where a wrong claim would show.
+  int declared = 0;
+  for (const Case& c : cases(0.05)) {
+    SCOPED_TRACE(std::string(c.mesh) + " " + c.interaction.name);
+    for (unsigned seed : {7u, 8u, 9u}) {
+      auto sim = state(c, seed, true);
+      if (!sim->force_models()[0]->jacobian_semidefinite()) break;
+      ++declared;
+      // Squash the element hard (an inverted or compressed state is where
+      // springs lose definiteness).
+      move_vertices(*sim, [](const Vec3& p) { return Vec3(p.x(), 0.2 * p.y(), 1.5 * p.z()); });
+      const Dense d = dense_jacobians(*sim);
+      EXPECT_GT(smallest_relative_eigenvalue(d.kx), -1e-12);
+      EXPECT_GT(smallest_relative_eigenvalue(d.kv), -1e-12);
+    }
+  }
+  EXPECT_GT(declared, 0) << "no standard interaction declares `semidefinite;`";
+}
+
+TEST(Jacobians, TheSemidefiniteCheckSeesAnIndefiniteSpring) {
+  // The check above can fail: a compressed spring's transverse stiffness
+  // k(1 - L0/L) is negative, and its -J has a negative eigenvalue.
+  const Case spring{"grid:mix:3x3", {"stretch", {{"stiffness", 60.0}, {"damping", 0.0}}}};
+  auto sim = state(spring, 7, false);
+  EXPECT_FALSE(sim->force_models()[0]->jacobian_semidefinite());
+  move_vertices(*sim, [](const Vec3& p) { return 0.5 * p; });
+  EXPECT_LT(smallest_relative_eigenvalue(dense_jacobians(*sim).kx), -1e-3);
 }
 
 TEST(Jacobians, MatrixFreeProductEqualsTheBlocks) {

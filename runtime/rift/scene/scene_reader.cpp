@@ -267,7 +267,7 @@ class SceneReader {
   void read_implicit(const toml::table& t, Scene& scene) const {
     check_keys(t,
                {"cg_tolerance", "cg_max_iterations", "preconditioner", "newton_iterations",
-                "newton_tolerance", "jacobian", "project_definite"},
+                "newton_tolerance", "jacobian", "project_definite", "line_search"},
                "[implicit]");
     ImplicitSettings& s = scene.implicit;
     scene.implicit_line = line_of(t);
@@ -301,6 +301,15 @@ class SceneReader {
                      did_you_mean(name, {"assembled", "matrix_free"}));
       }
       s.jacobian = *mode;
+    }
+    if (auto* n = t.get("line_search")) {
+      const std::string name = string(*n, "line_search");
+      auto search = parse_line_search(name);
+      if (!search) {
+        fail(*n, "unknown line_search '" + name + "': expected energy or residual" +
+                     did_you_mean(name, {"energy", "residual"}));
+      }
+      s.line_search = *search;
     }
     if (auto* n = t.get("project_definite")) {
       s.project_definite = boolean(*n, "project_definite");

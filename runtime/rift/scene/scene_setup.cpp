@@ -308,6 +308,16 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
   sim->initialise();
   rep.total_mass = sim->total_mass();
   rep.warnings = inert_component_warnings(scene, packs, *sim);
+  if (scene.integrator == IntegratorKind::kImplicitEuler && scene.implicit.newton_iterations > 1 &&
+      scene.implicit.line_search == LineSearch::kEnergy) {
+    const std::string why = sim->implicit_potential_missing();
+    if (!why.empty()) {
+      rep.warnings.push_back(
+          "[implicit]: the Newton line search is on the residual |g|, not on "
+          "the incremental potential: " +
+          why);
+    }
+  }
   return sim;
 }
 

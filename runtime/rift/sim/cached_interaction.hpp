@@ -21,7 +21,9 @@
 //   void jacobian_product(const Match&, const ForceInput&, const Vec3* px,
 //                         const Vec3* pv, Vec3* out);  // out += Jx px + Jv pv
 //
-// and a kernel without them may give `static constexpr const char*
+// A kernel whose rule gives an energy states `static constexpr bool
+// kHasEnergy = true;`. It may state `static constexpr bool kJacobianSemidefinite = true;` (the
+// rule's `semidefinite;`), and a kernel without them may give `static constexpr const char*
 // kJacobianUnavailable` (riftc's located reason).
 //
 // On several threads (rift/core/parallel.hpp) a kernel that supplies
@@ -117,6 +119,22 @@ class CachedInteraction final : public ForceModel {
       return Kernel::kJacobianVertices;
     } else {
       return 0;
+    }
+  }
+
+  bool has_energy() const override {
+    if constexpr (requires { Kernel::kHasEnergy; }) {
+      return Kernel::kHasEnergy;
+    } else {
+      return false;
+    }
+  }
+
+  bool jacobian_semidefinite() const override {
+    if constexpr (requires { Kernel::kJacobianSemidefinite; }) {
+      return Kernel::kJacobianSemidefinite;
+    } else {
+      return false;
     }
   }
 

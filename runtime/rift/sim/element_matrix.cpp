@@ -85,6 +85,7 @@ void ElementMatrix::set_models(std::span<ForceModel* const> models) {
     ElementBlocks e;
     e.model = m;
     e.k = m->jacobian_vertices();
+    e.semidefinite = m->jacobian_semidefinite();
     elements_.push_back(std::move(e));
   }
 }
@@ -99,6 +100,7 @@ void ElementMatrix::assemble(const ForceInput& in, Real h, std::size_t n, std::v
   parallel_for(n, [&](std::size_t i) { kxv[i].setZero(); });
   // A count, the same whatever the order the blocks add to it in.
   std::atomic<std::size_t> projected{0};
+  std::atomic<bool> velocity_dependent{false};
   for (ElementBlocks& e : elements_) {
     const std::size_t k = static_cast<std::size_t>(e.k);
     const std::size_t matches = e.model->active_matches();
@@ -122,23 +124,27 @@ void ElementMatrix::assemble(const ForceInput& in, Real h, std::size_t n, std::v
       const Slot* s = e.slots.data() + m * k;
       Mat3* c = e.blocks.data() + m * k * k;
       Mat3* dv = e.dfdv.data() + m * k * k;
-      if (project_) {
+      if (project_ && !e.semidefinite) {
         const int changed = project_to_semidefinite(c, e.k) + project_to_semidefinite(dv, e.k);
         if (changed) projected.fetch_add(changed, std::memory_order_relaxed);
       }
+      bool damped = false;
       for (std::size_t i = 0; i < k; ++i) {
         Vec3 row = Vec3::Zero();
         for (std::size_t j = 0; j < k; ++j) {
           Mat3& b = c[i * k + j];  // holds ∂f_i/∂x_j on entry
           if (s[i] != kNoSlot && s[j] != kNoSlot) row += b * in.v[s[j]];
+          damped = damped || !(dv[i * k + j].array() == 0).all();
           b = -(h2 * b + h * dv[i * k + j]);
         }
         e.terms[m * k + i] = row;
       }
+      if (damped) velocity_dependent.store(true, std::memory_order_relaxed);
     });
     e.gather.add_to(e.terms.data(), kxv.data());
   }
   projected_ = projected.load();
+  velocity_dependent_ = velocity_dependent.load();
 }
 
 void ElementMatrix::multiply(const Vec3* p, Vec3* out, std::size_t n) const {

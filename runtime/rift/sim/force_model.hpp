@@ -41,6 +41,9 @@ class ForceModel {
 
   /// Elastic energy at the given state (0 when the interaction has none).
   virtual Real potential_energy(const ForceInput& /*in*/) const { return 0; }
+  /// True when potential_energy is the energy whose negative gradient in x
+  /// is this interaction's elastic force (the rule gives an `energy`).
+  virtual bool has_energy() const { return false; }
 
   /// Number of support orbits whose pattern currently matches.
   virtual std::size_t active_matches() const = 0;
@@ -61,6 +64,11 @@ class ForceModel {
   virtual std::string jacobian_unavailable_reason() const {
     return "interaction '" + name() + "' does not provide Jacobians";
   }
+  /// True when -∂f/∂x and -∂f/∂v of every match are positive semidefinite
+  /// at every state by construction (the rule says `semidefinite;`, e.g. a
+  /// co-rotational element with R held constant): the implicit solver then
+  /// neither tests nor projects its element matrices (element_matrix.hpp).
+  virtual bool jacobian_semidefinite() const { return false; }
   /// For every match m (0 <= m < active_matches()): writes its k vertex
   /// slots at slots[m k ...], and its blocks at dfdx[m k² ...] and
   /// dfdv[m k² ...]. A slot of kNoSlot marks an unused vertex (its blocks 0).

@@ -31,6 +31,12 @@ std::optional<JacobianMode> parse_jacobian_mode(std::string_view name) {
   return std::nullopt;
 }
 
+std::optional<LineSearch> parse_line_search(std::string_view name) {
+  if (name == "energy") return LineSearch::kEnergy;
+  if (name == "residual") return LineSearch::kResidual;
+  return std::nullopt;
+}
+
 ImplicitEuler::ImplicitEuler(ImplicitSettings settings)
     : settings_(settings), preconditioner_(settings.preconditioner) {
   blocks_.set_projection(settings.project_definite);
@@ -152,7 +158,21 @@ void ImplicitEuler::step(const ForceFn& force, const std::vector<Real>& mass,
     for (std::size_t i = 0; i < n; ++i)
       if (is_free[i]) scale += (mass[i] * v[i]).squaredNorm() + (h * f_[i]).squaredNorm();
     const Real stop = settings_.newton_tolerance * std::sqrt(scale) + 1e-300;
+    // The incremental potential E(v) = ½ |v - v0|²_M + Φ(x0 + h v), whose
+    // gradient is g, where the forces have a potential (velocity-independent
+    // at the first linearisation, assembled, a potential given).
+    const bool energy_search = settings_.line_search == LineSearch::kEnergy && potential_ &&
+                               settings_.jacobian == JacobianMode::kAssembled &&
+                               !blocks_.velocity_dependent();
+    stats_.energy_search = energy_search;
+    auto energy = [&](const std::vector<Vec3>& vt, const std::vector<Vec3>& xt) {
+      Real kinetic = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        if (is_free[i]) kinetic += mass[i] * (vt[i] - v[i]).squaredNorm();
+      return 0.5 * kinetic + potential_(xt);
+    };
     Real g = residual(v1_, x1_);
+    Real e = energy_search ? energy(v1_, x1_) : 0;
     for (int it = 1; it < settings_.newton_iterations && g > stop; ++it) {
       const ForceInput at{x1_.data(), v1_.data()};
       linearise(at, mass, is_free, h);
@@ -160,21 +180,34 @@ void ImplicitEuler::step(const ForceFn& force, const std::vector<Real>& mass,
         dv_[i].setZero();
       solve(at, mass, is_free, h, dv_);  // rhs_ holds -g
       ++stats_.newton_iterations;
-      // Backtracking: halve the step until |g| decreases (at most 10 times).
-      // When no step decreases it (the linear solve met negative curvature,
-      // compressed elements), Newton stops at the best iterate so far.
-      Real alpha = 1, g_trial = g;
+      // The slope of E along dv is g·dv = -rhs_·dv (free vertices).
+      Real slope = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        if (is_free[i]) slope -= rhs_[i].dot(dv_[i]);
+      // Backtracking: halve the step until E decreases by at least 1e-4 of
+      // its linear prediction (Armijo), or, on |g|, until |g| decreases (at
+      // most 10 times). When no step does (dv is no descent direction: the
+      // linear solve met negative curvature), Newton stops at the best
+      // iterate so far.
+      if (energy_search && !(slope < 0)) break;
+      Real alpha = 1, g_trial = g, e_trial = e;
       bool decreased = false;
       for (int k = 0; k < 10 && !decreased; ++k, alpha /= 2) {
         for (std::size_t i = 0; i < n; ++i)
           trial_v_[i] = v1_[i] + alpha * dv_[i];
         g_trial = residual(trial_v_, trial_x_);
-        decreased = g_trial < g;
+        if (energy_search) {
+          e_trial = energy(trial_v_, trial_x_);
+          decreased = e_trial <= e + 1e-4 * alpha * slope;
+        } else {
+          decreased = g_trial < g;
+        }
       }
       if (!decreased) break;
       std::swap(v1_, trial_v_);
       std::swap(x1_, trial_x_);
       g = g_trial;
+      e = e_trial;
     }
     stats_.residual = g;
   }

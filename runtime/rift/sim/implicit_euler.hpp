@@ -9,8 +9,14 @@
 //   (M - h D - h² K) Δv = h (f0 + h K v0),   v1 = v0 + Δv,   x1 = x0 + h v1,
 //
 // and optionally continued by Newton iterations on g with a backtracking
-// line search on |g| (the residual rather than an energy: once damping
-// forces enter there is no potential whose minimum is the step). Each linear
+// line search. When the forces have a potential Φ (every interaction gives
+// an energy, the external forces are gravity, and ∂f/∂v = 0), g is the
+// gradient of the incremental potential of backward Euler
+//
+//   E(v1) = ½ (v1 - v0)ᵀ M (v1 - v0) + Φ(x0 + h v1),
+//
+// and the search asks E to decrease enough (Armijo); otherwise (damping: no
+// potential has the step as its minimum) it asks |g| to decrease. Each linear
 // system is solved by preconditioned conjugate gradients with constrained
 // vertices (pins, moving handles) as Dirichlet degrees of freedom: their
 // end-of-step velocity is prescribed and filtered out of the iteration
@@ -37,6 +43,14 @@ enum class JacobianMode {
 /// "assembled", "matrix_free".
 std::optional<JacobianMode> parse_jacobian_mode(std::string_view name);
 
+enum class LineSearch {
+  kEnergy,    ///< on the incremental potential where it exists, else on |g|
+  kResidual,  ///< on |g| always
+};
+
+/// "energy", "residual".
+std::optional<LineSearch> parse_line_search(std::string_view name);
+
 /// The [implicit] table of a scene (docs/scenes.md).
 struct ImplicitSettings {
   Real cg_tolerance = 1e-6;  ///< stop when |r| <= tolerance |b| (free vertices)
@@ -45,6 +59,7 @@ struct ImplicitSettings {
   int newton_iterations = 1;     ///< 1: linearised once (Baraff & Witkin); more: Newton
   Real newton_tolerance = 1e-8;  ///< stop Newton when |g| <= tolerance · |M v0| + tiny
   JacobianMode jacobian = JacobianMode::kAssembled;
+  LineSearch line_search = LineSearch::kEnergy;
   /// Project element matrices that are not semidefinite (element_matrix.hpp);
   /// assembled Jacobians only.
   bool project_definite = true;
@@ -56,6 +71,7 @@ struct ImplicitStats {
   int cg_iterations = 0;          ///< summed over Newton iterations
   Real cg_relative_residual = 0;  ///< of the last solve
   Real residual = 0;              ///< |g(v1)| at the end, when Newton ran more than once (else 0)
+  bool energy_search = false;     ///< the Newton line search was on the incremental potential
   std::size_t projected = 0;  ///< element matrices made semidefinite, summed over linearisations
 };
 
@@ -69,6 +85,9 @@ class ImplicitEuler {
   /// f(x, v, out): total force per vertex slot (interactions + external).
   using ForceFn = std::function<void(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
                                      std::vector<Vec3>& f)>;
+  /// Φ(x): the potential energy of every force, f = -∂Φ/∂x where f does not
+  /// depend on v.
+  using PotentialFn = std::function<Real(const std::vector<Vec3>& x)>;
 
   explicit ImplicitEuler(ImplicitSettings settings = {});
 
@@ -80,6 +99,11 @@ class ImplicitEuler {
   /// The interactions whose Jacobians enter the system. Throws
   /// std::invalid_argument naming the first without Jacobians and why.
   void set_models(std::span<ForceModel* const> models);
+
+  /// The forces' potential, for the Newton line search on the incremental
+  /// potential (null: none, the search is on |g|). It is used only at
+  /// states where the assembled ∂f/∂v is zero.
+  void set_potential(PotentialFn potential) { potential_ = std::move(potential); }
 
   /// The matches changed (after a tear): the incomplete-Cholesky pattern is
   /// rebuilt at the next step, and the element blocks' gathers.
@@ -111,6 +135,7 @@ class ImplicitEuler {
   ImplicitStats stats_;
   ImplicitTimes times_;
   std::vector<ForceModel*> models_;
+  PotentialFn potential_;
   ElementMatrix blocks_;
   Preconditioner preconditioner_;
   PcgScratch pcg_;

@@ -92,8 +92,30 @@ void Simulation::initialise() {
     for (auto& model : models_)
       models.push_back(model.get());
     implicit_->set_models(models);
+    if (implicit_potential_missing().empty()) {
+      // Φ(x) = Σ interaction energies - Σ m g·x over the free vertices (the
+      // forces of implicit_step: interactions and gravity).
+      implicit_->set_potential([this](const std::vector<Vec3>& x) {
+        const ForceInput in{x.data(), velocity_.values().data()};
+        Real e = 0;
+        for (auto& model : models_)
+          e += model->potential_energy(in);
+        const std::vector<Real>& mass = vertex_mass_.values();
+        for (std::size_t s = 0; s < x.size(); ++s)
+          if (is_free_[s]) e -= mass[s] * settings_.gravity.dot(x[s]);
+        return e;
+      });
+    }
   }
   initialised_ = true;
+}
+
+std::string Simulation::implicit_potential_missing() const {
+  for (const auto& model : models_) {
+    if (!model->has_energy()) return "interaction '" + model->name() + "' gives no energy";
+  }
+  if (!external_.empty()) return "the scene has loads or drag besides gravity";
+  return "";
 }
 
 void Simulation::refresh_inverse_masses() {

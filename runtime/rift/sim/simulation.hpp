@@ -7,6 +7,7 @@
 #include <memory>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "rift/gmap/gmap.hpp"
@@ -133,6 +134,10 @@ class Simulation {
   const DivergenceMonitor& divergence() const { return divergence_; }
   /// 1 / mass by vertex slot; 0 for pinned (prescribed) vertices and free slots.
   const std::vector<Real>& inverse_masses() const { return inverse_mass_; }
+  /// Why the implicit Newton line search cannot be on the incremental
+  /// potential ("" when it can): an interaction without an energy, or
+  /// external forces besides gravity. (Damping is found while stepping.)
+  std::string implicit_potential_missing() const;
   /// The implicit integrator, when settings().integrator is implicit_euler.
   const ImplicitEuler* implicit() const { return implicit_.get(); }
   ImplicitEuler* implicit() { return implicit_.get(); }
@@ -158,6 +163,7 @@ class Simulation {
   Integrator integrator_;
   std::unique_ptr<ImplicitEuler> implicit_;  // integrator = implicit_euler
   std::vector<char> is_free_;                // implicit: inverse mass > 0
+  std::vector<Vec3> target_v_;               // implicit: end-of-step velocity of the others
   std::vector<Vec3> scratch_a_;              // implicit: accelerations, unused
   std::vector<std::unique_ptr<ForceModel>> models_;
   Embedding<Vec3> position_, velocity_;

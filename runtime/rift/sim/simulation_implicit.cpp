@@ -1,5 +1,6 @@
 // Simulation's step with integrator = implicit_euler: the glue between the
 // loop's state (masses, pins, forces) and ImplicitEuler.
+#include "rift/sim/handles.hpp"
 #include "rift/sim/simulation.hpp"
 
 namespace rift {
@@ -9,11 +10,24 @@ void Simulation::implicit_step() {
   std::vector<Vec3>& v = velocity_.values();
   const std::vector<Real>& mass = vertex_mass_.values();
   const std::size_t n = x.size();
-  // Constrained (pinned) and dead slots are Dirichlet vertices; their
-  // target velocity is zero until moving handles exist.
+  // Constrained slots (pins, held by a handle, dead) are Dirichlet degrees
+  // of freedom of the linear system: their end-of-step velocity is
+  // prescribed, and the solve sees them move. A held vertex gets the
+  // velocity that lands it on its handle's target at t + h exactly
+  // (x1 = x0 + h v1), so the free vertices around it respond to that motion
+  // within the same step (never a post-step overwrite the solve did not
+  // know of); pins and dead slots stay where they are.
   is_free_.resize(n);
-  for (std::size_t s = 0; s < n; ++s)
+  target_v_.resize(n);
+  const OrbitAttachment& att = position_.attachment();
+  const Real h = settings_.dt;
+  for (std::size_t s = 0; s < n; ++s) {
     is_free_[s] = inverse_mass_[s] > 0;
+    const bool held = !is_free_[s] && handles_ && att.slot_alive(static_cast<Slot>(s)) &&
+                      handles_->holds(static_cast<Slot>(s), time_);
+    target_v_[s] =
+        held ? Vec3((handles_->target(static_cast<Slot>(s), time_ + h) - x[s]) / h) : Vec3::Zero();
+  }
   const Vec3 g = settings_.gravity;
   // Total force = interactions + gravity (external: no Jacobian).
   auto add_external = [&](std::vector<Vec3>& f) {
@@ -28,7 +42,7 @@ void Simulation::implicit_step() {
         f.assign(forces_.begin(), forces_.end());
         add_external(f);
       },
-      mass, is_free_, nullptr, x, v, settings_.dt, &a0_);
+      mass, is_free_, target_v_.data(), x, v, h, &a0_);
 }
 
 }  // namespace rift

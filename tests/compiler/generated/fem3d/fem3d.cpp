@@ -738,7 +738,7 @@ void CorotationalKernel::vertex_slots(const Match& m, rift::Slot* out) const {
   out[3] = m.vertex_c3;
 }
 
-void CorotationalKernel::jacobian([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, rift::Mat3* dfdx, rift::Mat3* dfdv) {
+[[gnu::flatten]] void CorotationalKernel::jacobian([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, rift::Mat3* dfdx, rift::Mat3* dfdv) {
   for (int b = 0; b < 16; ++b) {
     dfdx[b].setZero();
     dfdv[b].setZero();
@@ -758,33 +758,51 @@ void CorotationalKernel::jacobian([[maybe_unused]] const Match& m, [[maybe_unuse
   [[maybe_unused]] const rift::Vec3 l_f1 = rift::Vec3((l_hm)(0, 0), (l_hm)(1, 0), (l_hm)(2, 0));
   [[maybe_unused]] const rift::Vec3 l_f2 = rift::Vec3((l_hm)(0, 1), (l_hm)(1, 1), (l_hm)(2, 1));
   [[maybe_unused]] const rift::Vec3 l_f3 = rift::Vec3((l_hm)(0, 2), (l_hm)(1, 2), (l_hm)(2, 2));
-  for (int dir = 0; dir < 24; ++dir) {
-    const bool wrt_x = dir < 12;
-    const int j = (dir % 12) / 3, c3 = dir % 3;
-    rift::Vec3 tx[4], tv[4];
+  #pragma GCC unroll 12
+  for (int dir = 0; dir < 12; ++dir) {
+    const int j = dir / 3, c3 = dir % 3;
+    rift::Vec3 tx[4];
     for (int v = 0; v < 4; ++v) {
       tx[v].setZero();
-      tv[v].setZero();
     }
-    (wrt_x ? tx : tv)[j][c3] = 1;
+    tx[j][c3] = 1;
     [[maybe_unused]] const rift::Mat3 t_l_f = rift::Mat3(((rift::Mat3() << (rift::Vec3((tx[0]) - (tx[1]))), (rift::Vec3((tx[2]) - (tx[1]))), (rift::Vec3((tx[3]) - (tx[1])))).finished()) * (l_b));
     [[maybe_unused]] const rift::Mat3 t_l_rf = rift::Mat3((rift::Mat3((l_r).transpose())) * (t_l_f));
     [[maybe_unused]] const rift::Mat3 t_l_strain = rift::Mat3(rift::Mat3((0.5) * (rift::Mat3((t_l_rf) + (rift::Mat3((t_l_rf).transpose()))))));
-    [[maybe_unused]] const rift::Mat3 t_l_rv = rift::Mat3((rift::Mat3((rift::Mat3((l_r).transpose())) * ((rift::Mat3() << (rift::Vec3((tv[0]) - (tv[1]))), (rift::Vec3((tv[2]) - (tv[1]))), (rift::Vec3((tv[3]) - (tv[1])))).finished()))) * (l_b));
-    [[maybe_unused]] const rift::Mat3 t_l_e = rift::Mat3((t_l_strain) + (rift::Mat3(((0.5 * p_.damping)) * (rift::Mat3((t_l_rv) + (rift::Mat3((t_l_rv).transpose())))))));
+    [[maybe_unused]] const rift::Mat3 t_l_e = rift::Mat3(t_l_strain);
     [[maybe_unused]] const rift::Mat3 t_l_stress = rift::Mat3((rift::Mat3((rift::Real((l_lambda) * (rift::Real((t_l_e).trace())))) * (rift::Mat3(rift::Mat3::Identity())))) + (rift::Mat3(((2.0 * l_mu)) * (t_l_e))));
     [[maybe_unused]] const rift::Mat3 t_l_hm = rift::Mat3(((-c.fem_volume[m.orbit012_c0])) * (rift::Mat3((rift::Mat3((l_r) * (t_l_stress))) * (rift::Mat3((l_b).transpose())))));
     [[maybe_unused]] const rift::Vec3 t_l_f1 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{0}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{0}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{0}))));
     [[maybe_unused]] const rift::Vec3 t_l_f2 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{1}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{1}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{1}))));
     [[maybe_unused]] const rift::Vec3 t_l_f3 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{2}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{2}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{2}))));
-    (wrt_x ? dfdx : dfdv)[4 + j].col(c3) += rift::Vec3(rift::Vec3(-(rift::Vec3((rift::Vec3((t_l_f1) + (t_l_f2))) + (t_l_f3)))));
-    (wrt_x ? dfdx : dfdv)[0 + j].col(c3) += rift::Vec3(t_l_f1);
-    (wrt_x ? dfdx : dfdv)[8 + j].col(c3) += rift::Vec3(t_l_f2);
-    (wrt_x ? dfdx : dfdv)[12 + j].col(c3) += rift::Vec3(t_l_f3);
+    dfdx[4 + j].col(c3) += rift::Vec3(rift::Vec3(-(rift::Vec3((rift::Vec3((t_l_f1) + (t_l_f2))) + (t_l_f3)))));
+    dfdx[0 + j].col(c3) += rift::Vec3(t_l_f1);
+    dfdx[8 + j].col(c3) += rift::Vec3(t_l_f2);
+    dfdx[12 + j].col(c3) += rift::Vec3(t_l_f3);
+  }
+  #pragma GCC unroll 12
+  for (int dir = 0; dir < 12; ++dir) {
+    const int j = dir / 3, c3 = dir % 3;
+    rift::Vec3 tv[4];
+    for (int v = 0; v < 4; ++v) {
+      tv[v].setZero();
+    }
+    tv[j][c3] = 1;
+    [[maybe_unused]] const rift::Mat3 t_l_rv = rift::Mat3((rift::Mat3((rift::Mat3((l_r).transpose())) * ((rift::Mat3() << (rift::Vec3((tv[0]) - (tv[1]))), (rift::Vec3((tv[2]) - (tv[1]))), (rift::Vec3((tv[3]) - (tv[1])))).finished()))) * (l_b));
+    [[maybe_unused]] const rift::Mat3 t_l_e = rift::Mat3(rift::Mat3(((0.5 * p_.damping)) * (rift::Mat3((t_l_rv) + (rift::Mat3((t_l_rv).transpose()))))));
+    [[maybe_unused]] const rift::Mat3 t_l_stress = rift::Mat3((rift::Mat3((rift::Real((l_lambda) * (rift::Real((t_l_e).trace())))) * (rift::Mat3(rift::Mat3::Identity())))) + (rift::Mat3(((2.0 * l_mu)) * (t_l_e))));
+    [[maybe_unused]] const rift::Mat3 t_l_hm = rift::Mat3(((-c.fem_volume[m.orbit012_c0])) * (rift::Mat3((rift::Mat3((l_r) * (t_l_stress))) * (rift::Mat3((l_b).transpose())))));
+    [[maybe_unused]] const rift::Vec3 t_l_f1 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{0}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{0}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{0}))));
+    [[maybe_unused]] const rift::Vec3 t_l_f2 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{1}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{1}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{1}))));
+    [[maybe_unused]] const rift::Vec3 t_l_f3 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{2}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{2}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{2}))));
+    dfdv[4 + j].col(c3) += rift::Vec3(rift::Vec3(-(rift::Vec3((rift::Vec3((t_l_f1) + (t_l_f2))) + (t_l_f3)))));
+    dfdv[0 + j].col(c3) += rift::Vec3(t_l_f1);
+    dfdv[8 + j].col(c3) += rift::Vec3(t_l_f2);
+    dfdv[12 + j].col(c3) += rift::Vec3(t_l_f3);
   }
 }
 
-void CorotationalKernel::jacobian_product([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, [[maybe_unused]] const rift::Vec3* px, [[maybe_unused]] const rift::Vec3* pv, rift::Vec3* out) {
+[[gnu::flatten]] void CorotationalKernel::jacobian_product([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, [[maybe_unused]] const rift::Vec3* px, [[maybe_unused]] const rift::Vec3* pv, rift::Vec3* out) {
   [[maybe_unused]] const Columns c = columns();
   [[maybe_unused]] const rift::Mat3 l_b = c.fem_b[m.orbit012_c0];
   [[maybe_unused]] const rift::Mat3 l_f = ((rift::Mat3() << (in.x[m.vertex_c1] - in.x[m.vertex_c0]), (in.x[m.vertex_c2] - in.x[m.vertex_c0]), (in.x[m.vertex_c3] - in.x[m.vertex_c0])).finished() * l_b);

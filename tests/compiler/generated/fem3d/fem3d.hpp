@@ -71,9 +71,13 @@ class CorotationalKernel {
   void force_terms_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* terms, bool store);
   void reset_stored(const Match& m);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
+  /// The rule gives an energy (the implicit Newton line search can use it).
+  static constexpr bool kHasEnergy = true;
   /// Jacobians derived by riftc (forward mode): the match's vertices, the blocks
   /// df_i/dx_j and df_i/dv_j (row-major), and the product J p.
   static constexpr int kJacobianVertices = 4;
+  /// The rule states -J semidefinite (`semidefinite;`): no test, no projection.
+  static constexpr bool kJacobianSemidefinite = true;
   void vertex_slots(const Match& m, rift::Slot* out) const;
   void jacobian(const Match& m, const rift::ForceInput& in, rift::Mat3* dfdx, rift::Mat3* dfdv);
   void jacobian_product(const Match& m, const rift::ForceInput& in, const rift::Vec3* px, const rift::Vec3* pv, rift::Vec3* out);

@@ -546,7 +546,7 @@ void StretchKernel::vertex_slots(const Match& m, rift::Slot* out) const {
   out[1] = m.vertex_a;
 }
 
-void StretchKernel::jacobian([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, rift::Mat3* dfdx, rift::Mat3* dfdv) {
+[[gnu::flatten]] void StretchKernel::jacobian([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, rift::Mat3* dfdx, rift::Mat3* dfdv) {
   for (int b = 0; b < 4; ++b) {
     dfdx[b].setZero();
     dfdv[b].setZero();
@@ -557,25 +557,36 @@ void StretchKernel::jacobian([[maybe_unused]] const Match& m, [[maybe_unused]] c
   if (!(l_l > 0.0)) return;
   [[maybe_unused]] const rift::Real l_inv = (1.0 / l_l);
   [[maybe_unused]] const rift::Real l_t = ((c.stretch_k[m.orbit0_a] * (l_l - c.stretch_rest[m.orbit0_a])) + ((p_.damping * ((in.v[m.vertex_b] - in.v[m.vertex_a])).dot(l_d)) * l_inv));
-  for (int dir = 0; dir < 12; ++dir) {
-    const bool wrt_x = dir < 6;
-    const int j = (dir % 6) / 3, c3 = dir % 3;
-    rift::Vec3 tx[2], tv[2];
+  #pragma GCC unroll 6
+  for (int dir = 0; dir < 6; ++dir) {
+    const int j = dir / 3, c3 = dir % 3;
+    rift::Vec3 tx[2];
     for (int v = 0; v < 2; ++v) {
       tx[v].setZero();
-      tv[v].setZero();
     }
-    (wrt_x ? tx : tv)[j][c3] = 1;
+    tx[j][c3] = 1;
     [[maybe_unused]] const rift::Vec3 t_l_d = rift::Vec3((tx[0]) - (tx[1]));
     [[maybe_unused]] const rift::Real t_l_l = rift::Real((l_d).dot((t_l_d)) / (l_d).norm());
     [[maybe_unused]] const rift::Real t_l_inv = rift::Real(-(1.0) * ((t_l_l) / ((l_l) * (l_l))));
-    [[maybe_unused]] const rift::Real t_l_t = rift::Real((rift::Real((c.stretch_k[m.orbit0_a]) * (rift::Real(t_l_l)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[0]) - (tv[1]))).dot(l_d) + (rift::Vec3(in.v[m.vertex_b] - in.v[m.vertex_a])).dot((t_l_d)))))) * (l_inv) + ((p_.damping * (rift::Vec3(in.v[m.vertex_b] - in.v[m.vertex_a])).dot(l_d))) * (t_l_inv))));
-    (wrt_x ? dfdx : dfdv)[2 + j].col(c3) += rift::Vec3(rift::Vec3((rift::Real((t_l_t) * (l_inv) + (l_t) * (t_l_inv))) * (l_d) + ((l_t * l_inv)) * (t_l_d)));
-    (wrt_x ? dfdx : dfdv)[0 + j].col(c3) += rift::Vec3(rift::Vec3((rift::Real(-(rift::Real((t_l_t) * (l_inv) + (l_t) * (t_l_inv))))) * (l_d) + ((-(l_t * l_inv))) * (t_l_d)));
+    [[maybe_unused]] const rift::Real t_l_t = rift::Real((rift::Real((c.stretch_k[m.orbit0_a]) * (rift::Real(t_l_l)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real(rift::Vec3(rift::Vec3::Zero()).dot(l_d) + (rift::Vec3(in.v[m.vertex_b] - in.v[m.vertex_a])).dot((t_l_d)))))) * (l_inv) + ((p_.damping * (rift::Vec3(in.v[m.vertex_b] - in.v[m.vertex_a])).dot(l_d))) * (t_l_inv))));
+    dfdx[2 + j].col(c3) += rift::Vec3(rift::Vec3((rift::Real((t_l_t) * (l_inv) + (l_t) * (t_l_inv))) * (l_d) + ((l_t * l_inv)) * (t_l_d)));
+    dfdx[0 + j].col(c3) += rift::Vec3(rift::Vec3((rift::Real(-(rift::Real((t_l_t) * (l_inv) + (l_t) * (t_l_inv))))) * (l_d) + ((-(l_t * l_inv))) * (t_l_d)));
+  }
+  #pragma GCC unroll 6
+  for (int dir = 0; dir < 6; ++dir) {
+    const int j = dir / 3, c3 = dir % 3;
+    rift::Vec3 tv[2];
+    for (int v = 0; v < 2; ++v) {
+      tv[v].setZero();
+    }
+    tv[j][c3] = 1;
+    [[maybe_unused]] const rift::Real t_l_t = rift::Real(rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[0]) - (tv[1]))).dot(l_d) + (rift::Vec3(in.v[m.vertex_b] - in.v[m.vertex_a])).dot(rift::Vec3(rift::Vec3::Zero())))))) * (l_inv)));
+    dfdv[2 + j].col(c3) += rift::Vec3(rift::Vec3((rift::Real((t_l_t) * (l_inv))) * (l_d)));
+    dfdv[0 + j].col(c3) += rift::Vec3(rift::Vec3((rift::Real(-(rift::Real((t_l_t) * (l_inv))))) * (l_d)));
   }
 }
 
-void StretchKernel::jacobian_product([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, [[maybe_unused]] const rift::Vec3* px, [[maybe_unused]] const rift::Vec3* pv, rift::Vec3* out) {
+[[gnu::flatten]] void StretchKernel::jacobian_product([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, [[maybe_unused]] const rift::Vec3* px, [[maybe_unused]] const rift::Vec3* pv, rift::Vec3* out) {
   [[maybe_unused]] const Columns c = columns();
   [[maybe_unused]] const rift::Vec3 l_d = (in.x[m.vertex_b] - in.x[m.vertex_a]);
   [[maybe_unused]] const rift::Real l_l = (l_d).norm();
@@ -804,7 +815,7 @@ void ShearKernel::vertex_slots(const Match& m, rift::Slot* out) const {
   out[3] = m.vertex_c1;
 }
 
-void ShearKernel::jacobian([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, rift::Mat3* dfdx, rift::Mat3* dfdv) {
+[[gnu::flatten]] void ShearKernel::jacobian([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, rift::Mat3* dfdx, rift::Mat3* dfdv) {
   for (int b = 0; b < 16; ++b) {
     dfdx[b].setZero();
     dfdv[b].setZero();
@@ -820,33 +831,49 @@ void ShearKernel::jacobian([[maybe_unused]] const Match& m, [[maybe_unused]] con
   [[maybe_unused]] const rift::Real l_tb = ((c.shear_k[m.orbit01_c0] * (l_lb - c.shear_rest13[m.orbit01_c0])) + ((p_.damping * ((in.v[m.vertex_c3] - in.v[m.vertex_c1])).dot(l_db)) * l_ib));
   [[maybe_unused]] const rift::Vec3 l_fa = ((l_ta * l_ia) * l_da);
   [[maybe_unused]] const rift::Vec3 l_fb = ((l_tb * l_ib) * l_db);
-  for (int dir = 0; dir < 24; ++dir) {
-    const bool wrt_x = dir < 12;
-    const int j = (dir % 12) / 3, c3 = dir % 3;
-    rift::Vec3 tx[4], tv[4];
+  #pragma GCC unroll 12
+  for (int dir = 0; dir < 12; ++dir) {
+    const int j = dir / 3, c3 = dir % 3;
+    rift::Vec3 tx[4];
     for (int v = 0; v < 4; ++v) {
       tx[v].setZero();
-      tv[v].setZero();
     }
-    (wrt_x ? tx : tv)[j][c3] = 1;
+    tx[j][c3] = 1;
     [[maybe_unused]] const rift::Vec3 t_l_da = rift::Vec3((tx[0]) - (tx[1]));
     [[maybe_unused]] const rift::Vec3 t_l_db = rift::Vec3((tx[2]) - (tx[3]));
     [[maybe_unused]] const rift::Real t_l_la = rift::Real((l_da).dot((t_l_da)) / (l_da).norm());
     [[maybe_unused]] const rift::Real t_l_lb = rift::Real((l_db).dot((t_l_db)) / (l_db).norm());
     [[maybe_unused]] const rift::Real t_l_ia = ((l_la > 0.0) ? rift::Real((rift::Real(-(1.0) * ((t_l_la) / ((l_la) * (l_la)))))) : rift::Real(rift::Real(0)));
     [[maybe_unused]] const rift::Real t_l_ib = ((l_lb > 0.0) ? rift::Real((rift::Real(-(1.0) * ((t_l_lb) / ((l_lb) * (l_lb)))))) : rift::Real(rift::Real(0)));
-    [[maybe_unused]] const rift::Real t_l_ta = rift::Real((rift::Real((c.shear_k[m.orbit01_c0]) * (rift::Real(t_l_la)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[0]) - (tv[1]))).dot(l_da) + (rift::Vec3(in.v[m.vertex_c2] - in.v[m.vertex_c0])).dot((t_l_da)))))) * (l_ia) + ((p_.damping * (rift::Vec3(in.v[m.vertex_c2] - in.v[m.vertex_c0])).dot(l_da))) * (t_l_ia))));
-    [[maybe_unused]] const rift::Real t_l_tb = rift::Real((rift::Real((c.shear_k[m.orbit01_c0]) * (rift::Real(t_l_lb)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[2]) - (tv[3]))).dot(l_db) + (rift::Vec3(in.v[m.vertex_c3] - in.v[m.vertex_c1])).dot((t_l_db)))))) * (l_ib) + ((p_.damping * (rift::Vec3(in.v[m.vertex_c3] - in.v[m.vertex_c1])).dot(l_db))) * (t_l_ib))));
+    [[maybe_unused]] const rift::Real t_l_ta = rift::Real((rift::Real((c.shear_k[m.orbit01_c0]) * (rift::Real(t_l_la)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real(rift::Vec3(rift::Vec3::Zero()).dot(l_da) + (rift::Vec3(in.v[m.vertex_c2] - in.v[m.vertex_c0])).dot((t_l_da)))))) * (l_ia) + ((p_.damping * (rift::Vec3(in.v[m.vertex_c2] - in.v[m.vertex_c0])).dot(l_da))) * (t_l_ia))));
+    [[maybe_unused]] const rift::Real t_l_tb = rift::Real((rift::Real((c.shear_k[m.orbit01_c0]) * (rift::Real(t_l_lb)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real(rift::Vec3(rift::Vec3::Zero()).dot(l_db) + (rift::Vec3(in.v[m.vertex_c3] - in.v[m.vertex_c1])).dot((t_l_db)))))) * (l_ib) + ((p_.damping * (rift::Vec3(in.v[m.vertex_c3] - in.v[m.vertex_c1])).dot(l_db))) * (t_l_ib))));
     [[maybe_unused]] const rift::Vec3 t_l_fa = rift::Vec3((rift::Real((t_l_ta) * (l_ia) + (l_ta) * (t_l_ia))) * (l_da) + ((l_ta * l_ia)) * (t_l_da));
     [[maybe_unused]] const rift::Vec3 t_l_fb = rift::Vec3((rift::Real((t_l_tb) * (l_ib) + (l_tb) * (t_l_ib))) * (l_db) + ((l_tb * l_ib)) * (t_l_db));
-    (wrt_x ? dfdx : dfdv)[4 + j].col(c3) += rift::Vec3(t_l_fa);
-    (wrt_x ? dfdx : dfdv)[0 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_fa)));
-    (wrt_x ? dfdx : dfdv)[12 + j].col(c3) += rift::Vec3(t_l_fb);
-    (wrt_x ? dfdx : dfdv)[8 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_fb)));
+    dfdx[4 + j].col(c3) += rift::Vec3(t_l_fa);
+    dfdx[0 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_fa)));
+    dfdx[12 + j].col(c3) += rift::Vec3(t_l_fb);
+    dfdx[8 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_fb)));
+  }
+  #pragma GCC unroll 12
+  for (int dir = 0; dir < 12; ++dir) {
+    const int j = dir / 3, c3 = dir % 3;
+    rift::Vec3 tv[4];
+    for (int v = 0; v < 4; ++v) {
+      tv[v].setZero();
+    }
+    tv[j][c3] = 1;
+    [[maybe_unused]] const rift::Real t_l_ta = rift::Real(rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[0]) - (tv[1]))).dot(l_da) + (rift::Vec3(in.v[m.vertex_c2] - in.v[m.vertex_c0])).dot(rift::Vec3(rift::Vec3::Zero())))))) * (l_ia)));
+    [[maybe_unused]] const rift::Real t_l_tb = rift::Real(rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[2]) - (tv[3]))).dot(l_db) + (rift::Vec3(in.v[m.vertex_c3] - in.v[m.vertex_c1])).dot(rift::Vec3(rift::Vec3::Zero())))))) * (l_ib)));
+    [[maybe_unused]] const rift::Vec3 t_l_fa = rift::Vec3((rift::Real((t_l_ta) * (l_ia))) * (l_da));
+    [[maybe_unused]] const rift::Vec3 t_l_fb = rift::Vec3((rift::Real((t_l_tb) * (l_ib))) * (l_db));
+    dfdv[4 + j].col(c3) += rift::Vec3(t_l_fa);
+    dfdv[0 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_fa)));
+    dfdv[12 + j].col(c3) += rift::Vec3(t_l_fb);
+    dfdv[8 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_fb)));
   }
 }
 
-void ShearKernel::jacobian_product([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, [[maybe_unused]] const rift::Vec3* px, [[maybe_unused]] const rift::Vec3* pv, rift::Vec3* out) {
+[[gnu::flatten]] void ShearKernel::jacobian_product([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, [[maybe_unused]] const rift::Vec3* px, [[maybe_unused]] const rift::Vec3* pv, rift::Vec3* out) {
   [[maybe_unused]] const Columns c = columns();
   [[maybe_unused]] const rift::Vec3 l_da = (in.x[m.vertex_c2] - in.x[m.vertex_c0]);
   [[maybe_unused]] const rift::Vec3 l_db = (in.x[m.vertex_c3] - in.x[m.vertex_c1]);
@@ -2369,7 +2396,7 @@ void VolumeShearKernel::vertex_slots(const Match& m, rift::Slot* out) const {
   out[7] = m.vertex_b6;
 }
 
-void VolumeShearKernel::jacobian([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, rift::Mat3* dfdx, rift::Mat3* dfdv) {
+[[gnu::flatten]] void VolumeShearKernel::jacobian([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, rift::Mat3* dfdx, rift::Mat3* dfdv) {
   for (int b = 0; b < 64; ++b) {
     dfdx[b].setZero();
     dfdv[b].setZero();
@@ -2392,15 +2419,14 @@ void VolumeShearKernel::jacobian([[maybe_unused]] const Match& m, [[maybe_unused
   [[maybe_unused]] const rift::Vec3 l_g1 = ((((l_k * (l_l1 - c.vshear_rest1[m.orbit012_b0])) + ((p_.damping * ((in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(l_d1)) * l_i1)) * l_i1) * l_d1);
   [[maybe_unused]] const rift::Vec3 l_g2 = ((((l_k * (l_l2 - c.vshear_rest2[m.orbit012_b0])) + ((p_.damping * ((in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(l_d2)) * l_i2)) * l_i2) * l_d2);
   [[maybe_unused]] const rift::Vec3 l_g3 = ((((l_k * (l_l3 - c.vshear_rest3[m.orbit012_b0])) + ((p_.damping * ((in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(l_d3)) * l_i3)) * l_i3) * l_d3);
-  for (int dir = 0; dir < 48; ++dir) {
-    const bool wrt_x = dir < 24;
-    const int j = (dir % 24) / 3, c3 = dir % 3;
-    rift::Vec3 tx[8], tv[8];
+  #pragma GCC unroll 24
+  for (int dir = 0; dir < 24; ++dir) {
+    const int j = dir / 3, c3 = dir % 3;
+    rift::Vec3 tx[8];
     for (int v = 0; v < 8; ++v) {
       tx[v].setZero();
-      tv[v].setZero();
     }
-    (wrt_x ? tx : tv)[j][c3] = 1;
+    tx[j][c3] = 1;
     [[maybe_unused]] const rift::Vec3 t_l_d0 = rift::Vec3((tx[0]) - (tx[1]));
     [[maybe_unused]] const rift::Vec3 t_l_d1 = rift::Vec3((tx[2]) - (tx[3]));
     [[maybe_unused]] const rift::Vec3 t_l_d2 = rift::Vec3((tx[4]) - (tx[5]));
@@ -2413,22 +2439,43 @@ void VolumeShearKernel::jacobian([[maybe_unused]] const Match& m, [[maybe_unused
     [[maybe_unused]] const rift::Real t_l_i1 = ((l_l1 > 0.0) ? rift::Real((rift::Real(-(1.0) * ((t_l_l1) / ((l_l1) * (l_l1)))))) : rift::Real(rift::Real(0)));
     [[maybe_unused]] const rift::Real t_l_i2 = ((l_l2 > 0.0) ? rift::Real((rift::Real(-(1.0) * ((t_l_l2) / ((l_l2) * (l_l2)))))) : rift::Real(rift::Real(0)));
     [[maybe_unused]] const rift::Real t_l_i3 = ((l_l3 > 0.0) ? rift::Real((rift::Real(-(1.0) * ((t_l_l3) / ((l_l3) * (l_l3)))))) : rift::Real(rift::Real(0)));
-    [[maybe_unused]] const rift::Vec3 t_l_g0 = rift::Vec3((rift::Real((rift::Real((rift::Real((l_k) * (rift::Real(t_l_l0)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[0]) - (tv[1]))).dot(l_d0) + (rift::Vec3(in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot((t_l_d0)))))) * (l_i0) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(l_d0))) * (t_l_i0))))) * (l_i0) + (((l_k * (l_l0 - c.vshear_rest0[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(l_d0)) * l_i0))) * (t_l_i0))) * (l_d0) + ((((l_k * (l_l0 - c.vshear_rest0[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(l_d0)) * l_i0)) * l_i0)) * (t_l_d0));
-    [[maybe_unused]] const rift::Vec3 t_l_g1 = rift::Vec3((rift::Real((rift::Real((rift::Real((l_k) * (rift::Real(t_l_l1)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[2]) - (tv[3]))).dot(l_d1) + (rift::Vec3(in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot((t_l_d1)))))) * (l_i1) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(l_d1))) * (t_l_i1))))) * (l_i1) + (((l_k * (l_l1 - c.vshear_rest1[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(l_d1)) * l_i1))) * (t_l_i1))) * (l_d1) + ((((l_k * (l_l1 - c.vshear_rest1[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(l_d1)) * l_i1)) * l_i1)) * (t_l_d1));
-    [[maybe_unused]] const rift::Vec3 t_l_g2 = rift::Vec3((rift::Real((rift::Real((rift::Real((l_k) * (rift::Real(t_l_l2)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[4]) - (tv[5]))).dot(l_d2) + (rift::Vec3(in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot((t_l_d2)))))) * (l_i2) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(l_d2))) * (t_l_i2))))) * (l_i2) + (((l_k * (l_l2 - c.vshear_rest2[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(l_d2)) * l_i2))) * (t_l_i2))) * (l_d2) + ((((l_k * (l_l2 - c.vshear_rest2[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(l_d2)) * l_i2)) * l_i2)) * (t_l_d2));
-    [[maybe_unused]] const rift::Vec3 t_l_g3 = rift::Vec3((rift::Real((rift::Real((rift::Real((l_k) * (rift::Real(t_l_l3)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[6]) - (tv[7]))).dot(l_d3) + (rift::Vec3(in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot((t_l_d3)))))) * (l_i3) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(l_d3))) * (t_l_i3))))) * (l_i3) + (((l_k * (l_l3 - c.vshear_rest3[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(l_d3)) * l_i3))) * (t_l_i3))) * (l_d3) + ((((l_k * (l_l3 - c.vshear_rest3[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(l_d3)) * l_i3)) * l_i3)) * (t_l_d3));
-    (wrt_x ? dfdx : dfdv)[8 + j].col(c3) += rift::Vec3(t_l_g0);
-    (wrt_x ? dfdx : dfdv)[0 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g0)));
-    (wrt_x ? dfdx : dfdv)[24 + j].col(c3) += rift::Vec3(t_l_g1);
-    (wrt_x ? dfdx : dfdv)[16 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g1)));
-    (wrt_x ? dfdx : dfdv)[40 + j].col(c3) += rift::Vec3(t_l_g2);
-    (wrt_x ? dfdx : dfdv)[32 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g2)));
-    (wrt_x ? dfdx : dfdv)[56 + j].col(c3) += rift::Vec3(t_l_g3);
-    (wrt_x ? dfdx : dfdv)[48 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g3)));
+    [[maybe_unused]] const rift::Vec3 t_l_g0 = rift::Vec3((rift::Real((rift::Real((rift::Real((l_k) * (rift::Real(t_l_l0)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real(rift::Vec3(rift::Vec3::Zero()).dot(l_d0) + (rift::Vec3(in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot((t_l_d0)))))) * (l_i0) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(l_d0))) * (t_l_i0))))) * (l_i0) + (((l_k * (l_l0 - c.vshear_rest0[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(l_d0)) * l_i0))) * (t_l_i0))) * (l_d0) + ((((l_k * (l_l0 - c.vshear_rest0[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(l_d0)) * l_i0)) * l_i0)) * (t_l_d0));
+    [[maybe_unused]] const rift::Vec3 t_l_g1 = rift::Vec3((rift::Real((rift::Real((rift::Real((l_k) * (rift::Real(t_l_l1)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real(rift::Vec3(rift::Vec3::Zero()).dot(l_d1) + (rift::Vec3(in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot((t_l_d1)))))) * (l_i1) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(l_d1))) * (t_l_i1))))) * (l_i1) + (((l_k * (l_l1 - c.vshear_rest1[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(l_d1)) * l_i1))) * (t_l_i1))) * (l_d1) + ((((l_k * (l_l1 - c.vshear_rest1[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(l_d1)) * l_i1)) * l_i1)) * (t_l_d1));
+    [[maybe_unused]] const rift::Vec3 t_l_g2 = rift::Vec3((rift::Real((rift::Real((rift::Real((l_k) * (rift::Real(t_l_l2)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real(rift::Vec3(rift::Vec3::Zero()).dot(l_d2) + (rift::Vec3(in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot((t_l_d2)))))) * (l_i2) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(l_d2))) * (t_l_i2))))) * (l_i2) + (((l_k * (l_l2 - c.vshear_rest2[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(l_d2)) * l_i2))) * (t_l_i2))) * (l_d2) + ((((l_k * (l_l2 - c.vshear_rest2[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(l_d2)) * l_i2)) * l_i2)) * (t_l_d2));
+    [[maybe_unused]] const rift::Vec3 t_l_g3 = rift::Vec3((rift::Real((rift::Real((rift::Real((l_k) * (rift::Real(t_l_l3)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real(rift::Vec3(rift::Vec3::Zero()).dot(l_d3) + (rift::Vec3(in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot((t_l_d3)))))) * (l_i3) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(l_d3))) * (t_l_i3))))) * (l_i3) + (((l_k * (l_l3 - c.vshear_rest3[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(l_d3)) * l_i3))) * (t_l_i3))) * (l_d3) + ((((l_k * (l_l3 - c.vshear_rest3[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(l_d3)) * l_i3)) * l_i3)) * (t_l_d3));
+    dfdx[8 + j].col(c3) += rift::Vec3(t_l_g0);
+    dfdx[0 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g0)));
+    dfdx[24 + j].col(c3) += rift::Vec3(t_l_g1);
+    dfdx[16 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g1)));
+    dfdx[40 + j].col(c3) += rift::Vec3(t_l_g2);
+    dfdx[32 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g2)));
+    dfdx[56 + j].col(c3) += rift::Vec3(t_l_g3);
+    dfdx[48 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g3)));
+  }
+  #pragma GCC unroll 24
+  for (int dir = 0; dir < 24; ++dir) {
+    const int j = dir / 3, c3 = dir % 3;
+    rift::Vec3 tv[8];
+    for (int v = 0; v < 8; ++v) {
+      tv[v].setZero();
+    }
+    tv[j][c3] = 1;
+    [[maybe_unused]] const rift::Vec3 t_l_g0 = rift::Vec3((rift::Real((rift::Real(rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[0]) - (tv[1]))).dot(l_d0) + (rift::Vec3(in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(rift::Vec3(rift::Vec3::Zero())))))) * (l_i0)))) * (l_i0))) * (l_d0));
+    [[maybe_unused]] const rift::Vec3 t_l_g1 = rift::Vec3((rift::Real((rift::Real(rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[2]) - (tv[3]))).dot(l_d1) + (rift::Vec3(in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(rift::Vec3(rift::Vec3::Zero())))))) * (l_i1)))) * (l_i1))) * (l_d1));
+    [[maybe_unused]] const rift::Vec3 t_l_g2 = rift::Vec3((rift::Real((rift::Real(rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[4]) - (tv[5]))).dot(l_d2) + (rift::Vec3(in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(rift::Vec3(rift::Vec3::Zero())))))) * (l_i2)))) * (l_i2))) * (l_d2));
+    [[maybe_unused]] const rift::Vec3 t_l_g3 = rift::Vec3((rift::Real((rift::Real(rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[6]) - (tv[7]))).dot(l_d3) + (rift::Vec3(in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(rift::Vec3(rift::Vec3::Zero())))))) * (l_i3)))) * (l_i3))) * (l_d3));
+    dfdv[8 + j].col(c3) += rift::Vec3(t_l_g0);
+    dfdv[0 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g0)));
+    dfdv[24 + j].col(c3) += rift::Vec3(t_l_g1);
+    dfdv[16 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g1)));
+    dfdv[40 + j].col(c3) += rift::Vec3(t_l_g2);
+    dfdv[32 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g2)));
+    dfdv[56 + j].col(c3) += rift::Vec3(t_l_g3);
+    dfdv[48 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g3)));
   }
 }
 
-void VolumeShearKernel::jacobian_product([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, [[maybe_unused]] const rift::Vec3* px, [[maybe_unused]] const rift::Vec3* pv, rift::Vec3* out) {
+[[gnu::flatten]] void VolumeShearKernel::jacobian_product([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, [[maybe_unused]] const rift::Vec3* px, [[maybe_unused]] const rift::Vec3* pv, rift::Vec3* out) {
   [[maybe_unused]] const Columns c = columns();
   [[maybe_unused]] const rift::Real l_k = c.vshear_k[m.orbit012_b0];
   [[maybe_unused]] const rift::Vec3 l_d0 = (in.x[m.vertex_s22] - in.x[m.vertex_b0]);

@@ -66,6 +66,8 @@ class StretchKernel {
   void force_terms_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* terms, bool store);
   void reset_stored(const Match& m);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
+  /// The rule gives an energy (the implicit Newton line search can use it).
+  static constexpr bool kHasEnergy = true;
   /// Jacobians derived by riftc (forward mode): the match's vertices, the blocks
   /// df_i/dx_j and df_i/dv_j (row-major), and the product J p.
   static constexpr int kJacobianVertices = 2;
@@ -142,6 +144,8 @@ class ShearKernel {
   void force_terms_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* terms, bool store);
   void reset_stored(const Match& m);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
+  /// The rule gives an energy (the implicit Newton line search can use it).
+  static constexpr bool kHasEnergy = true;
   /// Jacobians derived by riftc (forward mode): the match's vertices, the blocks
   /// df_i/dx_j and df_i/dv_j (row-major), and the product J p.
   static constexpr int kJacobianVertices = 4;
@@ -231,6 +235,8 @@ class VolumeShearKernel {
   void force_terms_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* terms, bool store);
   void reset_stored(const Match& m);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
+  /// The rule gives an energy (the implicit Newton line search can use it).
+  static constexpr bool kHasEnergy = true;
   /// Jacobians derived by riftc (forward mode): the match's vertices, the blocks
   /// df_i/dx_j and df_i/dv_j (row-major), and the product J p.
   static constexpr int kJacobianVertices = 8;
