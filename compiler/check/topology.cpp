@@ -5,6 +5,7 @@
 #include <optional>
 #include <set>
 
+#include "ast/orbit_text.hpp"
 #include "check/types.hpp"
 
 namespace rift::check {
@@ -335,14 +336,7 @@ bool within(const std::vector<int>& word, const std::vector<int>& dims) {
   return true;
 }
 
-std::string orbit_text(const std::vector<int>& dims) {
-  std::string out = "<";
-  for (std::size_t k = 0; k < dims.size(); ++k) {
-    if (k) out += ',';
-    out += std::to_string(dims[k]);
-  }
-  return out + ">";
-}
+using ast::orbit_text;
 
 std::string word_text(const std::vector<int>& word) {
   std::string out;

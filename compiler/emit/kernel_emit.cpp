@@ -7,6 +7,7 @@
 // allocation, no virtual call) that the force pass and energy() share.
 #include <algorithm>
 
+#include "ast/orbit_text.hpp"
 #include "check/kernels.hpp"
 #include "emit/derivative_emit.hpp"
 #include "emit/emit_context.hpp"
@@ -21,15 +22,7 @@ namespace {
 
 using lower::InteractionPlan;
 
-std::string orbit_text(const std::vector<int>& dims) {
-  std::string out = "<";
-  for (std::size_t k = 0; k < dims.size(); ++k) {
-    if (k) out += ',';
-    out += std::to_string(dims[k]);
-  }
-  out += '>';
-  return out;
-}
+using ast::orbit_text;
 
 std::string path_text(const std::string& node, const std::vector<int>& hops) {
   std::string out = node;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "ast/orbit_text.hpp"
 #include "emit/names.hpp"
 #include "emit/prelude.hpp"
 
@@ -18,12 +19,7 @@ std::string policy_of(const ast::Embedding& e) {
   return "rift::MergePolicy::kKeepFirst";
 }
 
-std::string orbit_text(const std::vector<int>& dims) {
-  std::string out = "<";
-  for (std::size_t k = 0; k < dims.size(); ++k)
-    out += std::string(k ? "," : "") + std::to_string(dims[k]);
-  return out + ">";
-}
+using ast::orbit_text;
 
 template <class F>
 void for_each_criterion(const PackModel& m, F&& f) {

@@ -5,6 +5,8 @@
 #include <initializer_list>
 #include <utility>
 
+#include "ast/orbit_text.hpp"
+
 namespace rift::ir {
 
 namespace {
@@ -65,14 +67,7 @@ std::string place_text(const Place& p, const std::vector<std::string>& names) {
   return out;
 }
 
-std::string orbit_text(const std::vector<int>& dims) {
-  std::string out = "<";
-  for (std::size_t k = 0; k < dims.size(); ++k) {
-    if (k) out += ',';
-    out += std::to_string(dims[k]);
-  }
-  return out + ">";
-}
+using ast::orbit_text;
 
 /// Concatenation by appending (GCC 12's -Wrestrict misfires on chains of `"(" + std::string`).
 std::string cat(std::initializer_list<std::string_view> parts) {
