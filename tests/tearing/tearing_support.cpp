@@ -6,7 +6,10 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <string>
 #include <tuple>
+
+#include <unistd.h>
 
 #include "rift/scene/scene.hpp"
 #include "rift/scene/scene_setup.hpp"
@@ -15,7 +18,10 @@ namespace rift::tearing_test {
 
 std::unique_ptr<Simulation> simulate(const std::string& name, const std::string& toml,
                                      bool check_each_rewrite, SetupReport* report) {
-  const std::string path = ::testing::TempDir() + "rift_tearing_" + name + ".toml";
+  // The process id keeps tests that CTest runs at the same time (one process
+  // each) from writing the same file while another reads it.
+  const std::string path =
+      ::testing::TempDir() + "rift_tearing_" + name + "_" + std::to_string(::getpid()) + ".toml";
   std::ofstream(path) << toml;
   const Scene scene = read_scene(path, standard_packs().catalog());
   SetupOptions options;
