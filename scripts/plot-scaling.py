@@ -2,8 +2,11 @@
 """Plots time per vertex of one RK4 step against mesh size (docs/performance.md "Scaling").
 
 Usage:
-  build/release/tests/bench/rift_bench_scaling --benchmark_format=json > scaling.json
-  scripts/plot-scaling.py scaling.json docs/images/performance-scaling.png
+  build/release/tests/bench/rift_bench_scaling --benchmark_repetitions=3 \
+      --benchmark_format=json > scaling.json
+  scripts/plot-scaling.py scaling.json [more.json ...] docs/images/performance-scaling.png
+
+With repetitions the medians are plotted; several JSON files are merged.
 
 Needs python3-matplotlib (Debian), only for this picture: CI does not run it.
 """
@@ -29,11 +32,19 @@ SERIES = [
 
 
 def main(argv):
-    if len(argv) != 3:
+    if len(argv) < 3:
         sys.exit(__doc__)
-    with open(argv[1]) as f:
-        report = json.load(f)
-    runs = [b for b in report["benchmarks"] if b.get("run_type", "iteration") == "iteration"]
+    report = {"benchmarks": []}
+    for path in argv[1:-1]:  # several runs (e.g. small and large sizes) are merged
+        with open(path) as f:
+            part = json.load(f)
+        report["context"] = part["context"]
+        report["benchmarks"] += part["benchmarks"]
+    # With --benchmark_repetitions, the medians; otherwise the single runs.
+    medians = [b for b in report["benchmarks"] if b.get("aggregate_name") == "median"]
+    singles = [b for b in report["benchmarks"] if b.get("run_type", "iteration") == "iteration"
+               and b["run_name"] not in {m["run_name"] for m in medians}]
+    runs = medians + singles
     fig, ax = plt.subplots(figsize=(8, 5), dpi=110)
     for prefix, label, colour, style, marker in SERIES:
         points = sorted(
@@ -53,7 +64,7 @@ def main(argv):
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(argv[2])
+    fig.savefig(argv[-1])
 
 
 if __name__ == "__main__":

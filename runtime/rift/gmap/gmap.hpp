@@ -85,7 +85,6 @@ class GMap {
 
   Dart alpha(Dart d, int i) const { return alpha_[i][d]; }
   bool is_free(Dart d, int i) const { return alpha_[i][d] == d; }
-  const Dart* alpha_data(int i) const { return alpha_[i].data(); }
 
   /// Raw link: alpha_i(a) = b and alpha_i(b) = a. No embedding is updated;
   /// builders use this and attach embeddings afterwards.

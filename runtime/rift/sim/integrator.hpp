@@ -37,9 +37,6 @@ class Integrator {
   void step(const AccelerationFn& accel, std::vector<Vec3>& x, std::vector<Vec3>& v, Real dt,
             const std::vector<Vec3>* a0 = nullptr);
 
-  /// Number of acceleration evaluations one step makes.
-  int evaluations_per_step() const { return kind_ == IntegratorKind::kRK4 ? 4 : 1; }
-
  private:
   IntegratorKind kind_;
   std::vector<Vec3> a_, k2x_, k2v_, k4v_, xs_, vs_;
