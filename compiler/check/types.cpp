@@ -264,12 +264,14 @@ void check_embedding(const ast::Embedding& e, int dimension, TypeChecker& tc,
   }
 }
 
-void check_assign(const ast::Assign& a, TypeChecker& tc, const char* what) {
-  if (!a.target) {
+void check_assign(const ast::Assign& a, const resolve::Symbols& symbols, TypeChecker& tc,
+                  const char* what) {
+  const ast::Embedding* target = symbols.target(a);
+  if (!target) {
     tc.expr(*a.value);
     return;
   }
-  tc.expect(*a.value, a.target->type, std::string(what) + " '" + a.embedding.text + "'");
+  tc.expect(*a.value, target->type, std::string(what) + " '" + a.embedding.text + "'");
 }
 
 void check_component_params(const std::vector<ast::Param>& params, TypeChecker& tc,
@@ -332,7 +334,7 @@ void check_script(const ast::Script& script, const resolve::Symbols& symbols, in
     }
     if (st.where) tc.expect(*st.where, Type::Bool, "a 'where' condition");
     if (st.kind == ast::ScriptStmt::Kind::Set) {
-      check_assign(st.set, tc, "the value of");
+      check_assign(st.set, symbols, tc, "the value of");
       continue;
     }
     check_call_args(st.rule, symbols, st.args, st.loc, tc, diags);
@@ -372,7 +374,7 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols,
     for (const auto& p : file.params)
       tc.expect(*p.value, p.type, "the value of '" + p.name.text + "'");
     for (const auto& init : file.inits) {
-      const ast::Embedding* emb = symbols.embedding(init.embedding.text);
+      const ast::Embedding* emb = symbols.target(init);
       if (!emb) {
         tc.expr(*init.value);
         continue;
@@ -389,21 +391,21 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols,
       for (const auto& w : rule.whens)
         tc.expect(*w, Type::Bool, "a precondition");
       for (const auto& a : rule.right.assigns)
-        check_assign(a, tc, "the value of");
+        check_assign(a, symbols, tc, "the value of");
       for (const auto& u : rule.updates)
-        check_assign(u, tc, "the update of");
+        check_assign(u, symbols, tc, "the update of");
     }
     for (const auto& script : file.scripts)
       check_script(script, symbols, program.dimension, tc, diags);
     for (const auto& inter : file.interactions) {
       check_component_params(inter.params, tc, diags);
       for (const auto& init : inter.inits) {
-        if (!init.target) {
+        const ast::Embedding* target = symbols.target(init);
+        if (!target) {
           tc.expr(*init.value);
           continue;
         }
-        tc.expect(*init.value, init.target->type,
-                  "the initial value of '" + init.embedding.text + "'");
+        tc.expect(*init.value, target->type, "the initial value of '" + init.embedding.text + "'");
         auto [it, fresh] = initialised.emplace(init.embedding.text, init.embedding.loc);
         if (!fresh) {
           diags.error(init.embedding.loc, "'" + init.embedding.text + "' is initialised twice")
@@ -414,12 +416,13 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols,
       for (const auto& w : inter.whens)
         tc.expect(*w, Type::Bool, "a precondition");
       for (const auto& f : inter.forces) {
-        check_assign(f, tc, "the force");
-        if (f.target && f.target->type != Type::Vec3) {
+        check_assign(f, symbols, tc, "the force");
+        const ast::Embedding* target = symbols.target(f);
+        if (target && target->type != Type::Vec3) {
           diags
               .error(f.embedding.loc, "force embedding '" + f.embedding.text +
-                                          "' must hold vec3 values, not " + str(f.target->type))
-              .notes.push_back({f.target->name.loc, "declared here"});
+                                          "' must hold vec3 values, not " + str(target->type))
+              .notes.push_back({target->name.loc, "declared here"});
         }
       }
       if (inter.energy) tc.expect(*inter.energy, Type::Real, "the energy");

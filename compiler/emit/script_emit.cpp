@@ -102,9 +102,11 @@ void emit_script(Writer& w, const ast::Script& script, const PackModel& model) {
       case ast::ScriptStmt::Kind::Set: {
         open_each(w, st, ctx);
         const ast::Assign& a = st.set;
-        write_sourced(w, a.value->loc,
-                      embedding_var(a.embedding.text) + "[" + dart_name(a.node.text) + "] = " +
-                          convert(emit_expr(*a.value, ctx), a.value->type, a.target->type) + ";");
+        write_sourced(
+            w, a.value->loc,
+            embedding_var(a.embedding.text) + "[" + dart_name(a.node.text) + "] = " +
+                convert(emit_expr(*a.value, ctx), a.value->type, model.symbols->target(a)->type) +
+                ";");
         close_each(w, st);
         break;
       }

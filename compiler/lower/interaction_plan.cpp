@@ -66,7 +66,7 @@ InteractionPlan plan_interaction(const check::CheckedInteraction& ci,
       if (body.nodes[v] == init.dart.text) p.node = static_cast<int>(v);
     }
     p.embedding = init.embedding.text;
-    p.type = init.target->type;
+    p.type = symbols.target(init)->type;
     p.value = at_init.lower_as(*init.value, p.type);
     p.loc = init.value->loc;
     plan.inits.push_back(p);

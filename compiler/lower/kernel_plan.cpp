@@ -67,7 +67,7 @@ int KernelPlan::find(int node, const std::vector<int>& hops, const std::vector<i
   return -1;
 }
 
-KernelPlan plan_kernel(const check::CheckedInteraction& ci, const resolve::Symbols& /*symbols*/) {
+KernelPlan plan_kernel(const check::CheckedInteraction& ci, const resolve::Symbols& symbols) {
   const ast::Interaction& inter = *ci.interaction;
   const check::RuleGraph& g = ci.graph;
   KernelPlan plan;
@@ -97,7 +97,7 @@ KernelPlan plan_kernel(const check::CheckedInteraction& ci, const resolve::Symbo
     ForceStore store;
     store.embedding = f.embedding.text;
     store.vertex_slot = collect.add(node, {}, vertex_orbit(g.dimension), "");
-    store.store_slot = collect.add(node, {}, f.target->orbit.dims, f.embedding.text);
+    store.store_slot = collect.add(node, {}, symbols.target(f)->orbit.dims, f.embedding.text);
     plan.forces.push_back(store);
   }
   if (inter.energy) collect.reads(*inter.energy);

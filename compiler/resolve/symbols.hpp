@@ -4,6 +4,7 @@
 
 #include <map>
 #include <string>
+#include <unordered_map>
 
 #include "ast/program.hpp"
 #include "diag/diagnostics.hpp"
@@ -24,6 +25,15 @@ struct Symbols {
   const ast::Script* script(std::string_view name) const;
   /// The parameters of the rule or script `name`, or nullptr when there is none.
   const std::vector<ast::Param>* callee_params(std::string_view name) const;
+
+  /// The embedding each assignment (right-node expression, update, force,
+  /// script `set`) and each init writes, as resolve_names bound it: a side
+  /// table, so that the AST stays as the parser built it. nullptr when the
+  /// name is unknown (reported by resolve_names).
+  const ast::Embedding* target(const ast::Assign& assign) const;
+  const ast::Embedding* target(const ast::Init& init) const;
+  std::unordered_map<const ast::Assign*, const ast::Embedding*> assign_targets;
+  std::unordered_map<const ast::Init*, const ast::Embedding*> init_targets;
 };
 
 /// Collects every declaration; a name declared twice is an error with a note
