@@ -26,7 +26,8 @@ bool assignable(Type from, Type to) {
 
 class TypeChecker {
  public:
-  TypeChecker(int dimension, diag::Diagnostics& diags) : dimension_(dimension), diags_(diags) {}
+  TypeChecker(int dimension, const resolve::Symbols& symbols, diag::Diagnostics& diags)
+      : dimension_(dimension), symbols_(symbols), diags_(diags) {}
 
   Type expr(const Expr& ce) {
     auto& e = const_cast<Expr&>(ce);  // the pass records types in the tree
@@ -55,11 +56,13 @@ class TypeChecker {
         return Type::Real;
       case Expr::Kind::BoolLit:
         return Type::Bool;
-      case Expr::Kind::Name:
-        if (e.let) return e.let->value->type;
-        if (e.param) return e.param->type;
-        if (e.pack_param) return e.pack_param->type;
+      case Expr::Kind::Name: {
+        const resolve::Binding& b = symbols_.binding(e);
+        if (b.let) return b.let->value->type;
+        if (b.param) return b.param->type;
+        if (b.pack_param) return b.pack_param->type;
         return Type::Error;
+      }
       case Expr::Kind::Read:
         return read(e);
       case Expr::Kind::Collect:
@@ -116,14 +119,16 @@ class TypeChecker {
 
   Type read(const Expr& e) {
     check_hops(e);
-    return e.embedding ? e.embedding->type : Type::Error;
+    const ast::Embedding* embedding = symbols_.binding(e).embedding;
+    return embedding ? embedding->type : Type::Error;
   }
 
   Type collect(const Expr& e) {
     check_hops(e);
     check_orbit_type(e.orbit, dimension_, "a collection", diags_);
-    if (!e.embedding) return Type::Error;
-    const Type t = e.embedding->type;
+    const ast::Embedding* embedding = symbols_.binding(e).embedding;
+    if (!embedding) return Type::Error;
+    const Type t = embedding->type;
     if (e.op == "count") return Type::Int;
     if (e.op == "min" || e.op == "max") {
       if (numeric(t)) return t;
@@ -246,6 +251,7 @@ class TypeChecker {
   }
 
   int dimension_;
+  const resolve::Symbols& symbols_;
   diag::Diagnostics& diags_;
 };
 
@@ -366,7 +372,7 @@ bool check_orbit_type(const ast::Label& label, int dimension, const char* what,
 
 void check_types(const ast::Program& program, const resolve::Symbols& symbols,
                  diag::Diagnostics& diags) {
-  TypeChecker tc(program.dimension, diags);
+  TypeChecker tc(program.dimension, symbols, diags);
   std::map<std::string, diag::Location> initialised;
   for (const ast::File& file : program.files) {
     for (const auto& e : file.embeddings)

@@ -31,13 +31,15 @@ void for_each_criterion(const PackModel& m, F&& f) {
 
 // Appends the embeddings `e` reads (Read and Collect nodes) that `names`
 // does not hold yet, in order of first use.
-void add_embedding_reads(const ast::Expr& e, std::vector<std::string>& names) {
-  if ((e.kind == ast::Expr::Kind::Read || e.kind == ast::Expr::Kind::Collect) && e.embedding &&
-      std::find(names.begin(), names.end(), e.embedding->name.text) == names.end()) {
-    names.push_back(e.embedding->name.text);
+void add_embedding_reads(const ast::Expr& e, const resolve::Symbols& symbols,
+                         std::vector<std::string>& names) {
+  const ast::Embedding* embedding = symbols.binding(e).embedding;
+  if ((e.kind == ast::Expr::Kind::Read || e.kind == ast::Expr::Kind::Collect) && embedding &&
+      std::find(names.begin(), names.end(), embedding->name.text) == names.end()) {
+    names.push_back(embedding->name.text);
   }
   for (const ast::ExprPtr& a : e.args) {
-    if (a) add_embedding_reads(*a, names);
+    if (a) add_embedding_reads(*a, symbols, names);
   }
 }
 
@@ -226,9 +228,9 @@ void write_pack_class(Writer& w, const PackModel& m) {
     write_param_specs(w, c.params, true);
     std::vector<std::string> reads;
     for (const ast::Let& l : c.lets) {
-      if (l.value) add_embedding_reads(*l.value, reads);
+      if (l.value) add_embedding_reads(*l.value, *m.symbols, reads);
     }
-    if (c.measure) add_embedding_reads(*c.measure, reads);
+    if (c.measure) add_embedding_reads(*c.measure, *m.symbols, reads);
     w.close("}, kDimension, {}, " + name_list(reads) + "});");
   });
   w.close();

@@ -79,6 +79,7 @@ void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) 
   const std::string user = "rule '" + rule.name.text + "'";
   ExprContext ctx;
   ctx.dart = [](const std::string& node) { return dart_name(node); };
+  ctx.symbols = model.symbols;
 
   std::set<std::string> used;
   for (const auto& l : rule.lets)

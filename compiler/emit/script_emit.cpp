@@ -70,6 +70,7 @@ void emit_script(Writer& w, const ast::Script& script, const PackModel& model) {
   const std::string user = "script '" + script.name.text + "'";
   ExprContext ctx;
   ctx.dart = [](const std::string& node) { return dart_name(node); };
+  ctx.symbols = model.symbols;
   w.line("// " + user + " (" + std::to_string(script.hooks.size()) + " hook(s))");
   w.open("bool " + rule_function(script.name.text) +
          "(rift::GMap& g, std::span<const rift::Dart> hooks, const " + script.name.text +

@@ -31,10 +31,9 @@ class Resolver {
   Resolver(Symbols& symbols, diag::Diagnostics& diags) : symbols_(symbols), diags_(diags) {}
 
   void expr(const Expr& e, const Scope& scope) {
-    auto& m = const_cast<Expr&>(e);  // passes annotate the tree in place
     switch (e.kind) {
       case Expr::Kind::Name:
-        name(m, scope);
+        name(e, scope);
         break;
       case Expr::Kind::Read:
       case Expr::Kind::Collect:
@@ -43,7 +42,7 @@ class Resolver {
           return;
         }
         node(e.node, e.node_loc, scope);
-        m.embedding = embedding(e.name, e.loc);
+        symbols_.bindings[&e].embedding = embedding(e.name, e.loc);
         break;
       case Expr::Kind::Fold: {
         if (scope.constant) {
@@ -116,14 +115,14 @@ class Resolver {
   }
 
  private:
-  void name(Expr& e, const Scope& scope) {
+  /// Binds a bare name (Symbols::binding) or reports why it cannot be read.
+  void name(const Expr& e, const Scope& scope) {
     if (scope.lets) {
       // The latest visible let of that name wins.
       for (std::size_t k = scope.visible_lets; k-- > 0;) {
         const ast::Let& let = (*scope.lets)[k];
         if (let.name.text == e.name) {
-          e.ref = ast::NameRef::Let;
-          e.let = &let;
+          symbols_.bindings[&e].let = &let;
           ++let.uses;
           return;
         }
@@ -132,8 +131,7 @@ class Resolver {
     if (scope.params) {
       for (const ast::Param& p : *scope.params) {
         if (p.name.text == e.name) {
-          e.ref = ast::NameRef::RuleParam;
-          e.param = &p;
+          symbols_.bindings[&e].param = &p;
           ++p.uses;
           return;
         }
@@ -144,8 +142,7 @@ class Resolver {
       return;
     }
     if (const ast::PackParam* p = symbols_.param(e.name)) {
-      e.ref = ast::NameRef::PackParam;
-      e.pack_param = p;
+      symbols_.bindings[&e].pack_param = p;
       return;
     }
     if (scope.nodes.count(e.name) || scope.hidden_nodes.count(e.name)) {

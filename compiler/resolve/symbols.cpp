@@ -83,4 +83,10 @@ const ast::Embedding* Symbols::target(const ast::Init& init) const {
   return it == init_targets.end() ? nullptr : it->second;
 }
 
+const Binding& Symbols::binding(const ast::Expr& e) const {
+  static const Binding kUnresolved;
+  const auto it = bindings.find(&e);
+  return it == bindings.end() ? kUnresolved : it->second;
+}
+
 }  // namespace rift::resolve

@@ -11,6 +11,15 @@
 
 namespace rift::resolve {
 
+/// What a bare name (one of let, param, pack_param) or an embedding read or
+/// collection (embedding) of an expression refers to.
+struct Binding {
+  const ast::Let* let = nullptr;
+  const ast::Param* param = nullptr;
+  const ast::PackParam* pack_param = nullptr;
+  const ast::Embedding* embedding = nullptr;
+};
+
 struct Symbols {
   std::map<std::string, const ast::Embedding*, std::less<>> embeddings;
   std::map<std::string, const ast::PackParam*, std::less<>> params;
@@ -34,6 +43,11 @@ struct Symbols {
   const ast::Embedding* target(const ast::Init& init) const;
   std::unordered_map<const ast::Assign*, const ast::Embedding*> assign_targets;
   std::unordered_map<const ast::Init*, const ast::Embedding*> init_targets;
+
+  /// What each name and each embedding read of an expression refers to, as
+  /// resolve_names bound it (all null when it did not resolve).
+  const Binding& binding(const ast::Expr& e) const;
+  std::unordered_map<const ast::Expr*, Binding> bindings;
 };
 
 /// Collects every declaration; a name declared twice is an error with a note
