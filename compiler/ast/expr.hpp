@@ -21,14 +21,7 @@ struct Label {
 };
 
 struct Expr;
-struct Let;
-struct Param;
-struct PackParam;
-struct Embedding;
 using ExprPtr = std::unique_ptr<Expr>;
-
-/// What a bare name in an expression refers to (filled by resolve/).
-enum class NameRef { Unresolved, Let, RuleParam, PackParam };
 
 struct Expr {
   enum class Kind {
@@ -64,13 +57,9 @@ struct Expr {
   std::vector<ExprPtr> args;
   int depth = 1;  // of the tree below; the parser caps it so passes may recurse safely
 
-  // Filled by the passes: resolve/ binds names, check/ computes types.
+  // Filled by check/ (types.cpp). What names refer to is not here: resolve/
+  // records it in a side table (resolve::Symbols::binding).
   Type type = Type::Error;
-  NameRef ref = NameRef::Unresolved;
-  const Let* let = nullptr;
-  const Param* param = nullptr;
-  const PackParam* pack_param = nullptr;
-  const Embedding* embedding = nullptr;  // Read, Collect
 };
 
 ExprPtr make_expr(Expr::Kind kind, const Location& loc);

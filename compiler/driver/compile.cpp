@@ -56,7 +56,7 @@ void run_checks(const ast::Program& program, diag::Diagnostics& diags, Checked& 
   resolve::resolve_names(program, out.symbols, diags);
   check::check_types(program, out.symbols, diags);
   out.rules = check::check_rules(program, diags);
-  out.interactions = check::check_interactions(program, diags);
+  out.interactions = check::check_interactions(program, out.symbols, diags);
   check::check_applies(program, out.rules, diags);
   check::check_kernels(program, out.symbols, diags);
   check::check_generated_names(program, out.symbols, diags);

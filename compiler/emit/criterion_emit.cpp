@@ -87,7 +87,7 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
   const std::string cls = criterion_class(crit.name.text);
   const std::string user = "criterion '" + crit.name.text + "'";
   const std::vector<ast::Param>& rule_params = *model.symbols->callee_params(crit.rule.text);
-  const lower::CriterionPlan plan = lower::plan_criterion(crit, rule_params);
+  const lower::CriterionPlan plan = lower::plan_criterion(crit, rule_params, *model.symbols);
   const ir::Body& b = plan.body;
   const RenderContext ctx = criterion_context(b);
   const std::string d = dart_name(crit.dart.text);

@@ -47,10 +47,12 @@ class Emitter {
         return real_literal(e.real);
       case Expr::Kind::BoolLit:
         return e.boolean ? "true" : "false";
-      case Expr::Kind::Name:
-        if (e.let) return let_name(e.name);
-        if (e.param) return ctx_.args + "." + member_name(e.name);
+      case Expr::Kind::Name: {
+        const resolve::Binding* b = ctx_.symbols ? &ctx_.symbols->binding(e) : nullptr;
+        if (b && b->let) return let_name(e.name);
+        if (b && b->param) return ctx_.args + "." + member_name(e.name);
         return ctx_.params + "." + member_name(e.name);
+      }
       case Expr::Kind::Read:
         if (ctx_.read) return ctx_.read(e);
         return embedding_var(e.name) + "[" + dart_path(e, ctx_) + "]";

@@ -8,6 +8,7 @@
 
 #include "ast/expr.hpp"
 #include "emit/names.hpp"
+#include "resolve/symbols.hpp"
 
 namespace rift::emit {
 
@@ -20,6 +21,9 @@ struct ExprContext {
   /// When set, writes an embedding read (Expr::Kind::Read) instead of
   /// `e_NAME[dart]`: force kernels read through slots cached in the match.
   std::function<std::string(const ast::Expr& read)> read;
+  /// What names refer to (resolve/). Constant expressions name nothing and
+  /// need none.
+  const resolve::Symbols* symbols = nullptr;
 };
 
 std::string emit_expr(const ast::Expr& e, const ExprContext& ctx);

@@ -9,9 +9,10 @@ namespace rift::emit {
 
 namespace {
 
-ExprContext dart_context() {
+ExprContext dart_context(const resolve::Symbols& symbols) {
   ExprContext ctx;
   ctx.dart = [](const std::string& node) { return dart_name(node); };
+  ctx.symbols = &symbols;
   return ctx;
 }
 
@@ -86,10 +87,10 @@ void emit_initialisers(Writer& w, const PackModel& model) {
   w.open("void run_initialisers(rift::GMap& g, const Params& params) {");
   w.line("(void)g;");
   w.line("(void)params;");
-  const ExprContext ctx = dart_context();
+  const ExprContext ctx = dart_context(*model.symbols);
   for (const ast::File& file : model.program->files) {
     for (const ast::Init& init : file.inits) {
-      const ast::Embedding* target = model.symbols->embedding(init.embedding.text);
+      const ast::Embedding* target = model.symbols->target(init);
       std::set<std::string> used;
       embeddings_read(*init.value, used);
       used.insert(init.embedding.text);

@@ -4,7 +4,6 @@
 
 #include "ast/orbit_text.hpp"
 #include "emit/names.hpp"
-#include "emit/prelude.hpp"
 
 namespace rift::emit {
 
@@ -31,13 +30,15 @@ void for_each_criterion(const PackModel& m, F&& f) {
 
 // Appends the embeddings `e` reads (Read and Collect nodes) that `names`
 // does not hold yet, in order of first use.
-void add_embedding_reads(const ast::Expr& e, std::vector<std::string>& names) {
-  if ((e.kind == ast::Expr::Kind::Read || e.kind == ast::Expr::Kind::Collect) && e.embedding &&
-      std::find(names.begin(), names.end(), e.embedding->name.text) == names.end()) {
-    names.push_back(e.embedding->name.text);
+void add_embedding_reads(const ast::Expr& e, const resolve::Symbols& symbols,
+                         std::vector<std::string>& names) {
+  const ast::Embedding* embedding = symbols.binding(e).embedding;
+  if ((e.kind == ast::Expr::Kind::Read || e.kind == ast::Expr::Kind::Collect) && embedding &&
+      std::find(names.begin(), names.end(), embedding->name.text) == names.end()) {
+    names.push_back(embedding->name.text);
   }
   for (const ast::ExprPtr& a : e.args) {
-    if (a) add_embedding_reads(*a, names);
+    if (a) add_embedding_reads(*a, symbols, names);
   }
 }
 
@@ -226,9 +227,9 @@ void write_pack_class(Writer& w, const PackModel& m) {
     write_param_specs(w, c.params, true);
     std::vector<std::string> reads;
     for (const ast::Let& l : c.lets) {
-      if (l.value) add_embedding_reads(*l.value, reads);
+      if (l.value) add_embedding_reads(*l.value, *m.symbols, reads);
     }
-    if (c.measure) add_embedding_reads(*c.measure, reads);
+    if (c.measure) add_embedding_reads(*c.measure, *m.symbols, reads);
     w.close("}, kDimension, {}, " + name_list(reads) + "});");
   });
   w.close();
@@ -340,18 +341,14 @@ GeneratedPack generate_pack(const PackModel& m, const diag::SourceManager& sourc
   w.line();
   for (const char* inc :
        {"<algorithm>", "<cmath>", "<limits>", "<stdexcept>", "<string>", "<type_traits>",
-        "<utility>", "<variant>", "<vector>", "<Eigen/Dense>", "\"rift/core/polar.hpp\""}) {
+        "<utility>", "<variant>", "<vector>", "<Eigen/Dense>", "\"rift/generated/support.hpp\""}) {
     w.line(std::string("#include ") + inc);
   }
   w.line();
   w.line("namespace rift::packs::" + m.pack + " {");
   w.line();
-  std::string_view pre = prelude();
-  while (!pre.empty()) {
-    const std::size_t nl = pre.find('\n');
-    w.line(pre.substr(0, nl));
-    pre = nl == std::string_view::npos ? std::string_view{} : pre.substr(nl + 1);
-  }
+  // Matching, rewriting and aggregates are generic: the runtime owns them.
+  w.line("using namespace rift::generated;");
   w.line();
   w.open("namespace {");
   for (const check::CheckedInteraction& ci : *m.interactions) {

@@ -70,6 +70,7 @@ void emit_script(Writer& w, const ast::Script& script, const PackModel& model) {
   const std::string user = "script '" + script.name.text + "'";
   ExprContext ctx;
   ctx.dart = [](const std::string& node) { return dart_name(node); };
+  ctx.symbols = model.symbols;
   w.line("// " + user + " (" + std::to_string(script.hooks.size()) + " hook(s))");
   w.open("bool " + rule_function(script.name.text) +
          "(rift::GMap& g, std::span<const rift::Dart> hooks, const " + script.name.text +
@@ -102,9 +103,11 @@ void emit_script(Writer& w, const ast::Script& script, const PackModel& model) {
       case ast::ScriptStmt::Kind::Set: {
         open_each(w, st, ctx);
         const ast::Assign& a = st.set;
-        write_sourced(w, a.value->loc,
-                      embedding_var(a.embedding.text) + "[" + dart_name(a.node.text) + "] = " +
-                          convert(emit_expr(*a.value, ctx), a.value->type, a.target->type) + ";");
+        write_sourced(
+            w, a.value->loc,
+            embedding_var(a.embedding.text) + "[" + dart_name(a.node.text) + "] = " +
+                convert(emit_expr(*a.value, ctx), a.value->type, model.symbols->target(a)->type) +
+                ";");
         close_each(w, st);
         break;
       }

@@ -5,13 +5,13 @@
 
 namespace rift::lower {
 
-CriterionPlan plan_criterion(const ast::Criterion& crit,
-                             const std::vector<ast::Param>& rule_params) {
+CriterionPlan plan_criterion(const ast::Criterion& crit, const std::vector<ast::Param>& rule_params,
+                             const resolve::Symbols& symbols) {
   CriterionPlan plan;
   plan.criterion = &crit;
   ir::Body& body = plan.body;
   body.nodes.push_back(crit.dart.text);
-  ExprLowering lowering(body.graph, body.nodes, nullptr);
+  ExprLowering lowering(body.graph, body.nodes, nullptr, symbols);
   for (const ast::Let& let : crit.lets) {
     const int index = static_cast<int>(body.lets.size());
     body.lets.push_back({let.name.text, lowering.lower(*let.value), let.value->loc});

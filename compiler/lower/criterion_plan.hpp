@@ -9,6 +9,7 @@
 
 #include "ast/decl.hpp"
 #include "ir/body.hpp"
+#include "resolve/symbols.hpp"
 
 namespace rift::lower {
 
@@ -23,8 +24,8 @@ struct CriterionPlan {
   std::vector<ir::ExprId> args;
 };
 
-CriterionPlan plan_criterion(const ast::Criterion& crit,
-                             const std::vector<ast::Param>& rule_params);
+CriterionPlan plan_criterion(const ast::Criterion& crit, const std::vector<ast::Param>& rule_params,
+                             const resolve::Symbols& symbols);
 
 /// Marks in `used` (one entry per let) the lets `root` reads, directly or through other lets.
 void lets_read(const ir::Body& body, ir::ExprId root, std::vector<bool>& used);

@@ -36,8 +36,8 @@ Op binary_op(const std::string& op) {
 }  // namespace
 
 ExprLowering::ExprLowering(ir::Graph& graph, std::vector<std::string>& nodes,
-                           const KernelPlan* kernel)
-    : g_(graph), nodes_(nodes), kernel_(kernel) {}
+                           const KernelPlan* kernel, const resolve::Symbols& symbols)
+    : g_(graph), nodes_(nodes), kernel_(kernel), symbols_(symbols) {}
 
 void ExprLowering::add_let(const ast::Let* let, int index) {
   lets_[let] = index;
@@ -87,7 +87,7 @@ ExprId ExprLowering::read(const Expr& e) {
   n.embedding = e.name;
   n.op = Op::Read;
   if (kernel_) {
-    std::vector<int> orbit = e.embedding->orbit.dims;
+    std::vector<int> orbit = symbols_.binding(e).embedding->orbit.dims;
     std::sort(orbit.begin(), orbit.end());
     n.place.slot = kernel_->find(n.place.node, e.hops, orbit);
     if (e.name == check::kPositionEmbedding) n.op = Op::Position;
@@ -165,11 +165,12 @@ ExprId ExprLowering::lower(const Expr& e) {
       ir::Node n;
       n.type = e.type;
       n.name = e.name;
-      if (e.let) {
+      const resolve::Binding& b = symbols_.binding(e);
+      if (b.let) {
         n.op = Op::Let;
-        const auto it = lets_.find(e.let);
+        const auto it = lets_.find(b.let);
         n.index = it == lets_.end() ? -1 : it->second;
-      } else if (e.param) {
+      } else if (b.param) {
         n.op = Op::Param;
       } else {
         n.op = Op::PackParam;

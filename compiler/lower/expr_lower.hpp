@@ -12,6 +12,7 @@
 #include "ast/expr.hpp"
 #include "ir/expr.hpp"
 #include "lower/kernel_plan.hpp"
+#include "resolve/symbols.hpp"
 
 namespace rift::lower {
 
@@ -19,8 +20,9 @@ class ExprLowering {
  public:
   /// `nodes`: the body's dart names (pattern nodes); fold variables are
   /// appended as they are met. `kernel`: set for a force loop, whose reads go
-  /// through the slots it planned.
-  ExprLowering(ir::Graph& graph, std::vector<std::string>& nodes, const KernelPlan* kernel);
+  /// through the slots it planned. `symbols`: what names refer to (resolve/).
+  ExprLowering(ir::Graph& graph, std::vector<std::string>& nodes, const KernelPlan* kernel,
+               const resolve::Symbols& symbols);
 
   /// Lets lowered so far become visible to later expressions.
   void add_let(const ast::Let* let, int index);
@@ -41,6 +43,7 @@ class ExprLowering {
   ir::Graph& g_;
   std::vector<std::string>& nodes_;
   const KernelPlan* kernel_;
+  const resolve::Symbols& symbols_;
   std::map<const ast::Let*, int> lets_;
 };
 
