@@ -56,10 +56,9 @@ struct Expr {
   Location var_loc;
   std::vector<ExprPtr> args;
   int depth = 1;  // of the tree below; the parser caps it so passes may recurse safely
-
-  // Filled by check/ (types.cpp). What names refer to is not here: resolve/
-  // records it in a side table (resolve::Symbols::binding).
-  Type type = Type::Error;
+  // What names refer to and the types of expressions are not here: resolve/
+  // and check/ record them in side tables (resolve::Symbols::binding,
+  // check::ExprTypes), so that no pass writes into the tree.
 };
 
 ExprPtr make_expr(Expr::Kind kind, const Location& loc);

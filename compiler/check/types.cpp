@@ -26,13 +26,15 @@ bool assignable(Type from, Type to) {
 
 class TypeChecker {
  public:
-  TypeChecker(int dimension, const resolve::Symbols& symbols, diag::Diagnostics& diags)
-      : dimension_(dimension), symbols_(symbols), diags_(diags) {}
+  TypeChecker(int dimension, const resolve::Symbols& symbols, ExprTypes& types,
+              diag::Diagnostics& diags)
+      : dimension_(dimension), symbols_(symbols), types_(types), diags_(diags) {}
 
-  Type expr(const Expr& ce) {
-    auto& e = const_cast<Expr&>(ce);  // the pass records types in the tree
-    e.type = compute(e);
-    return e.type;
+  /// The type of `e`, recorded in the side table for lower/ and emit/.
+  Type expr(const Expr& e) {
+    const Type t = compute(e);
+    types_.set(e, t);
+    return t;
   }
 
   /// Checks that `e` has a type assignable to `want`; `what` names the place.
@@ -48,7 +50,7 @@ class TypeChecker {
   }
 
  private:
-  Type compute(Expr& e) {
+  Type compute(const Expr& e) {
     switch (e.kind) {
       case Expr::Kind::IntLit:
         return Type::Int;
@@ -58,7 +60,7 @@ class TypeChecker {
         return Type::Bool;
       case Expr::Kind::Name: {
         const resolve::Binding& b = symbols_.binding(e);
-        if (b.let) return b.let->value->type;
+        if (b.let) return types_.of(*b.let->value);
         if (b.param) return b.param->type;
         if (b.pack_param) return b.pack_param->type;
         return Type::Error;
@@ -252,6 +254,7 @@ class TypeChecker {
 
   int dimension_;
   const resolve::Symbols& symbols_;
+  ExprTypes& types_;
   diag::Diagnostics& diags_;
 };
 
@@ -370,9 +373,9 @@ bool check_orbit_type(const ast::Label& label, int dimension, const char* what,
   return true;
 }
 
-void check_types(const ast::Program& program, const resolve::Symbols& symbols,
+void check_types(const ast::Program& program, const resolve::Symbols& symbols, ExprTypes& types,
                  diag::Diagnostics& diags) {
-  TypeChecker tc(program.dimension, symbols, diags);
+  TypeChecker tc(program.dimension, symbols, types, diags);
   std::map<std::string, diag::Location> initialised;
   for (const ast::File& file : program.files) {
     for (const auto& e : file.embeddings)

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ast/expr.hpp"
+#include "check/expr_types.hpp"
 #include "emit/names.hpp"
 #include "resolve/symbols.hpp"
 
@@ -24,6 +25,8 @@ struct ExprContext {
   /// What names refer to (resolve/). Constant expressions name nothing and
   /// need none.
   const resolve::Symbols* symbols = nullptr;
+  /// The expressions' types (check/): every context has them.
+  const check::ExprTypes* types = nullptr;
 };
 
 std::string emit_expr(const ast::Expr& e, const ExprContext& ctx);

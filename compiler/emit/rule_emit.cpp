@@ -80,6 +80,7 @@ void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) 
   ExprContext ctx;
   ctx.dart = [](const std::string& node) { return dart_name(node); };
   ctx.symbols = model.symbols;
+  ctx.types = model.types;
 
   std::set<std::string> used;
   for (const auto& l : rule.lets)
@@ -138,11 +139,11 @@ void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) 
     write_lets(w, rule.lets, ctx);
     for (std::size_t k = 0; k < rule.right.assigns.size(); ++k) {
       const ast::Assign& a = rule.right.assigns[k];
-      write_sourced(
-          w, a.value->loc,
-          "value_" + std::to_string(k) + "[r] = " +
-              convert(emit_expr(*a.value, ctx), a.value->type, model.symbols->target(a)->type) +
-              ";");
+      write_sourced(w, a.value->loc,
+                    "value_" + std::to_string(k) + "[r] = " +
+                        convert(emit_expr(*a.value, ctx), ctx.types->of(*a.value),
+                                model.symbols->target(a)->type) +
+                        ";");
     }
     w.close();
   }
@@ -201,11 +202,11 @@ void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) 
   if (!rule.updates.empty()) {
     open_row_loop(w, g.right, true);
     for (const ast::Assign& u : rule.updates) {
-      write_sourced(
-          w, u.value->loc,
-          embedding_var(u.embedding.text) + "[" + dart_name(u.node.text) + "] = " +
-              convert(emit_expr(*u.value, ctx), u.value->type, model.symbols->target(u)->type) +
-              ";");
+      write_sourced(w, u.value->loc,
+                    embedding_var(u.embedding.text) + "[" + dart_name(u.node.text) + "] = " +
+                        convert(emit_expr(*u.value, ctx), ctx.types->of(*u.value),
+                                model.symbols->target(u)->type) +
+                        ";");
     }
     w.close();
   }

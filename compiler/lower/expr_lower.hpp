@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ast/expr.hpp"
+#include "check/expr_types.hpp"
 #include "ir/expr.hpp"
 #include "lower/kernel_plan.hpp"
 #include "resolve/symbols.hpp"
@@ -22,7 +23,7 @@ class ExprLowering {
   /// appended as they are met. `kernel`: set for a force loop, whose reads go
   /// through the slots it planned. `symbols`: what names refer to (resolve/).
   ExprLowering(ir::Graph& graph, std::vector<std::string>& nodes, const KernelPlan* kernel,
-               const resolve::Symbols& symbols);
+               const resolve::Symbols& symbols, const check::ExprTypes& types);
 
   /// Lets lowered so far become visible to later expressions.
   void add_let(const ast::Let* let, int index);
@@ -44,6 +45,7 @@ class ExprLowering {
   std::vector<std::string>& nodes_;
   const KernelPlan* kernel_;
   const resolve::Symbols& symbols_;
+  const check::ExprTypes& types_;
   std::map<const ast::Let*, int> lets_;
 };
 
