@@ -21,8 +21,12 @@ function(_rift_riftc_command out_var)
   endif()
 endfunction()
 
+#
+# PACK <pack> names the pack instead of reading it from the first file: for a
+# rule file that another build step generates (it does not exist yet when
+# CMake configures).
 function(rift_add_rule_pack target)
-  cmake_parse_arguments(ARG "" "" "RULES" ${ARGN})
+  cmake_parse_arguments(ARG "" "PACK" "RULES" ${ARGN})
   if(NOT ARG_RULES)
     message(FATAL_ERROR "rift_add_rule_pack(${target}): no RULES given")
   endif()
@@ -32,13 +36,17 @@ function(rift_add_rule_pack target)
     list(APPEND rules "${abs}")
   endforeach()
   list(GET rules 0 first)
-  # The output names come from the pack header; re-run CMake when it changes.
-  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${first}")
-  file(STRINGS "${first}" header REGEX "^[ \t]*pack[ \t]+[A-Za-z_][A-Za-z0-9_]*" LIMIT_COUNT 1)
-  if(NOT header MATCHES "pack[ \t]+([A-Za-z_][A-Za-z0-9_]*)")
-    message(FATAL_ERROR "rift_add_rule_pack(${target}): ${first} has no 'pack NAME dimension N;' line")
+  if(ARG_PACK)
+    set(pack "${ARG_PACK}")
+  else()
+    # The output names come from the pack header; re-run CMake when it changes.
+    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${first}")
+    file(STRINGS "${first}" header REGEX "^[ \t]*pack[ \t]+[A-Za-z_][A-Za-z0-9_]*" LIMIT_COUNT 1)
+    if(NOT header MATCHES "pack[ \t]+([A-Za-z_][A-Za-z0-9_]*)")
+      message(FATAL_ERROR "rift_add_rule_pack(${target}): ${first} has no 'pack NAME dimension N;' line")
+    endif()
+    set(pack "${CMAKE_MATCH_1}")
   endif()
-  set(pack "${CMAKE_MATCH_1}")
   set(out_dir "${CMAKE_CURRENT_BINARY_DIR}/${target}_generated")
   _rift_riftc_command(riftc)
   set(riftc_target "")

@@ -28,8 +28,9 @@ struct Checked {
 
 void require_jacobians(const Checked& checked, diag::Diagnostics& diags) {
   for (const check::CheckedInteraction& ci : checked.interactions) {
+    const lower::InteractionPlan plan = lower::plan_interaction(ci, checked.symbols);
     const lower::DerivativePlan d =
-        lower::plan_derivative(*ci.interaction, lower::plan_kernel(ci, checked.symbols));
+        lower::plan_derivative(plan.body, plan.kernel, ci.interaction->name.loc);
     if (!d.available) {
       diags.error(d.where, "interaction '" + ci.interaction->name.text +
                                "' has no Jacobian (--require-jacobians): " + d.why);

@@ -223,21 +223,6 @@ std::string convert(const std::string& code, Type from, Type to) {
   return code;
 }
 
-std::string orbit_code(const std::vector<int>& dims) {
-  std::vector<int> sorted;
-  for (int d : dims) {
-    if (d >= 0 && d < 8 && std::find(sorted.begin(), sorted.end(), d) == sorted.end())
-      sorted.push_back(d);
-  }
-  std::sort(sorted.begin(), sorted.end());
-  std::string out = "rift::Orbit{";
-  for (std::size_t k = 0; k < sorted.size(); ++k) {
-    if (k) out += ", ";
-    out += std::to_string(sorted[k]);
-  }
-  return out + "}";
-}
-
 std::string emit_dart(const ast::Expr& path, const ExprContext& ctx) {
   return dart_path(path, ctx);
 }

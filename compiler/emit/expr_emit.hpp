@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ast/expr.hpp"
+#include "emit/names.hpp"
 
 namespace rift::emit {
 
@@ -26,7 +27,5 @@ std::string emit_expr(const ast::Expr& e, const ExprContext& ctx);
 std::string emit_dart(const ast::Expr& path, const ExprContext& ctx);
 /// `code` (of type `from`) converted to `to` (only int -> real converts).
 std::string convert(const std::string& code, ast::Type from, ast::Type to);
-/// `rift::Orbit{1, 2}` for a list of dimensions.
-std::string orbit_code(const std::vector<int>& dims);
 
 }  // namespace rift::emit

@@ -6,7 +6,6 @@
 #include <cstdlib>
 #include <utility>
 
-#include "emit/expr_emit.hpp"
 #include "emit/names.hpp"
 
 namespace rift::emit {
@@ -124,6 +123,19 @@ void BodyRenderer::computed(ExprId id, const std::string& name) {
   blocks_.back().emplace(id, name);
 }
 
+void BodyRenderer::precompute(ExprId id) {
+  const auto i = static_cast<std::size_t>(id);
+  if (known(id, 0) || cheap(g_[id])) return;
+  if (i < sharing_.fold_vars.size() && (sharing_.fold_vars[i] != 0 || !sharing_.speculable[i]))
+    return;
+  const std::string code = expr(id);
+  if (known(id, 0)) return;  // a fold computed by a fused walk
+  std::string name = std::string("s") + std::to_string(next_local_++);
+  locals_.push_back(std::string("const ") + cpp_type(g_[id].type) + " " + name + " = " + code +
+                    ";");
+  blocks_.back().emplace(id, name);
+}
+
 void BodyRenderer::open_block() {
   blocks_.emplace_back();
 }
@@ -146,6 +158,9 @@ bool BodyRenderer::cheap(const Node& n) const {
     case Op::Velocity:
     case Op::Read:
       return n.place.hops.empty();
+    case Op::PositionTangent:
+    case Op::VelocityTangent:
+      return true;
     case Op::ToReal:
     case Op::Neg:
       return cheap(g_[n.a]);
@@ -208,7 +223,10 @@ std::string BodyRenderer::node(ExprId id) {
       if (n.type == Type::Bool) return n.boolean ? "true" : "false";
       if (n.type == Type::Int)
         return std::string("std::int64_t{") + std::to_string(n.integer) + "}";
+      if (n.type == Type::Vec3 || n.type == Type::Mat3) return zero_of(n.type);
       return real_literal(n.real);
+    case Op::PositionTangent:
+    case Op::VelocityTangent:  // only derivative passes have them, and give `read`
     case Op::Position:
     case Op::Velocity:
     case Op::Read:

@@ -52,6 +52,10 @@ class BodyRenderer {
   /// The statement just written computed `id` into the C++ variable `name`
   /// (a let): later statements read it.
   void computed(ir::ExprId id, const std::string& name);
+  /// Computes `id` into a statement-level local now (queued, as by expr())
+  /// unless it is known or not worth a local: a value every iteration of a
+  /// loop written next reads (a Jacobian's primal factors) is computed once.
+  void precompute(ir::ExprId id);
   /// A C++ block (`{`, an `if constexpr` branch) opens or closes: what is
   /// computed inside is not visible after it.
   void open_block();

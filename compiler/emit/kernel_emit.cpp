@@ -8,8 +8,6 @@
 #include <algorithm>
 
 #include "ast/orbit_text.hpp"
-#include "check/kernels.hpp"
-#include "emit/derivative_emit.hpp"
 #include "emit/emit_context.hpp"
 #include "emit/ir_render.hpp"
 #include "emit/names.hpp"
@@ -78,7 +76,7 @@ Kernel kernel_of(const InteractionPlan& plan) {
   k.inter = plan.interaction;
   k.cls = kernel_class(k.inter->name.text);
   k.slots = slot_names(plan.kernel);
-  k.derivative = lower::plan_derivative(*k.inter, plan.kernel);
+  k.derivative = lower::plan_derivative(plan.body, plan.kernel, k.inter->name.loc);
   const ir::Body& b = plan.body;
   auto scan = [&](ir::ExprId root) {
     if (root == ir::kNoExpr) return;
@@ -409,49 +407,37 @@ void write_force_terms_all(Writer& w, const Kernel& k) {
   w.line();
 }
 
-// ---- Jacobians (lower/derivative.*, emit/derivative_emit.*). The tangents
-// are rendered from the checked AST (the pass was written before the IR
-// landed); the primal lets and whens come from the IR, in source order.
+// ---- Jacobians (lower/derivative.*): the body differentiated in the IR,
+// rendered with the primal it shares its values with.
 
-/// The slot of an AST read of the force loop.
-int slot_of(const Kernel& k, const ast::Expr& read) {
-  const lower::KernelPlan& plan = k.plan->kernel;
-  int node = -1;
-  for (std::size_t v = 0; v < plan.nodes.size(); ++v) {
-    if (plan.nodes[v] == read.node) node = static_cast<int>(v);
-  }
-  std::vector<int> orbit = read.embedding->orbit.dims;
-  std::sort(orbit.begin(), orbit.end());
-  return plan.find(node, read.hops, orbit);
-}
-
-int jacobian_vertex_of_slot(const Kernel& k, int slot) {
-  const auto& vs = k.derivative.vertex_slots;
-  return static_cast<int>(std::find(vs.begin(), vs.end(), slot) - vs.begin());
-}
-
-/// AST expressions of the force loop as C++ (primal values inside tangents).
-ExprContext ast_loop_context(const Kernel& k) {
-  ExprContext ctx;
-  ctx.dart = [](const std::string& node) { return dart_name(node); };
-  ctx.args = "p_";
-  ctx.params = "pack_";
-  ctx.read = [&k](const ast::Expr& e) {
-    const std::string at = std::string("m.") + k.slots[static_cast<std::size_t>(slot_of(k, e))];
-    if (e.name == check::kPositionEmbedding) return std::string("in.x[") + at + "]";
-    if (e.name == check::kVelocityEmbedding) return std::string("in.v[") + at + "]";
-    return std::string("c.") + member_name(e.name) + "[" + at + "]";
+/// The force loop's context, and the seeds of tangent passes: `tx[j]`, `tv[j]`
+/// for the Jacobian vertex j.
+RenderContext tangent_context(const Kernel& k) {
+  RenderContext ctx = loop_context(k);
+  ctx.read = [&k, primal = ctx.read](const ir::Node& n) {
+    if (n.op != ir::Op::PositionTangent && n.op != ir::Op::VelocityTangent) return primal(n);
+    return std::string(n.op == ir::Op::PositionTangent ? "tx[" : "tv[") +
+           std::to_string(k.derivative.vertex_of_slot(n.place.slot)) + "]";
   };
   return ctx;
 }
 
+/// Every root a Jacobian function renders: the primal statements, then the
+/// tangents of the forces (the tangent lets they read are inside them).
+std::vector<ir::ExprId> jacobian_roots(const lower::DifferentiatedBody& d) {
+  std::vector<ir::ExprId> roots = statement_roots(d.body);
+  for (const lower::TangentPass& p : d.passes) {
+    for (ir::ExprId id : p.forces)
+      if (id != ir::kNoExpr) roots.push_back(id);
+  }
+  return roots;
+}
+
 /// The primal body (lets and whens in source order); `on_fail` runs where a
 /// `when` fails.
-void write_primal(Writer& w, const Kernel& k, const std::string& on_fail) {
-  const ir::Body& b = k.plan->body;
-  const RenderContext ctx = loop_context(k);
+void write_primal(Writer& w, const Kernel& k, const ir::Body& b, BodyRenderer& values,
+                  const std::string& on_fail) {
   if (!k.columns.empty()) w.line("[[maybe_unused]] const Columns c = columns();");
-  BodyRenderer values(b.graph, b.sharing, ctx, statement_roots(b));
   for (const ir::Stmt& s : b.stmts) {
     if (s.kind == ir::Stmt::Kind::When) {
       write_rendered(w, values, s.loc, "if (!", s.cond, std::string(") ") + on_fail);
@@ -466,46 +452,73 @@ void write_primal(Writer& w, const Kernel& k, const std::string& on_fail) {
   }
 }
 
-/// Tangent lets (one per active let whose tangent is not identically zero),
-/// then `per_force(i, tangent)` for each force with a nonzero tangent;
-/// tx[j], tv[j] are the tangents of vertex j. `seeded` says which state the
-/// pass differentiates by ("position", "velocity" or both): the tangents of
-/// the other are zero, so the lets that only carry them drop out of the pass
-/// (a pass per kind of direction then computes no zero tangent).
-template <class PerForce>
-void write_tangents(Writer& w, const Kernel& k, const ExprContext& primal, bool seed_x, bool seed_v,
-                    PerForce&& per_force) {
-  // Lets live in this pass: active ones, less those whose tangent turns out
-  // zero (later lets then read them as zero).
-  std::vector<bool> live = k.derivative.active_let;
-  TangentContext t;
-  t.primal = &primal;
-  t.lets = &k.inter->lets;
-  t.active_let = &live;
-  t.state_tangent = [&k, seed_x, seed_v](const ast::Expr& read) {
-    const bool x = read.name == check::kPositionEmbedding;
-    if (x ? !seed_x : !seed_v) return std::string();
-    std::string out = x ? "tx[" : "tv[";
-    out.append(std::to_string(jacobian_vertex_of_slot(k, slot_of(k, read)))).append("]");
-    return out;
-  };
-  for (std::size_t i = 0; i < k.inter->lets.size(); ++i) {
-    if (!live[i]) continue;
-    const ast::Let& l = k.inter->lets[i];
-    const std::string code = tangent_expr(*l.value, t);
-    if (code.empty()) {
-      live[i] = false;
-      continue;
+/// Nodes reachable from `roots` (each visited once, however shared).
+std::vector<bool> reachable(const ir::Graph& g, const std::vector<ir::ExprId>& roots) {
+  std::vector<bool> seen(g.size(), false);
+  std::vector<ir::ExprId> stack;
+  for (ir::ExprId r : roots)
+    if (r != ir::kNoExpr) stack.push_back(r);
+  while (!stack.empty()) {
+    const ir::ExprId id = stack.back();
+    stack.pop_back();
+    if (seen[static_cast<std::size_t>(id)]) continue;
+    seen[static_cast<std::size_t>(id)] = true;
+    const ir::Node& n = g[id];
+    for (std::size_t i = 0; i < n.arity(); ++i)
+      stack.push_back(n.operand(i));
+  }
+  return seen;
+}
+
+/// Computes before the tangent loops the primal values the tangents multiply
+/// by (every direction reads them): the operands of tangent nodes that do
+/// not depend on a seed themselves.
+void hoist_primal_factors(Writer& w, const lower::DifferentiatedBody& d, BodyRenderer& values) {
+  const ir::Graph& g = d.body.graph;
+  // Operands come before the nodes that use them (lower/share.hpp interns bottom-up).
+  std::vector<bool> seeded(g.size(), false);
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    const ir::Node& n = g[static_cast<ir::ExprId>(i)];
+    bool s = n.op == ir::Op::PositionTangent || n.op == ir::Op::VelocityTangent;
+    for (std::size_t k = 0; k < n.arity(); ++k)
+      s = s || seeded[static_cast<std::size_t>(n.operand(k))];
+    seeded[i] = s;
+  }
+  const std::vector<bool> used = reachable(g, jacobian_roots(d));
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    const ir::Node& n = g[static_cast<ir::ExprId>(i)];
+    if (!used[i] || !seeded[i]) continue;
+    for (std::size_t k = 0; k < n.arity(); ++k) {
+      const ir::ExprId op = n.operand(k);
+      if (!seeded[static_cast<std::size_t>(op)]) values.precompute(op);
     }
-    const std::string type = cpp_type(l.value->type);
-    write_sourced(
-        w, l.value->loc,
-        "[[maybe_unused]] const " + type + " " + tangent_name(l.name.text) + " = " + code + ";");
   }
-  for (std::size_t i = 0; i < k.inter->forces.size(); ++i) {
-    const std::string code = tangent_expr(*k.inter->forces[i].value, t);
-    if (!code.empty()) per_force(i, code);
+  for (const std::string& local : values.take_locals())
+    w.line(local);
+}
+
+/// A pass's tangent lets (those a force's tangent reads, in source order,
+/// named `t_l_NAME`), then `per_force(i, id)` for each force whose tangent
+/// is not identically zero.
+template <class PerForce>
+void write_tangents(Writer& w, const ir::Body& b, const lower::TangentPass& pass,
+                    BodyRenderer& values, PerForce&& per_force) {
+  const std::vector<bool> needed = reachable(b.graph, pass.forces);
+  std::set<ir::ExprId> written;
+  for (const ir::Stmt& s : b.stmts) {
+    if (s.kind != ir::Stmt::Kind::Let) continue;
+    const auto i = static_cast<std::size_t>(s.let);
+    const ir::ExprId t = pass.lets[i];
+    if (t == ir::kNoExpr || !needed[static_cast<std::size_t>(t)] || !written.insert(t).second)
+      continue;
+    const ir::Let& l = b.lets[i];
+    const std::string name = "t_" + let_name(l.name);
+    write_rendered(w, values, l.loc, "const " + cpp_type(b.graph[t].type) + " " + name + " = ", t,
+                   ";");
+    values.computed(t, name);
   }
+  for (std::size_t i = 0; i < pass.forces.size(); ++i)
+    if (pass.forces[i] != ir::kNoExpr) per_force(i, pass.forces[i]);
 }
 
 void write_vertex_slots(Writer& w, const Kernel& k) {
@@ -523,13 +536,19 @@ void write_vertex_slots(Writer& w, const Kernel& k) {
 // of the blocks of every force. The position and velocity directions are
 // two loops, each seeding only its own state, so neither computes the
 // tangents that only the other's seed feeds; a loop the forces do not
-// depend on at all (velocities of an undamped law) is left out. `flatten`
-// inlines the 3×3 products into the loop (at this size a call costs as
-// much as the product), and unrolling the loop makes each seed a constant
-// one-hot vector that the compiler folds into the first products.
+// depend on at all (velocities of an undamped law) is left out. The primal
+// values the tangents multiply by are computed once, before the loops.
+// `flatten` inlines the 3×3 products into the loop (at this size a call
+// costs as much as the product), and unrolling the loop makes each seed a
+// constant one-hot vector that the compiler folds into the first products.
 void write_jacobian(Writer& w, const Kernel& k) {
-  const ExprContext ctx = ast_loop_context(k);
-  const ir::Body& b = k.plan->body;
+  std::vector<lower::Seed> seeds;
+  if (k.derivative.depends_on_x) seeds.push_back({true, false});
+  if (k.derivative.depends_on_v) seeds.push_back({false, true});
+  const lower::DifferentiatedBody d = lower::differentiate(k.plan->body, seeds);
+  const ir::Body& b = d.body;
+  const RenderContext ctx = tangent_context(k);
+  BodyRenderer values(b.graph, b.sharing, ctx, jacobian_roots(d));
   const int n = static_cast<int>(k.derivative.vertex_slots.size());
   const std::string kk = std::to_string(n * n), k3 = std::to_string(3 * n);
   w.open("[[gnu::flatten]] void " + k.cls +
@@ -539,24 +558,26 @@ void write_jacobian(Writer& w, const Kernel& k) {
   w.line("dfdx[b].setZero();");
   w.line("dfdv[b].setZero();");
   w.close();
-  write_primal(w, k, "return;");
-  for (const bool wrt_x : {true, false}) {
-    if (!(wrt_x ? k.derivative.depends_on_x : k.derivative.depends_on_v)) continue;
-    const std::string seed = wrt_x ? "tx" : "tv", out = wrt_x ? "dfdx" : "dfdv";
+  write_primal(w, k, b, values, "return;");
+  hoist_primal_factors(w, d, values);
+  for (const lower::TangentPass& pass : d.passes) {
+    const std::string seed = pass.seed.x ? "tx" : "tv", out = pass.seed.x ? "dfdx" : "dfdv";
     w.line("#pragma GCC unroll " + k3);
     w.open("for (int dir = 0; dir < " + k3 + "; ++dir) {");
+    values.open_block();
     w.line("const int j = dir / 3, c3 = dir % 3;");
     w.line("rift::Vec3 " + seed + "[" + std::to_string(n) + "];");
     w.open("for (int v = 0; v < " + std::to_string(n) + "; ++v) {");
     w.line(seed + "[v].setZero();");
     w.close();
     w.line(seed + "[j][c3] = 1;");
-    write_tangents(w, k, ctx, wrt_x, !wrt_x, [&](std::size_t i, const std::string& code) {
-      const int vi = jacobian_vertex_of_slot(k, b.forces[i].vertex_slot);
-      std::string line = out;
-      line.append("[").append(std::to_string(vi * n)).append(" + j].col(c3) += rift::Vec3(");
-      w.line(line.append(code).append(");"));
+    write_tangents(w, b, pass, values, [&](std::size_t i, ir::ExprId t) {
+      const ir::Force& f = b.forces[i];
+      const int vi = k.derivative.vertex_of_slot(f.vertex_slot);
+      write_rendered(w, values, f.loc, out + "[" + std::to_string(vi * n) + " + j].col(c3) += ", t,
+                     ";");
     });
+    values.close_block();
     w.close();
   }
   w.close();
@@ -565,14 +586,16 @@ void write_jacobian(Writer& w, const Kernel& k) {
 
 // J·p in one tangent pass seeded with p's values at the match's vertices.
 void write_jacobian_product(Writer& w, const Kernel& k) {
-  const ExprContext ctx = ast_loop_context(k);
-  const ir::Body& b = k.plan->body;
+  const lower::DifferentiatedBody d = lower::differentiate(k.plan->body, {{true, true}});
+  const ir::Body& b = d.body;
+  const RenderContext ctx = tangent_context(k);
+  BodyRenderer values(b.graph, b.sharing, ctx, jacobian_roots(d));
   const int n = static_cast<int>(k.derivative.vertex_slots.size());
   w.open("[[gnu::flatten]] void " + k.cls +
          "::jacobian_product([[maybe_unused]] const Match& m, [[maybe_unused]] const "
          "rift::ForceInput& in, [[maybe_unused]] const rift::Vec3* px, [[maybe_unused]] const "
          "rift::Vec3* pv, rift::Vec3* out) {");
-  write_primal(w, k, "return;");
+  write_primal(w, k, b, values, "return;");
   std::string tx = "[[maybe_unused]] const rift::Vec3 tx[" + std::to_string(n) + "] = {";
   std::string tv = "[[maybe_unused]] const rift::Vec3 tv[" + std::to_string(n) + "] = {";
   for (int j = 0; j < n; ++j) {
@@ -586,9 +609,10 @@ void write_jacobian_product(Writer& w, const Kernel& k) {
   }
   w.line(tx + "};");
   w.line(tv + "};");
-  write_tangents(w, k, ctx, true, true, [&](std::size_t i, const std::string& code) {
-    w.line("out[m." + k.slots[static_cast<std::size_t>(b.forces[i].vertex_slot)] +
-           "] += rift::Vec3(" + code + ");");
+  write_tangents(w, b, d.passes[0], values, [&](std::size_t i, ir::ExprId t) {
+    const ir::Force& f = b.forces[i];
+    write_rendered(w, values, f.loc,
+                   "out[m." + k.slots[static_cast<std::size_t>(f.vertex_slot)] + "] += ", t, ";");
   });
   w.close();
   w.line();

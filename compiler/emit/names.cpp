@@ -1,5 +1,6 @@
 #include "emit/names.hpp"
 
+#include <algorithm>
 #include <set>
 
 #include "check/kernels.hpp"
@@ -114,6 +115,21 @@ std::string member_name(std::string_view name) {
   std::string out(name);
   if (kKeywords.count(name)) out += '_';
   return out;
+}
+
+std::string orbit_code(const std::vector<int>& dims) {
+  std::vector<int> sorted;
+  for (int d : dims) {
+    if (d >= 0 && d < 8 && std::find(sorted.begin(), sorted.end(), d) == sorted.end())
+      sorted.push_back(d);
+  }
+  std::sort(sorted.begin(), sorted.end());
+  std::string out = "rift::Orbit{";
+  for (std::size_t k = 0; k < sorted.size(); ++k) {
+    if (k) out += ", ";
+    out += std::to_string(sorted[k]);
+  }
+  return out + "}";
 }
 
 }  // namespace rift::emit

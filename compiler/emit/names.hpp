@@ -5,6 +5,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "ast/type.hpp"
 
@@ -18,6 +19,8 @@ std::string storage_type(ast::Type t);
 std::string zero_of(ast::Type t);
 /// `rift::ValueType::kReal` ...
 std::string value_type_enum(ast::Type t);
+/// `rift::Orbit{1, 2}` for a list of dimensions.
+std::string orbit_code(const std::vector<int>& dims);
 
 std::string let_name(std::string_view name);       // l_x
 std::string dart_name(std::string_view node);      // d_a (left/matched), n_a (right)

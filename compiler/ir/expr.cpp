@@ -136,9 +136,10 @@ ExprId Graph::binary(Op op, Type type, ExprId a, ExprId b) {
   return add(std::move(n));
 }
 
-ExprId Graph::call(Builtin fn, Type type, std::vector<ExprId> args) {
+ExprId Graph::call(Builtin fn, Type type, std::vector<ExprId> args, diag::Location loc) {
   Node n;
   n.op = Op::Call;
+  n.loc = loc;
   n.fn = fn;
   n.type = type;
   for (std::size_t k = 0; k < args.size(); ++k) {
@@ -200,6 +201,10 @@ std::string_view op_name(Op op) {
       return "pack param";
     case Op::Let:
       return "let";
+    case Op::PositionTangent:
+      return "tangent of position";
+    case Op::VelocityTangent:
+      return "tangent of velocity";
     case Op::Neg:
       return "-";
     case Op::Not:
@@ -251,6 +256,8 @@ std::string to_text(const Graph& g, ExprId id, const std::vector<std::string>& n
     case Op::Literal: {
       if (n.type == Type::Bool) return n.boolean ? "true" : "false";
       if (n.type == Type::Int) return std::to_string(n.integer);
+      if (n.type == Type::Vec3) return "vec3(0, 0, 0)";
+      if (n.type == Type::Mat3) return "(0 * identity())";
       char buf[64];
       std::snprintf(buf, sizeof buf, "%.17g", n.real);
       return buf;
@@ -259,6 +266,10 @@ std::string to_text(const Graph& g, ExprId id, const std::vector<std::string>& n
       return place_text(n.place, node_names) + ".position";
     case Op::Velocity:
       return place_text(n.place, node_names) + ".velocity";
+    case Op::PositionTangent:
+      return "d(" + place_text(n.place, node_names) + ".position)";
+    case Op::VelocityTangent:
+      return "d(" + place_text(n.place, node_names) + ".velocity)";
     case Op::Read:
       return place_text(n.place, node_names) + "." + n.embedding;
     case Op::Param:

@@ -19,7 +19,9 @@
 //    arguments of a built-in call whose chosen overload takes real;
 //  - Add/Sub take two operands of the node's type (real, int, vec3, mat3);
 //    Mul and Div take (scalar, T), (T, scalar) or (mat3, vec3|mat3);
-//  - comparisons and logic produce bool.
+//  - comparisons and logic produce bool;
+//  - a Literal of type vec3 or mat3 is the zero vector or matrix (derivative
+//    passes need it; the language has no such literal).
 #pragma once
 
 #include <cstdint>
@@ -40,13 +42,16 @@ inline constexpr ExprId kNoExpr = -1;
 
 enum class Op : std::uint8_t {
   // ---- leaves
-  Literal,    // real / integer / boolean, by type
+  Literal,    // real / integer / boolean by type; vec3 and mat3: zero
   Position,   // position of a pattern vertex (force loop: the integrator's stage x), `place`
   Velocity,   // velocity of a pattern vertex (force loop: the stage v), `place`
   Read,       // any other embedding at a dart, `place` and `embedding`
   Param,      // a parameter given by the scene or the caller: `name`
   PackParam,  // a constant of the pack: `name`
   Let,        // the value of let `index` of the enclosing body
+  // ---- leaves of derivative passes (lower/derivative.hpp), never lowered from the language
+  PositionTangent,  // the direction the position of the vertex at `place` moves in
+  VelocityTangent,  // the direction the velocity of the vertex at `place` moves in
   // ---- arithmetic and logic
   Neg,     // -a            (real, int, vec3, mat3)
   Not,     // not a
@@ -166,7 +171,7 @@ class Graph {
   ExprId boolean(bool v);
   ExprId unary(Op op, Type type, ExprId a);
   ExprId binary(Op op, Type type, ExprId a, ExprId b);
-  ExprId call(Builtin fn, Type type, std::vector<ExprId> args);
+  ExprId call(Builtin fn, Type type, std::vector<ExprId> args, diag::Location loc = {});
 
  private:
   std::vector<Node> nodes_;

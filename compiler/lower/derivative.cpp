@@ -1,138 +1,413 @@
 #include "lower/derivative.hpp"
 
+#include <algorithm>
+#include <cstdint>
+#include <map>
+#include <utility>
+
 #include "check/kernels.hpp"
+#include "lower/share.hpp"
 
 namespace rift::lower {
 
 namespace {
 
-using ast::Expr;
+using ir::Builtin;
+using ir::ExprId;
+using ir::kNoExpr;
+using ir::Node;
+using ir::Op;
+using ir::Type;
 
-int let_index(const ast::Let* let, const std::vector<ast::Let>& lets) {
-  for (std::size_t i = 0; i < lets.size(); ++i)
-    if (&lets[i] == let) return static_cast<int>(i);
-  return -1;
+bool differentiable(Type t) {
+  return t == Type::Real || t == Type::Vec3 || t == Type::Mat3;
 }
 
-bool is_state_read(const Expr& e) {
-  return e.kind == Expr::Kind::Read &&
-         (e.name == check::kPositionEmbedding || e.name == check::kVelocityEmbedding);
-}
-
-// Builtins whose value has no usable derivative: a rule marks their result
+// Built-ins whose value has no usable derivative: a rule marks their result
 // constant with stop_gradient(...) (the rotation of a polar decomposition
 // for co-rotational elements), or gives up implicit integration.
-bool without_derivative(const std::string& f) {
-  return f == "rotation" || f == "max_eigenvalue" || f == "max_eigenvector" || f == "eigenvalues";
+bool without_derivative(Builtin f) {
+  return f == Builtin::Rotation || f == Builtin::MaxEigenvalue || f == Builtin::MaxEigenvector ||
+         f == Builtin::Eigenvalues;
 }
 
-struct Analysis {
-  const std::vector<ast::Let>& lets;
-  std::vector<bool>& active;
-  DerivativePlan& out;
+bool reads_state_through_map(const Node& n) {
+  return (n.op == Op::Read || n.op == Op::Collect) &&
+         (n.embedding == check::kPositionEmbedding || n.embedding == check::kVelocityEmbedding);
+}
 
-  // Records the first subexpression without a derivative.
-  void fail(const Expr& e, std::string why) {
-    if (!out.why.empty()) return;
-    out.where = e.loc;
-    out.why = std::move(why);
+/// Which nodes depend on a position or a velocity, and the first active
+/// subexpression without a derivative.
+class Activity {
+ public:
+  Activity(const ir::Body& body, DerivativePlan& out)
+      : body_(body), out_(out), memo_(body.graph.size(), -1), let_(body.lets.size(), false) {}
+
+  void let(std::size_t i) { let_[i] = active(body_.lets[i].value); }
+
+  bool active(ExprId id) {
+    auto& m = memo_[static_cast<std::size_t>(id)];
+    if (m < 0) m = compute(id) ? 1 : 0;
+    return m == 1;
   }
 
-  // Returns whether e is active; checks the active subexpressions.
-  bool visit(const Expr& e) {
-    switch (e.kind) {
-      case Expr::Kind::IntLit:
-      case Expr::Kind::RealLit:
-      case Expr::Kind::BoolLit:
-        return false;
-      case Expr::Kind::Name: {
-        const int i = e.let ? let_index(e.let, lets) : -1;
-        return i >= 0 && active[static_cast<std::size_t>(i)];
-      }
-      case Expr::Kind::Read:
-        if (e.name == check::kPositionEmbedding) out.depends_on_x = true;
-        if (e.name == check::kVelocityEmbedding) out.depends_on_v = true;
-        return is_state_read(e);
-      case Expr::Kind::Call:
-        if (e.name == "stop_gradient") {
-          visit_quiet(*e.args[0]);  // constant for differentiation, whatever it holds
+ private:
+  bool compute(ExprId id) {
+    const Node& n = body_.graph[id];
+    switch (n.op) {
+      case Op::Position:
+        out_.depends_on_x = true;
+        return true;
+      case Op::Velocity:
+        out_.depends_on_v = true;
+        return true;
+      case Op::Let:
+        return let_[static_cast<std::size_t>(n.index)];
+      case Op::Call:
+        if (n.fn == Builtin::StopGradient) {
+          flags_only(n.a);  // constant for differentiation, whatever it holds
           return false;
         }
         break;
       default:
         break;
     }
-    bool any = false;
-    for (const auto& a : e.args)
-      any = visit(*a) || any;
+    bool any = reads_state_through_map(n);
+    for (std::size_t k = 0; k < n.arity(); ++k)
+      any = active(n.operand(k)) || any;
     if (!any) return false;
-    if (e.kind == Expr::Kind::Call && without_derivative(e.name)) {
-      fail(e, "'" + e.name +
-                  "(...)' depends on a position or a velocity and has no derivative; wrap it "
-                  "in stop_gradient(...) to hold it constant for the Jacobian (co-rotational "
-                  "elements hold their rotation so)");
+    if (n.op == Op::Call && without_derivative(n.fn)) {
+      // Appended (GCC 12's -Wrestrict misfires on `"'" + std::string` once inlined).
+      std::string why = "'";
+      why.append(ir::builtin_name(n.fn))
+          .append(
+              "(...)' depends on a position or a velocity and has no derivative; wrap it "
+              "in stop_gradient(...) to hold it constant for the Jacobian (co-rotational "
+              "elements hold their rotation so)");
+      fail(n, std::move(why));
     }
-    if (e.kind == Expr::Kind::Fold || e.kind == Expr::Kind::Collect) {
-      fail(e,
+    if (n.op == Op::Fold || n.op == Op::Collect) {
+      fail(n,
            "a fold over the map depends on a position or a velocity: its derivative is not "
            "formed");
     }
     // Integer and boolean results are piecewise constant: zero derivative.
-    return e.type == ast::Type::Real || e.type == ast::Type::Vec3 || e.type == ast::Type::Mat3;
+    return differentiable(n.type);
   }
 
-  // Visits for the dependency flags only (under stop_gradient).
-  void visit_quiet(const Expr& e) {
-    if (e.kind == Expr::Kind::Read) {
-      if (e.name == check::kPositionEmbedding) out.depends_on_x = true;
-      if (e.name == check::kVelocityEmbedding) out.depends_on_v = true;
-    }
-    for (const auto& a : e.args)
-      visit_quiet(*a);
+  // Under stop_gradient: what the forces depend on, nothing else.
+  void flags_only(ExprId id) {
+    ir::visit(body_.graph, id, [this](const Node& n) {
+      if (n.op == Op::Position) out_.depends_on_x = true;
+      if (n.op == Op::Velocity) out_.depends_on_v = true;
+    });
   }
+
+  void fail(const Node& n, std::string why) {
+    if (!out_.why.empty()) return;
+    out_.where = n.loc;
+    out_.why = std::move(why);
+  }
+
+  const ir::Body& body_;
+  DerivativePlan& out_;
+  std::vector<std::int8_t> memo_;  // per node: -1 not yet known, 0, 1
+  std::vector<bool> let_;
+};
+
+/// Builds the tangent nodes of one pass into `g` (the body's graph, extended).
+class Tangents {
+ public:
+  Tangents(ir::Graph& g, const ir::Body& body, Seed seed)
+      : g_(g), body_(body), seed_(seed), let_(body.lets.size(), kUnknown) {}
+
+  /// The tangent of node `id`, kNoExpr when identically zero.
+  ExprId of(ExprId id) {
+    const auto it = memo_.find(id);
+    if (it != memo_.end()) return it->second;
+    const ExprId t = compute(id);
+    memo_.emplace(id, t);
+    return t;
+  }
+
+  ExprId of_let(std::size_t i) {
+    if (let_[i] == kUnknown) let_[i] = of(body_.lets[i].value);
+    return let_[i];
+  }
+
+ private:
+  static constexpr ExprId kUnknown = -2;
+
+  const Node& at(ExprId id) const { return g_[id]; }
+  Type type(ExprId id) const { return g_[id].type; }
+
+  ExprId zero(Type t) {
+    if (t == Type::Real) return g_.real(0);
+    Node n;
+    n.op = Op::Literal;
+    n.type = t;
+    return g_.add(std::move(n));
+  }
+  ExprId or_zero(ExprId t, Type type) { return t == kNoExpr ? zero(type) : t; }
+  ExprId real(double v) { return g_.real(v); }
+  ExprId neg(ExprId a) { return a == kNoExpr ? a : g_.unary(Op::Neg, type(a), a); }
+  ExprId add(ExprId a, ExprId b) {
+    if (a == kNoExpr) return b;
+    if (b == kNoExpr) return a;
+    return g_.binary(Op::Add, type(a), a, b);
+  }
+  ExprId sub(ExprId a, ExprId b) {
+    if (b == kNoExpr) return a;
+    if (a == kNoExpr) return neg(b);
+    return g_.binary(Op::Sub, type(a), a, b);
+  }
+  /// a * b, of type t (kNoExpr when either is zero).
+  ExprId mul(Type t, ExprId a, ExprId b) {
+    if (a == kNoExpr || b == kNoExpr) return kNoExpr;
+    return g_.binary(Op::Mul, t, a, b);
+  }
+  ExprId div(Type t, ExprId a, ExprId b) {
+    if (a == kNoExpr) return kNoExpr;
+    return g_.binary(Op::Div, t, a, b);
+  }
+  ExprId call(Builtin f, Type t, std::vector<ExprId> args) {
+    for (ExprId a : args) {
+      if (a == kNoExpr) return kNoExpr;
+    }
+    return g_.call(f, t, std::move(args));
+  }
+  ExprId cond(Type t, ExprId c, ExprId yes, ExprId no) {
+    if (yes == kNoExpr && no == kNoExpr) return kNoExpr;
+    Node n;
+    n.op = Op::Cond;
+    n.type = t;
+    n.a = c;
+    n.b = or_zero(yes, t);
+    n.c = or_zero(no, t);
+    return g_.add(std::move(n));
+  }
+  ExprId compare(Op op, ExprId a, ExprId b) { return g_.binary(op, Type::Bool, a, b); }
+  ExprId index(ExprId m, int row, int col) {
+    Node n;
+    n.op = Op::Index;
+    n.type = Type::Real;
+    n.a = m;
+    n.b = g_.integer(row);
+    n.c = g_.integer(col);
+    return g_.add(std::move(n));
+  }
+  /// Column k of a mat3 as a vec3.
+  ExprId column(ExprId m, int k) {
+    return g_.call(Builtin::Vec3, Type::Vec3, {index(m, 0, k), index(m, 1, k), index(m, 2, k)});
+  }
+
+  ExprId compute(ExprId id) {
+    // Copied: adding nodes may move the graph's storage.
+    const Node n = at(id);
+    if (!differentiable(n.type)) return kNoExpr;  // piecewise constant
+    switch (n.op) {
+      case Op::Position:
+      case Op::Velocity: {
+        if (n.op == Op::Position ? !seed_.x : !seed_.v) return kNoExpr;
+        Node t;
+        t.op = n.op == Op::Position ? Op::PositionTangent : Op::VelocityTangent;
+        t.type = Type::Vec3;
+        t.place = n.place;
+        return g_.add(std::move(t));
+      }
+      case Op::Let:
+        return of_let(static_cast<std::size_t>(n.index));
+      case Op::Neg:
+        return neg(of(n.a));
+      case Op::Add:
+        return add(of(n.a), of(n.b));
+      case Op::Sub:
+        return sub(of(n.a), of(n.b));
+      case Op::Mul:  // product rule, operand order kept (matrices)
+        return add(mul(n.type, of(n.a), n.b), mul(n.type, n.a, of(n.b)));
+      case Op::Div: {  // the divisor is a scalar: d(a/b) = (da - (a/b) db) / b
+        const ExprId ta = of(n.a), tb = of(n.b);
+        if (ta == kNoExpr && tb == kNoExpr) return kNoExpr;
+        return div(n.type, sub(ta, mul(n.type, id, tb)), n.b);
+      }
+      case Op::Cond:
+        return cond(n.type, n.a, of(n.b), of(n.c));
+      case Op::Index: {
+        const ExprId ta = of(n.a);
+        if (ta == kNoExpr) return kNoExpr;
+        Node t = n;
+        t.a = ta;
+        return g_.add(std::move(t));
+      }
+      case Op::Call:
+        return builtin(id, n);
+      default:
+        // Literals, parameters, other embeddings, ints made real: constant.
+        // Folds and map reads of the state are refused by plan_derivative.
+        return kNoExpr;
+    }
+  }
+
+  ExprId builtin(ExprId id, const Node& n) {
+    std::vector<ExprId> t;
+    bool any = false;
+    for (std::size_t k = 0; k < n.arity(); ++k) {
+      t.push_back(of(n.operand(k)));
+      any = any || t.back() != kNoExpr;
+    }
+    if (!any) return kNoExpr;
+    auto x = [&n](std::size_t k) { return n.operand(k); };
+    auto tz = [&](std::size_t k) { return or_zero(t[k], type(x(k))); };
+    const Type r = n.type;
+    switch (n.fn) {
+      case Builtin::Real:
+        return t[0];
+      case Builtin::Vec3:
+      case Builtin::Mat3: {
+        std::vector<ExprId> args;
+        for (std::size_t k = 0; k < t.size(); ++k)
+          args.push_back(tz(k));
+        return g_.call(n.fn, r, std::move(args));
+      }
+      case Builtin::Min:
+      case Builtin::Max:
+        return cond(r, compare(n.fn == Builtin::Min ? Op::Le : Op::Ge, x(0), x(1)), t[0], t[1]);
+      case Builtin::Clamp:
+        return cond(r, compare(Op::Lt, x(0), x(1)), t[1],
+                    cond(r, compare(Op::Gt, x(0), x(2)), t[2], t[0]));
+      case Builtin::Abs:
+        return cond(r, compare(Op::Ge, x(0), real(0)), t[0], neg(t[0]));
+      case Builtin::Sqrt:  // d√a = da / (2√a)
+        return div(r, t[0], g_.binary(Op::Mul, r, real(2), id));
+      case Builtin::Exp:
+        return mul(r, id, t[0]);
+      case Builtin::Log:
+        return div(r, t[0], x(0));
+      case Builtin::Sin:
+        return mul(r, g_.call(Builtin::Cos, r, {x(0)}), t[0]);
+      case Builtin::Cos:
+        return neg(mul(r, g_.call(Builtin::Sin, r, {x(0)}), t[0]));
+      case Builtin::Tan:  // d tan a = (1 + tan² a) da
+        return mul(r, g_.binary(Op::Add, r, real(1), g_.binary(Op::Mul, r, id, id)), t[0]);
+      case Builtin::Asin:
+      case Builtin::Acos: {
+        const ExprId root = g_.call(
+            Builtin::Sqrt, r, {g_.binary(Op::Sub, r, real(1), g_.binary(Op::Mul, r, x(0), x(0)))});
+        const ExprId d = div(r, t[0], root);
+        return n.fn == Builtin::Asin ? d : neg(d);
+      }
+      case Builtin::Atan:
+        return div(r, t[0], g_.binary(Op::Add, r, real(1), g_.binary(Op::Mul, r, x(0), x(0))));
+      case Builtin::Atan2: {  // atan2(y, x): (x dy - y dx) / (x² + y²)
+        const ExprId y0 = x(0), x0 = x(1);
+        const ExprId num = sub(mul(r, x0, t[0]), mul(r, y0, t[1]));
+        return div(
+            r, num,
+            g_.binary(Op::Add, r, g_.binary(Op::Mul, r, x0, x0), g_.binary(Op::Mul, r, y0, y0)));
+      }
+      case Builtin::Pow: {
+        if (t[1] == kNoExpr) {  // d aᵇ = b aᵇ⁻¹ da
+          const ExprId p = g_.call(Builtin::Pow, r, {x(0), g_.binary(Op::Sub, r, x(1), real(1))});
+          return mul(r, g_.binary(Op::Mul, r, x(1), p), t[0]);
+        }
+        // d aᵇ = aᵇ (b da / a + log a db)
+        const ExprId da = mul(r, t[0], g_.binary(Op::Div, r, x(1), x(0)));
+        const ExprId db = mul(r, g_.call(Builtin::Log, r, {x(0)}), t[1]);
+        return mul(r, id, add(da, db));
+      }
+      case Builtin::Dot:
+      case Builtin::Cross:
+      case Builtin::Outer:
+        return add(call(n.fn, r, {t[0], x(1)}), call(n.fn, r, {x(0), t[1]}));
+      case Builtin::Norm:  // d|a| = a·da / |a|
+        return div(r, g_.call(Builtin::Dot, Type::Real, {x(0), t[0]}), id);
+      case Builtin::Normalize: {  // d(a/|a|) = (da - n (n·da)) / |a|, n = a/|a|
+        const ExprId along =
+            g_.binary(Op::Mul, r, id, g_.call(Builtin::Dot, Type::Real, {id, t[0]}));
+        return div(r, g_.binary(Op::Sub, r, t[0], along),
+                   g_.call(Builtin::Norm, Type::Real, {x(0)}));
+      }
+      case Builtin::Transpose:
+      case Builtin::Trace:
+        return g_.call(n.fn, r, {t[0]});
+      case Builtin::Inverse:  // d(A⁻¹) = -A⁻¹ dA A⁻¹
+        return neg(g_.binary(Op::Mul, r, g_.binary(Op::Mul, r, id, t[0]), id));
+      case Builtin::Det: {
+        // d det A = Σ_k det(A with column k replaced by dA's): no inverse,
+        // so it stays finite for a singular A.
+        const ExprId a = x(0), da = t[0];
+        const ExprId a0 = column(a, 0), a1 = column(a, 1), a2 = column(a, 2);
+        auto triple = [&](ExprId u, ExprId v, ExprId w) {
+          return g_.call(Builtin::Dot, Type::Real,
+                         {u, g_.call(Builtin::Cross, Type::Vec3, {v, w})});
+        };
+        return add(add(triple(column(da, 0), a1, a2), triple(a0, column(da, 1), a2)),
+                   triple(a0, a1, column(da, 2)));
+      }
+      default:
+        // stop_gradient, identity, int: constant. rotation and the
+        // eigen-solvers are refused by plan_derivative.
+        return kNoExpr;
+    }
+  }
+
+  ir::Graph& g_;
+  const ir::Body& body_;
+  Seed seed_;
+  std::vector<ExprId> let_;
+  std::map<ExprId, ExprId> memo_;
 };
 
 }  // namespace
 
-bool is_active(const Expr& e, const std::vector<bool>& active_let,
-               const std::vector<ast::Let>& lets) {
-  switch (e.kind) {
-    case Expr::Kind::Name: {
-      const int i = e.let ? let_index(e.let, lets) : -1;
-      return i >= 0 && active_let[static_cast<std::size_t>(i)];
-    }
-    case Expr::Kind::Read:
-      return is_state_read(e);
-    case Expr::Kind::Call:
-      if (e.name == "stop_gradient") return false;
-      break;
-    default:
-      break;
-  }
-  if (e.type != ast::Type::Real && e.type != ast::Type::Vec3 && e.type != ast::Type::Mat3)
-    return false;
-  for (const auto& a : e.args)
-    if (is_active(*a, active_let, lets)) return true;
-  return false;
+int DerivativePlan::vertex_of_slot(int slot) const {
+  return static_cast<int>(std::find(vertex_slots.begin(), vertex_slots.end(), slot) -
+                          vertex_slots.begin());
 }
 
-DerivativePlan plan_derivative(const ast::Interaction& inter, const KernelPlan& plan) {
+DerivativePlan plan_derivative(const ir::Body& body, const KernelPlan& kernel,
+                               const diag::Location& declared) {
   DerivativePlan out;
-  for (std::size_t s = 0; s < plan.slots.size(); ++s)
-    if (plan.slots[s].vertex) out.vertex_slots.push_back(static_cast<int>(s));
-  out.active_let.assign(inter.lets.size(), false);
-  Analysis a{inter.lets, out.active_let, out};
-  // Lets in source order: each sees the activity of the earlier ones.
-  for (std::size_t i = 0; i < inter.lets.size(); ++i)
-    out.active_let[i] = a.visit(*inter.lets[i].value);
-  // Every let is checked (a force may read any of them), then the forces.
-  for (const ast::Assign& f : inter.forces)
-    a.visit(*f.value);
+  for (std::size_t s = 0; s < kernel.slots.size(); ++s)
+    if (kernel.slots[s].vertex) out.vertex_slots.push_back(static_cast<int>(s));
+  Activity activity(body, out);
+  // Lets in source order: each sees the activity of the earlier ones. Every
+  // let is checked (a force may read any of them), then the forces.
+  for (const ir::Stmt& s : body.stmts)
+    if (s.kind == ir::Stmt::Kind::Let) activity.let(static_cast<std::size_t>(s.let));
+  for (const ir::Force& f : body.forces)
+    activity.active(f.value);
   out.available = out.why.empty() && !out.vertex_slots.empty();
   if (out.why.empty() && out.vertex_slots.empty()) {
-    out.where = inter.name.loc;
+    out.where = declared;
     out.why = "the interaction reads no vertex";
   }
+  return out;
+}
+
+DifferentiatedBody differentiate(const ir::Body& body, const std::vector<Seed>& seeds) {
+  DifferentiatedBody out;
+  out.body = body;
+  for (const Seed& seed : seeds) {
+    Tangents tangents(out.body.graph, body, seed);
+    TangentPass pass;
+    pass.seed = seed;
+    for (std::size_t i = 0; i < body.lets.size(); ++i)
+      pass.lets.push_back(tangents.of_let(i));
+    for (const ir::Force& f : body.forces)
+      pass.forces.push_back(tangents.of(f.value));
+    out.passes.push_back(std::move(pass));
+  }
+  // The primal and the tangents as one graph: equal values become one node,
+  // whether the forces or a tangent wrote them first.
+  std::vector<ExprId*> roots;
+  for (TangentPass& p : out.passes) {
+    for (ExprId& l : p.lets)
+      if (l != kNoExpr) roots.push_back(&l);
+    for (ExprId& f : p.forces)
+      if (f != kNoExpr) roots.push_back(&f);
+  }
+  share_common_subexpressions(out.body, roots);
   return out;
 }
 

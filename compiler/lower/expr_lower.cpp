@@ -128,7 +128,7 @@ ExprId ExprLowering::call(const Expr& e) {
   if ((fn == ir::Builtin::Real || fn == ir::Builtin::Int) && g_[args[0]].type == sig->result) {
     return args[0];
   }
-  return g_.call(fn, sig->result, std::move(args));
+  return g_.call(fn, sig->result, std::move(args), e.loc);
 }
 
 ExprId ExprLowering::fold(const Expr& e) {
@@ -182,6 +182,7 @@ ExprId ExprLowering::lower(const Expr& e) {
     case Expr::Kind::Collect: {
       ir::Node n;
       n.op = Op::Collect;
+      n.loc = e.loc;
       n.type = e.type;
       n.place = place(e);
       n.embedding = e.name;

@@ -16,7 +16,7 @@ using ir::Op;
 
 bool has_place(Op op) {
   return op == Op::Position || op == Op::Velocity || op == Op::Read || op == Op::Collect ||
-         op == Op::Fold;
+         op == Op::Fold || op == Op::PositionTangent || op == Op::VelocityTangent;
 }
 
 /// Everything that makes two nodes compute the same value, operands by

@@ -303,6 +303,7 @@ TEST_F(Cli, BenchJson) {
   EXPECT_EQ(j["steps"], 30);
   EXPECT_EQ(j["tears"], 0);
   EXPECT_EQ(j["vertices"], 49);
+  EXPECT_NEAR(j["ns_per_vertex"].get<double>(), j["ns_per_step"].get<double>() / 49, 0.01);
   // Set-up time and the process's peak RSS (issue 12): present and plausible.
   EXPECT_GT(j["setup_ms"].get<double>(), 0);
   EXPECT_GT(j["peak_rss_mb"].get<double>(), 1);

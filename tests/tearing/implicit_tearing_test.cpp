@@ -68,34 +68,35 @@ Tears run(const std::string& integrator,
   return t;
 }
 
-TEST(ImplicitTearing, HangingClothTearsAsWithRk4AtASmallStep) {
-  const Tears rk4 = run("rk4");
-  const Tears implicit = run("implicit_euler");
-  ASSERT_GE(rk4.step_of_tear.size(), 2u) << "the cloth never tore";
-  ASSERT_EQ(implicit.step_of_tear.size(), rk4.step_of_tear.size());
-  // First order in dt: each tear within 2 % of RK4's step.
+// Where the torn vertices end up is compared only when the scene fixes it (a
+// swinging cloth's split copies move apart differently with each integrator).
+enum class Places { kCompared, kCounted };
+
+// The same tears as RK4's at a small step: as many, each within 2 % of RK4's
+// step plus 2 (first order in dt), the same vertex count, the same splits.
+void expect_same_tears(const Tears& rk4, const Tears& other, Places places) {
+  ASSERT_GE(rk4.step_of_tear.size(), 2u) << "RK4 never tore";
+  ASSERT_EQ(other.step_of_tear.size(), rk4.step_of_tear.size());
   for (std::size_t k = 0; k < rk4.step_of_tear.size(); ++k) {
-    EXPECT_NEAR(static_cast<double>(implicit.step_of_tear[k]),
+    EXPECT_NEAR(static_cast<double>(other.step_of_tear[k]),
                 static_cast<double>(rk4.step_of_tear[k]), 0.02 * rk4.step_of_tear[k] + 2)
         << "tear " << k;
   }
-  EXPECT_EQ(implicit.vertices, rk4.vertices);
-  EXPECT_EQ(implicit.splits.size(), rk4.splits.size());
+  EXPECT_EQ(other.vertices, rk4.vertices);
+  if (places == Places::kCompared) {
+    EXPECT_EQ(other.splits, rk4.splits);
+  } else {
+    EXPECT_EQ(other.splits.size(), rk4.splits.size());
+  }
+}
+
+TEST(ImplicitTearing, HangingClothTearsAsWithRk4AtASmallStep) {
+  expect_same_tears(run("rk4"), run("implicit_euler"), Places::kCounted);
 }
 
 TEST(ImplicitTearing, SheetPulledByHandlesTearsAsWithRk4AtASmallStep) {
-  const Tears rk4 = run("rk4", pulled_sheet, 3000);
-  const Tears implicit = run("implicit_euler", pulled_sheet, 3000);
-  ASSERT_GE(rk4.step_of_tear.size(), 2u) << "the sheet never tore";
-  ASSERT_EQ(implicit.step_of_tear.size(), rk4.step_of_tear.size());
-  // First order in dt: each tear within 2 % of RK4's step (plus 2 steps).
-  for (std::size_t k = 0; k < rk4.step_of_tear.size(); ++k) {
-    EXPECT_NEAR(static_cast<double>(implicit.step_of_tear[k]),
-                static_cast<double>(rk4.step_of_tear[k]), 0.02 * rk4.step_of_tear[k] + 2)
-        << "tear " << k;
-  }
-  EXPECT_EQ(implicit.vertices, rk4.vertices);
-  EXPECT_EQ(implicit.splits, rk4.splits);
+  expect_same_tears(run("rk4", pulled_sheet, 3000), run("implicit_euler", pulled_sheet, 3000),
+                    Places::kCompared);
 }
 
 }  // namespace

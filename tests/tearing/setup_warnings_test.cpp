@@ -6,6 +6,9 @@
 // hexahedron's volume shear springs' f_volume_shear).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <cstdio>
 #include <fstream>
 
 #include "rift/scene/scene.hpp"
@@ -93,6 +96,37 @@ TEST(SetupWarnings, CriteriaReadingForcesNoInteractionOfTheSceneStoresAreNamed) 
                              "[[interaction]]\nname = \"stretch\"\n"
                              "[[criterion]]\nname = \"stretch_strain\"\n")
                   .empty());
+}
+
+// implicit_euler with Newton iterations searches along the incremental
+// potential (docs/physics.md) only when every force has one; a load besides
+// gravity has none, and set-up says the search falls back to the residual.
+TEST(SetupWarnings, NewtonLineSearchFallingBackToTheResidualIsNamed) {
+  auto implicit_warnings = [](const std::string& name, const std::string& extra,
+                              const std::string& line_search) {
+    const std::string path =
+        ::testing::TempDir() + "rift_setup_" + name + "_" + std::to_string(::getpid()) + ".toml";
+    std::string toml = static_scene("grid:quad:3x3", "1.0", 1.0,
+                                    "[[interaction]]\nname = \"stretch\"\n"
+                                    "[implicit]\nnewton_iterations = 4\n" +
+                                        line_search + extra);
+    toml.replace(toml.find("\"rk4\""), 5, "\"implicit_euler\"");
+    std::ofstream(path) << toml;
+    const Scene scene = read_scene(path, standard_packs().catalog());
+    SetupReport report;
+    build_simulation(scene, standard_packs(), {}, &report);
+    std::remove(path.c_str());
+    return report.warnings;
+  };
+  const std::string load = "[[load]]\nacceleration = [0, 3, 0]\n";
+  EXPECT_EQ(implicit_warnings("implicit_load", load, ""),
+            (std::vector<std::string>{
+                "[implicit]: the Newton line search is on the residual |g|, not on the "
+                "incremental potential: the scene has loads or drag besides gravity"}));
+  // Springs and gravity alone have a potential: no note; nor when the scene
+  // asks for the residual search itself.
+  EXPECT_TRUE(implicit_warnings("implicit_springs", "", "").empty());
+  EXPECT_TRUE(implicit_warnings("implicit_residual", load, "line_search = \"residual\"\n").empty());
 }
 
 }  // namespace

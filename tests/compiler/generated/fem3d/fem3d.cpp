@@ -750,10 +750,12 @@ void CorotationalKernel::vertex_slots(const Match& m, rift::Slot* out) const {
   [[maybe_unused]] const rift::Mat3 l_rf = ((l_r).transpose() * l_f);
   [[maybe_unused]] const rift::Mat3 l_strain = ((0.5 * (l_rf + (l_rf).transpose())) - rift::Mat3::Identity());
   [[maybe_unused]] const rift::Mat3 l_rv = (((l_r).transpose() * (rift::Mat3() << (in.v[m.vertex_c1] - in.v[m.vertex_c0]), (in.v[m.vertex_c2] - in.v[m.vertex_c0]), (in.v[m.vertex_c3] - in.v[m.vertex_c0])).finished()) * l_b);
-  [[maybe_unused]] const rift::Mat3 l_e = (l_strain + ((0.5 * p_.damping) * (l_rv + (l_rv).transpose())));
+  const rift::Real s0 = (0.5 * p_.damping);
+  [[maybe_unused]] const rift::Mat3 l_e = (l_strain + (s0 * (l_rv + (l_rv).transpose())));
   [[maybe_unused]] const rift::Real l_mu = c.fem_mu[m.orbit012_c0];
   [[maybe_unused]] const rift::Real l_lambda = c.fem_lambda[m.orbit012_c0];
-  [[maybe_unused]] const rift::Mat3 l_stress = (((l_lambda * (l_e).trace()) * rift::Mat3::Identity()) + ((2.0 * l_mu) * l_e));
+  const rift::Real s1 = (2.0 * l_mu);
+  [[maybe_unused]] const rift::Mat3 l_stress = (((l_lambda * (l_e).trace()) * rift::Mat3::Identity()) + (s1 * l_e));
   [[maybe_unused]] const rift::Mat3 l_hm = ((-c.fem_volume[m.orbit012_c0]) * ((l_r * l_stress) * (l_b).transpose()));
   [[maybe_unused]] const rift::Vec3 l_f1 = rift::Vec3((l_hm)(0, 0), (l_hm)(1, 0), (l_hm)(2, 0));
   [[maybe_unused]] const rift::Vec3 l_f2 = rift::Vec3((l_hm)(0, 1), (l_hm)(1, 1), (l_hm)(2, 1));
@@ -766,19 +768,18 @@ void CorotationalKernel::vertex_slots(const Match& m, rift::Slot* out) const {
       tx[v].setZero();
     }
     tx[j][c3] = 1;
-    [[maybe_unused]] const rift::Mat3 t_l_f = rift::Mat3(((rift::Mat3() << (rift::Vec3((tx[0]) - (tx[1]))), (rift::Vec3((tx[2]) - (tx[1]))), (rift::Vec3((tx[3]) - (tx[1])))).finished()) * (l_b));
-    [[maybe_unused]] const rift::Mat3 t_l_rf = rift::Mat3((rift::Mat3((l_r).transpose())) * (t_l_f));
-    [[maybe_unused]] const rift::Mat3 t_l_strain = rift::Mat3(rift::Mat3((0.5) * (rift::Mat3((t_l_rf) + (rift::Mat3((t_l_rf).transpose()))))));
-    [[maybe_unused]] const rift::Mat3 t_l_e = rift::Mat3(t_l_strain);
-    [[maybe_unused]] const rift::Mat3 t_l_stress = rift::Mat3((rift::Mat3((rift::Real((l_lambda) * (rift::Real((t_l_e).trace())))) * (rift::Mat3(rift::Mat3::Identity())))) + (rift::Mat3(((2.0 * l_mu)) * (t_l_e))));
-    [[maybe_unused]] const rift::Mat3 t_l_hm = rift::Mat3(((-c.fem_volume[m.orbit012_c0])) * (rift::Mat3((rift::Mat3((l_r) * (t_l_stress))) * (rift::Mat3((l_b).transpose())))));
-    [[maybe_unused]] const rift::Vec3 t_l_f1 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{0}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{0}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{0}))));
-    [[maybe_unused]] const rift::Vec3 t_l_f2 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{1}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{1}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{1}))));
-    [[maybe_unused]] const rift::Vec3 t_l_f3 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{2}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{2}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{2}))));
-    dfdx[4 + j].col(c3) += rift::Vec3(rift::Vec3(-(rift::Vec3((rift::Vec3((t_l_f1) + (t_l_f2))) + (t_l_f3)))));
-    dfdx[0 + j].col(c3) += rift::Vec3(t_l_f1);
-    dfdx[8 + j].col(c3) += rift::Vec3(t_l_f2);
-    dfdx[12 + j].col(c3) += rift::Vec3(t_l_f3);
+    const rift::Mat3 t_l_f = ((rift::Mat3() << (tx[0] - tx[1]), (tx[2] - tx[1]), (tx[3] - tx[1])).finished() * l_b);
+    const rift::Mat3 t_l_rf = ((l_r).transpose() * t_l_f);
+    const rift::Mat3 t_l_strain = (0.5 * (t_l_rf + (t_l_rf).transpose()));
+    const rift::Mat3 t_l_stress = (((l_lambda * (t_l_strain).trace()) * rift::Mat3::Identity()) + (s1 * t_l_strain));
+    const rift::Mat3 t_l_hm = ((-c.fem_volume[m.orbit012_c0]) * ((l_r * t_l_stress) * (l_b).transpose()));
+    const rift::Vec3 t_l_f1 = rift::Vec3((t_l_hm)(0, 0), (t_l_hm)(1, 0), (t_l_hm)(2, 0));
+    const rift::Vec3 t_l_f2 = rift::Vec3((t_l_hm)(0, 1), (t_l_hm)(1, 1), (t_l_hm)(2, 1));
+    const rift::Vec3 t_l_f3 = rift::Vec3((t_l_hm)(0, 2), (t_l_hm)(1, 2), (t_l_hm)(2, 2));
+    dfdx[4 + j].col(c3) += (-((t_l_f1 + t_l_f2) + t_l_f3));
+    dfdx[0 + j].col(c3) += t_l_f1;
+    dfdx[8 + j].col(c3) += t_l_f2;
+    dfdx[12 + j].col(c3) += t_l_f3;
   }
   #pragma GCC unroll 12
   for (int dir = 0; dir < 12; ++dir) {
@@ -788,17 +789,17 @@ void CorotationalKernel::vertex_slots(const Match& m, rift::Slot* out) const {
       tv[v].setZero();
     }
     tv[j][c3] = 1;
-    [[maybe_unused]] const rift::Mat3 t_l_rv = rift::Mat3((rift::Mat3((rift::Mat3((l_r).transpose())) * ((rift::Mat3() << (rift::Vec3((tv[0]) - (tv[1]))), (rift::Vec3((tv[2]) - (tv[1]))), (rift::Vec3((tv[3]) - (tv[1])))).finished()))) * (l_b));
-    [[maybe_unused]] const rift::Mat3 t_l_e = rift::Mat3(rift::Mat3(((0.5 * p_.damping)) * (rift::Mat3((t_l_rv) + (rift::Mat3((t_l_rv).transpose()))))));
-    [[maybe_unused]] const rift::Mat3 t_l_stress = rift::Mat3((rift::Mat3((rift::Real((l_lambda) * (rift::Real((t_l_e).trace())))) * (rift::Mat3(rift::Mat3::Identity())))) + (rift::Mat3(((2.0 * l_mu)) * (t_l_e))));
-    [[maybe_unused]] const rift::Mat3 t_l_hm = rift::Mat3(((-c.fem_volume[m.orbit012_c0])) * (rift::Mat3((rift::Mat3((l_r) * (t_l_stress))) * (rift::Mat3((l_b).transpose())))));
-    [[maybe_unused]] const rift::Vec3 t_l_f1 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{0}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{0}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{0}))));
-    [[maybe_unused]] const rift::Vec3 t_l_f2 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{1}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{1}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{1}))));
-    [[maybe_unused]] const rift::Vec3 t_l_f3 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{2}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{2}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{2}))));
-    dfdv[4 + j].col(c3) += rift::Vec3(rift::Vec3(-(rift::Vec3((rift::Vec3((t_l_f1) + (t_l_f2))) + (t_l_f3)))));
-    dfdv[0 + j].col(c3) += rift::Vec3(t_l_f1);
-    dfdv[8 + j].col(c3) += rift::Vec3(t_l_f2);
-    dfdv[12 + j].col(c3) += rift::Vec3(t_l_f3);
+    const rift::Mat3 t_l_rv = (((l_r).transpose() * (rift::Mat3() << (tv[0] - tv[1]), (tv[2] - tv[1]), (tv[3] - tv[1])).finished()) * l_b);
+    const rift::Mat3 t_l_e = (s0 * (t_l_rv + (t_l_rv).transpose()));
+    const rift::Mat3 t_l_stress = (((l_lambda * (t_l_e).trace()) * rift::Mat3::Identity()) + (s1 * t_l_e));
+    const rift::Mat3 t_l_hm = ((-c.fem_volume[m.orbit012_c0]) * ((l_r * t_l_stress) * (l_b).transpose()));
+    const rift::Vec3 t_l_f1 = rift::Vec3((t_l_hm)(0, 0), (t_l_hm)(1, 0), (t_l_hm)(2, 0));
+    const rift::Vec3 t_l_f2 = rift::Vec3((t_l_hm)(0, 1), (t_l_hm)(1, 1), (t_l_hm)(2, 1));
+    const rift::Vec3 t_l_f3 = rift::Vec3((t_l_hm)(0, 2), (t_l_hm)(1, 2), (t_l_hm)(2, 2));
+    dfdv[4 + j].col(c3) += (-((t_l_f1 + t_l_f2) + t_l_f3));
+    dfdv[0 + j].col(c3) += t_l_f1;
+    dfdv[8 + j].col(c3) += t_l_f2;
+    dfdv[12 + j].col(c3) += t_l_f3;
   }
 }
 
@@ -810,30 +811,32 @@ void CorotationalKernel::vertex_slots(const Match& m, rift::Slot* out) const {
   [[maybe_unused]] const rift::Mat3 l_rf = ((l_r).transpose() * l_f);
   [[maybe_unused]] const rift::Mat3 l_strain = ((0.5 * (l_rf + (l_rf).transpose())) - rift::Mat3::Identity());
   [[maybe_unused]] const rift::Mat3 l_rv = (((l_r).transpose() * (rift::Mat3() << (in.v[m.vertex_c1] - in.v[m.vertex_c0]), (in.v[m.vertex_c2] - in.v[m.vertex_c0]), (in.v[m.vertex_c3] - in.v[m.vertex_c0])).finished()) * l_b);
-  [[maybe_unused]] const rift::Mat3 l_e = (l_strain + ((0.5 * p_.damping) * (l_rv + (l_rv).transpose())));
+  const rift::Real s0 = (0.5 * p_.damping);
+  [[maybe_unused]] const rift::Mat3 l_e = (l_strain + (s0 * (l_rv + (l_rv).transpose())));
   [[maybe_unused]] const rift::Real l_mu = c.fem_mu[m.orbit012_c0];
   [[maybe_unused]] const rift::Real l_lambda = c.fem_lambda[m.orbit012_c0];
-  [[maybe_unused]] const rift::Mat3 l_stress = (((l_lambda * (l_e).trace()) * rift::Mat3::Identity()) + ((2.0 * l_mu) * l_e));
+  const rift::Real s1 = (2.0 * l_mu);
+  [[maybe_unused]] const rift::Mat3 l_stress = (((l_lambda * (l_e).trace()) * rift::Mat3::Identity()) + (s1 * l_e));
   [[maybe_unused]] const rift::Mat3 l_hm = ((-c.fem_volume[m.orbit012_c0]) * ((l_r * l_stress) * (l_b).transpose()));
   [[maybe_unused]] const rift::Vec3 l_f1 = rift::Vec3((l_hm)(0, 0), (l_hm)(1, 0), (l_hm)(2, 0));
   [[maybe_unused]] const rift::Vec3 l_f2 = rift::Vec3((l_hm)(0, 1), (l_hm)(1, 1), (l_hm)(2, 1));
   [[maybe_unused]] const rift::Vec3 l_f3 = rift::Vec3((l_hm)(0, 2), (l_hm)(1, 2), (l_hm)(2, 2));
   [[maybe_unused]] const rift::Vec3 tx[4] = {px[m.vertex_c1], px[m.vertex_c0], px[m.vertex_c2], px[m.vertex_c3]};
   [[maybe_unused]] const rift::Vec3 tv[4] = {pv[m.vertex_c1], pv[m.vertex_c0], pv[m.vertex_c2], pv[m.vertex_c3]};
-  [[maybe_unused]] const rift::Mat3 t_l_f = rift::Mat3(((rift::Mat3() << (rift::Vec3((tx[0]) - (tx[1]))), (rift::Vec3((tx[2]) - (tx[1]))), (rift::Vec3((tx[3]) - (tx[1])))).finished()) * (l_b));
-  [[maybe_unused]] const rift::Mat3 t_l_rf = rift::Mat3((rift::Mat3((l_r).transpose())) * (t_l_f));
-  [[maybe_unused]] const rift::Mat3 t_l_strain = rift::Mat3(rift::Mat3((0.5) * (rift::Mat3((t_l_rf) + (rift::Mat3((t_l_rf).transpose()))))));
-  [[maybe_unused]] const rift::Mat3 t_l_rv = rift::Mat3((rift::Mat3((rift::Mat3((l_r).transpose())) * ((rift::Mat3() << (rift::Vec3((tv[0]) - (tv[1]))), (rift::Vec3((tv[2]) - (tv[1]))), (rift::Vec3((tv[3]) - (tv[1])))).finished()))) * (l_b));
-  [[maybe_unused]] const rift::Mat3 t_l_e = rift::Mat3((t_l_strain) + (rift::Mat3(((0.5 * p_.damping)) * (rift::Mat3((t_l_rv) + (rift::Mat3((t_l_rv).transpose())))))));
-  [[maybe_unused]] const rift::Mat3 t_l_stress = rift::Mat3((rift::Mat3((rift::Real((l_lambda) * (rift::Real((t_l_e).trace())))) * (rift::Mat3(rift::Mat3::Identity())))) + (rift::Mat3(((2.0 * l_mu)) * (t_l_e))));
-  [[maybe_unused]] const rift::Mat3 t_l_hm = rift::Mat3(((-c.fem_volume[m.orbit012_c0])) * (rift::Mat3((rift::Mat3((l_r) * (t_l_stress))) * (rift::Mat3((l_b).transpose())))));
-  [[maybe_unused]] const rift::Vec3 t_l_f1 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{0}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{0}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{0}))));
-  [[maybe_unused]] const rift::Vec3 t_l_f2 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{1}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{1}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{1}))));
-  [[maybe_unused]] const rift::Vec3 t_l_f3 = rift::Vec3(((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{0}), static_cast<Eigen::Index>(std::int64_t{2}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{1}), static_cast<Eigen::Index>(std::int64_t{2}))), ((t_l_hm)(static_cast<Eigen::Index>(std::int64_t{2}), static_cast<Eigen::Index>(std::int64_t{2}))));
-  out[m.vertex_c0] += rift::Vec3(rift::Vec3(-(rift::Vec3((rift::Vec3((t_l_f1) + (t_l_f2))) + (t_l_f3)))));
-  out[m.vertex_c1] += rift::Vec3(t_l_f1);
-  out[m.vertex_c2] += rift::Vec3(t_l_f2);
-  out[m.vertex_c3] += rift::Vec3(t_l_f3);
+  const rift::Mat3 t_l_f = ((rift::Mat3() << (tx[0] - tx[1]), (tx[2] - tx[1]), (tx[3] - tx[1])).finished() * l_b);
+  const rift::Mat3 t_l_rf = ((l_r).transpose() * t_l_f);
+  const rift::Mat3 t_l_strain = (0.5 * (t_l_rf + (t_l_rf).transpose()));
+  const rift::Mat3 t_l_rv = (((l_r).transpose() * (rift::Mat3() << (tv[0] - tv[1]), (tv[2] - tv[1]), (tv[3] - tv[1])).finished()) * l_b);
+  const rift::Mat3 t_l_e = (t_l_strain + (s0 * (t_l_rv + (t_l_rv).transpose())));
+  const rift::Mat3 t_l_stress = (((l_lambda * (t_l_e).trace()) * rift::Mat3::Identity()) + (s1 * t_l_e));
+  const rift::Mat3 t_l_hm = ((-c.fem_volume[m.orbit012_c0]) * ((l_r * t_l_stress) * (l_b).transpose()));
+  const rift::Vec3 t_l_f1 = rift::Vec3((t_l_hm)(0, 0), (t_l_hm)(1, 0), (t_l_hm)(2, 0));
+  const rift::Vec3 t_l_f2 = rift::Vec3((t_l_hm)(0, 1), (t_l_hm)(1, 1), (t_l_hm)(2, 1));
+  const rift::Vec3 t_l_f3 = rift::Vec3((t_l_hm)(0, 2), (t_l_hm)(1, 2), (t_l_hm)(2, 2));
+  out[m.vertex_c0] += (-((t_l_f1 + t_l_f2) + t_l_f3));
+  out[m.vertex_c1] += t_l_f1;
+  out[m.vertex_c2] += t_l_f2;
+  out[m.vertex_c3] += t_l_f3;
 }
 
 Pack::Pack(const Params& params) : params_(params), description_("Co-rotational FEM (Müller and Gross 2004) on the tetrahedra of 3D meshes.") {

@@ -556,7 +556,11 @@ void StretchKernel::vertex_slots(const Match& m, rift::Slot* out) const {
   [[maybe_unused]] const rift::Real l_l = (l_d).norm();
   if (!(l_l > 0.0)) return;
   [[maybe_unused]] const rift::Real l_inv = (1.0 / l_l);
-  [[maybe_unused]] const rift::Real l_t = ((c.stretch_k[m.orbit0_a] * (l_l - c.stretch_rest[m.orbit0_a])) + ((p_.damping * ((in.v[m.vertex_b] - in.v[m.vertex_a])).dot(l_d)) * l_inv));
+  const rift::Vec3 s0 = (in.v[m.vertex_b] - in.v[m.vertex_a]);
+  const rift::Real s1 = (p_.damping * (s0).dot(l_d));
+  [[maybe_unused]] const rift::Real l_t = ((c.stretch_k[m.orbit0_a] * (l_l - c.stretch_rest[m.orbit0_a])) + (s1 * l_inv));
+  const rift::Real s2 = (l_t * l_inv);
+  const rift::Real s3 = (-s2);
   #pragma GCC unroll 6
   for (int dir = 0; dir < 6; ++dir) {
     const int j = dir / 3, c3 = dir % 3;
@@ -565,12 +569,13 @@ void StretchKernel::vertex_slots(const Match& m, rift::Slot* out) const {
       tx[v].setZero();
     }
     tx[j][c3] = 1;
-    [[maybe_unused]] const rift::Vec3 t_l_d = rift::Vec3((tx[0]) - (tx[1]));
-    [[maybe_unused]] const rift::Real t_l_l = rift::Real((l_d).dot((t_l_d)) / (l_d).norm());
-    [[maybe_unused]] const rift::Real t_l_inv = rift::Real(-(1.0) * ((t_l_l) / ((l_l) * (l_l))));
-    [[maybe_unused]] const rift::Real t_l_t = rift::Real((rift::Real((c.stretch_k[m.orbit0_a]) * (rift::Real(t_l_l)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real(rift::Vec3(rift::Vec3::Zero()).dot(l_d) + (rift::Vec3(in.v[m.vertex_b] - in.v[m.vertex_a])).dot((t_l_d)))))) * (l_inv) + ((p_.damping * (rift::Vec3(in.v[m.vertex_b] - in.v[m.vertex_a])).dot(l_d))) * (t_l_inv))));
-    dfdx[2 + j].col(c3) += rift::Vec3(rift::Vec3((rift::Real((t_l_t) * (l_inv) + (l_t) * (t_l_inv))) * (l_d) + ((l_t * l_inv)) * (t_l_d)));
-    dfdx[0 + j].col(c3) += rift::Vec3(rift::Vec3((rift::Real(-(rift::Real((t_l_t) * (l_inv) + (l_t) * (t_l_inv))))) * (l_d) + ((-(l_t * l_inv))) * (t_l_d)));
+    const rift::Vec3 t_l_d = (tx[0] - tx[1]);
+    const rift::Real t_l_l = ((l_d).dot(t_l_d) / l_l);
+    const rift::Real t_l_inv = ((-(l_inv * t_l_l)) / l_l);
+    const rift::Real t_l_t = ((c.stretch_k[m.orbit0_a] * t_l_l) + (((p_.damping * (s0).dot(t_l_d)) * l_inv) + (s1 * t_l_inv)));
+    const rift::Real s4 = ((t_l_t * l_inv) + (l_t * t_l_inv));
+    dfdx[2 + j].col(c3) += ((s4 * l_d) + (s2 * t_l_d));
+    dfdx[0 + j].col(c3) += (((-s4) * l_d) + (s3 * t_l_d));
   }
   #pragma GCC unroll 6
   for (int dir = 0; dir < 6; ++dir) {
@@ -580,9 +585,10 @@ void StretchKernel::vertex_slots(const Match& m, rift::Slot* out) const {
       tv[v].setZero();
     }
     tv[j][c3] = 1;
-    [[maybe_unused]] const rift::Real t_l_t = rift::Real(rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[0]) - (tv[1]))).dot(l_d) + (rift::Vec3(in.v[m.vertex_b] - in.v[m.vertex_a])).dot(rift::Vec3(rift::Vec3::Zero())))))) * (l_inv)));
-    dfdv[2 + j].col(c3) += rift::Vec3(rift::Vec3((rift::Real((t_l_t) * (l_inv))) * (l_d)));
-    dfdv[0 + j].col(c3) += rift::Vec3(rift::Vec3((rift::Real(-(rift::Real((t_l_t) * (l_inv))))) * (l_d)));
+    const rift::Real t_l_t = ((p_.damping * ((tv[0] - tv[1])).dot(l_d)) * l_inv);
+    const rift::Real s5 = (t_l_t * l_inv);
+    dfdv[2 + j].col(c3) += (s5 * l_d);
+    dfdv[0 + j].col(c3) += ((-s5) * l_d);
   }
 }
 
@@ -592,15 +598,19 @@ void StretchKernel::vertex_slots(const Match& m, rift::Slot* out) const {
   [[maybe_unused]] const rift::Real l_l = (l_d).norm();
   if (!(l_l > 0.0)) return;
   [[maybe_unused]] const rift::Real l_inv = (1.0 / l_l);
-  [[maybe_unused]] const rift::Real l_t = ((c.stretch_k[m.orbit0_a] * (l_l - c.stretch_rest[m.orbit0_a])) + ((p_.damping * ((in.v[m.vertex_b] - in.v[m.vertex_a])).dot(l_d)) * l_inv));
+  const rift::Vec3 s0 = (in.v[m.vertex_b] - in.v[m.vertex_a]);
+  const rift::Real s1 = (p_.damping * (s0).dot(l_d));
+  [[maybe_unused]] const rift::Real l_t = ((c.stretch_k[m.orbit0_a] * (l_l - c.stretch_rest[m.orbit0_a])) + (s1 * l_inv));
   [[maybe_unused]] const rift::Vec3 tx[2] = {px[m.vertex_b], px[m.vertex_a]};
   [[maybe_unused]] const rift::Vec3 tv[2] = {pv[m.vertex_b], pv[m.vertex_a]};
-  [[maybe_unused]] const rift::Vec3 t_l_d = rift::Vec3((tx[0]) - (tx[1]));
-  [[maybe_unused]] const rift::Real t_l_l = rift::Real((l_d).dot((t_l_d)) / (l_d).norm());
-  [[maybe_unused]] const rift::Real t_l_inv = rift::Real(-(1.0) * ((t_l_l) / ((l_l) * (l_l))));
-  [[maybe_unused]] const rift::Real t_l_t = rift::Real((rift::Real((c.stretch_k[m.orbit0_a]) * (rift::Real(t_l_l)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[0]) - (tv[1]))).dot(l_d) + (rift::Vec3(in.v[m.vertex_b] - in.v[m.vertex_a])).dot((t_l_d)))))) * (l_inv) + ((p_.damping * (rift::Vec3(in.v[m.vertex_b] - in.v[m.vertex_a])).dot(l_d))) * (t_l_inv))));
-  out[m.vertex_a] += rift::Vec3(rift::Vec3((rift::Real((t_l_t) * (l_inv) + (l_t) * (t_l_inv))) * (l_d) + ((l_t * l_inv)) * (t_l_d)));
-  out[m.vertex_b] += rift::Vec3(rift::Vec3((rift::Real(-(rift::Real((t_l_t) * (l_inv) + (l_t) * (t_l_inv))))) * (l_d) + ((-(l_t * l_inv))) * (t_l_d)));
+  const rift::Vec3 t_l_d = (tx[0] - tx[1]);
+  const rift::Real t_l_l = ((l_d).dot(t_l_d) / l_l);
+  const rift::Real t_l_inv = ((-(l_inv * t_l_l)) / l_l);
+  const rift::Real t_l_t = ((c.stretch_k[m.orbit0_a] * t_l_l) + (((p_.damping * (((tv[0] - tv[1])).dot(l_d) + (s0).dot(t_l_d))) * l_inv) + (s1 * t_l_inv)));
+  const rift::Real s2 = ((t_l_t * l_inv) + (l_t * t_l_inv));
+  const rift::Real s3 = (l_t * l_inv);
+  out[m.vertex_a] += ((s2 * l_d) + (s3 * t_l_d));
+  out[m.vertex_b] += (((-s2) * l_d) + ((-s3) * t_l_d));
 }
 
 // ---- interaction 'shear'
@@ -825,12 +835,22 @@ void ShearKernel::vertex_slots(const Match& m, rift::Slot* out) const {
   [[maybe_unused]] const rift::Vec3 l_db = (in.x[m.vertex_c3] - in.x[m.vertex_c1]);
   [[maybe_unused]] const rift::Real l_la = (l_da).norm();
   [[maybe_unused]] const rift::Real l_lb = (l_db).norm();
-  [[maybe_unused]] const rift::Real l_ia = ((l_la > 0.0) ? (1.0 / l_la) : 0.0);
-  [[maybe_unused]] const rift::Real l_ib = ((l_lb > 0.0) ? (1.0 / l_lb) : 0.0);
-  [[maybe_unused]] const rift::Real l_ta = ((c.shear_k[m.orbit01_c0] * (l_la - c.shear_rest02[m.orbit01_c0])) + ((p_.damping * ((in.v[m.vertex_c2] - in.v[m.vertex_c0])).dot(l_da)) * l_ia));
-  [[maybe_unused]] const rift::Real l_tb = ((c.shear_k[m.orbit01_c0] * (l_lb - c.shear_rest13[m.orbit01_c0])) + ((p_.damping * ((in.v[m.vertex_c3] - in.v[m.vertex_c1])).dot(l_db)) * l_ib));
-  [[maybe_unused]] const rift::Vec3 l_fa = ((l_ta * l_ia) * l_da);
-  [[maybe_unused]] const rift::Vec3 l_fb = ((l_tb * l_ib) * l_db);
+  const bool s0 = (l_la > 0.0);
+  const rift::Real s1 = (1.0 / l_la);
+  [[maybe_unused]] const rift::Real l_ia = (s0 ? s1 : 0.0);
+  const bool s2 = (l_lb > 0.0);
+  const rift::Real s3 = (1.0 / l_lb);
+  [[maybe_unused]] const rift::Real l_ib = (s2 ? s3 : 0.0);
+  const rift::Vec3 s4 = (in.v[m.vertex_c2] - in.v[m.vertex_c0]);
+  const rift::Real s5 = (p_.damping * (s4).dot(l_da));
+  [[maybe_unused]] const rift::Real l_ta = ((c.shear_k[m.orbit01_c0] * (l_la - c.shear_rest02[m.orbit01_c0])) + (s5 * l_ia));
+  const rift::Vec3 s6 = (in.v[m.vertex_c3] - in.v[m.vertex_c1]);
+  const rift::Real s7 = (p_.damping * (s6).dot(l_db));
+  [[maybe_unused]] const rift::Real l_tb = ((c.shear_k[m.orbit01_c0] * (l_lb - c.shear_rest13[m.orbit01_c0])) + (s7 * l_ib));
+  const rift::Real s8 = (l_ta * l_ia);
+  [[maybe_unused]] const rift::Vec3 l_fa = (s8 * l_da);
+  const rift::Real s9 = (l_tb * l_ib);
+  [[maybe_unused]] const rift::Vec3 l_fb = (s9 * l_db);
   #pragma GCC unroll 12
   for (int dir = 0; dir < 12; ++dir) {
     const int j = dir / 3, c3 = dir % 3;
@@ -839,20 +859,20 @@ void ShearKernel::vertex_slots(const Match& m, rift::Slot* out) const {
       tx[v].setZero();
     }
     tx[j][c3] = 1;
-    [[maybe_unused]] const rift::Vec3 t_l_da = rift::Vec3((tx[0]) - (tx[1]));
-    [[maybe_unused]] const rift::Vec3 t_l_db = rift::Vec3((tx[2]) - (tx[3]));
-    [[maybe_unused]] const rift::Real t_l_la = rift::Real((l_da).dot((t_l_da)) / (l_da).norm());
-    [[maybe_unused]] const rift::Real t_l_lb = rift::Real((l_db).dot((t_l_db)) / (l_db).norm());
-    [[maybe_unused]] const rift::Real t_l_ia = ((l_la > 0.0) ? rift::Real((rift::Real(-(1.0) * ((t_l_la) / ((l_la) * (l_la)))))) : rift::Real(rift::Real(0)));
-    [[maybe_unused]] const rift::Real t_l_ib = ((l_lb > 0.0) ? rift::Real((rift::Real(-(1.0) * ((t_l_lb) / ((l_lb) * (l_lb)))))) : rift::Real(rift::Real(0)));
-    [[maybe_unused]] const rift::Real t_l_ta = rift::Real((rift::Real((c.shear_k[m.orbit01_c0]) * (rift::Real(t_l_la)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real(rift::Vec3(rift::Vec3::Zero()).dot(l_da) + (rift::Vec3(in.v[m.vertex_c2] - in.v[m.vertex_c0])).dot((t_l_da)))))) * (l_ia) + ((p_.damping * (rift::Vec3(in.v[m.vertex_c2] - in.v[m.vertex_c0])).dot(l_da))) * (t_l_ia))));
-    [[maybe_unused]] const rift::Real t_l_tb = rift::Real((rift::Real((c.shear_k[m.orbit01_c0]) * (rift::Real(t_l_lb)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real(rift::Vec3(rift::Vec3::Zero()).dot(l_db) + (rift::Vec3(in.v[m.vertex_c3] - in.v[m.vertex_c1])).dot((t_l_db)))))) * (l_ib) + ((p_.damping * (rift::Vec3(in.v[m.vertex_c3] - in.v[m.vertex_c1])).dot(l_db))) * (t_l_ib))));
-    [[maybe_unused]] const rift::Vec3 t_l_fa = rift::Vec3((rift::Real((t_l_ta) * (l_ia) + (l_ta) * (t_l_ia))) * (l_da) + ((l_ta * l_ia)) * (t_l_da));
-    [[maybe_unused]] const rift::Vec3 t_l_fb = rift::Vec3((rift::Real((t_l_tb) * (l_ib) + (l_tb) * (t_l_ib))) * (l_db) + ((l_tb * l_ib)) * (t_l_db));
-    dfdx[4 + j].col(c3) += rift::Vec3(t_l_fa);
-    dfdx[0 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_fa)));
-    dfdx[12 + j].col(c3) += rift::Vec3(t_l_fb);
-    dfdx[8 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_fb)));
+    const rift::Vec3 t_l_da = (tx[0] - tx[1]);
+    const rift::Vec3 t_l_db = (tx[2] - tx[3]);
+    const rift::Real t_l_la = ((l_da).dot(t_l_da) / l_la);
+    const rift::Real t_l_lb = ((l_db).dot(t_l_db) / l_lb);
+    const rift::Real t_l_ia = (s0 ? ((-(s1 * t_l_la)) / l_la) : 0.0);
+    const rift::Real t_l_ib = (s2 ? ((-(s3 * t_l_lb)) / l_lb) : 0.0);
+    const rift::Real t_l_ta = ((c.shear_k[m.orbit01_c0] * t_l_la) + (((p_.damping * (s4).dot(t_l_da)) * l_ia) + (s5 * t_l_ia)));
+    const rift::Real t_l_tb = ((c.shear_k[m.orbit01_c0] * t_l_lb) + (((p_.damping * (s6).dot(t_l_db)) * l_ib) + (s7 * t_l_ib)));
+    const rift::Vec3 t_l_fa = ((((t_l_ta * l_ia) + (l_ta * t_l_ia)) * l_da) + (s8 * t_l_da));
+    const rift::Vec3 t_l_fb = ((((t_l_tb * l_ib) + (l_tb * t_l_ib)) * l_db) + (s9 * t_l_db));
+    dfdx[4 + j].col(c3) += t_l_fa;
+    dfdx[0 + j].col(c3) += (-t_l_fa);
+    dfdx[12 + j].col(c3) += t_l_fb;
+    dfdx[8 + j].col(c3) += (-t_l_fb);
   }
   #pragma GCC unroll 12
   for (int dir = 0; dir < 12; ++dir) {
@@ -862,14 +882,14 @@ void ShearKernel::vertex_slots(const Match& m, rift::Slot* out) const {
       tv[v].setZero();
     }
     tv[j][c3] = 1;
-    [[maybe_unused]] const rift::Real t_l_ta = rift::Real(rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[0]) - (tv[1]))).dot(l_da) + (rift::Vec3(in.v[m.vertex_c2] - in.v[m.vertex_c0])).dot(rift::Vec3(rift::Vec3::Zero())))))) * (l_ia)));
-    [[maybe_unused]] const rift::Real t_l_tb = rift::Real(rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[2]) - (tv[3]))).dot(l_db) + (rift::Vec3(in.v[m.vertex_c3] - in.v[m.vertex_c1])).dot(rift::Vec3(rift::Vec3::Zero())))))) * (l_ib)));
-    [[maybe_unused]] const rift::Vec3 t_l_fa = rift::Vec3((rift::Real((t_l_ta) * (l_ia))) * (l_da));
-    [[maybe_unused]] const rift::Vec3 t_l_fb = rift::Vec3((rift::Real((t_l_tb) * (l_ib))) * (l_db));
-    dfdv[4 + j].col(c3) += rift::Vec3(t_l_fa);
-    dfdv[0 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_fa)));
-    dfdv[12 + j].col(c3) += rift::Vec3(t_l_fb);
-    dfdv[8 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_fb)));
+    const rift::Real t_l_ta = ((p_.damping * ((tv[0] - tv[1])).dot(l_da)) * l_ia);
+    const rift::Real t_l_tb = ((p_.damping * ((tv[2] - tv[3])).dot(l_db)) * l_ib);
+    const rift::Vec3 t_l_fa = ((t_l_ta * l_ia) * l_da);
+    const rift::Vec3 t_l_fb = ((t_l_tb * l_ib) * l_db);
+    dfdv[4 + j].col(c3) += t_l_fa;
+    dfdv[0 + j].col(c3) += (-t_l_fa);
+    dfdv[12 + j].col(c3) += t_l_fb;
+    dfdv[8 + j].col(c3) += (-t_l_fb);
   }
 }
 
@@ -879,28 +899,38 @@ void ShearKernel::vertex_slots(const Match& m, rift::Slot* out) const {
   [[maybe_unused]] const rift::Vec3 l_db = (in.x[m.vertex_c3] - in.x[m.vertex_c1]);
   [[maybe_unused]] const rift::Real l_la = (l_da).norm();
   [[maybe_unused]] const rift::Real l_lb = (l_db).norm();
-  [[maybe_unused]] const rift::Real l_ia = ((l_la > 0.0) ? (1.0 / l_la) : 0.0);
-  [[maybe_unused]] const rift::Real l_ib = ((l_lb > 0.0) ? (1.0 / l_lb) : 0.0);
-  [[maybe_unused]] const rift::Real l_ta = ((c.shear_k[m.orbit01_c0] * (l_la - c.shear_rest02[m.orbit01_c0])) + ((p_.damping * ((in.v[m.vertex_c2] - in.v[m.vertex_c0])).dot(l_da)) * l_ia));
-  [[maybe_unused]] const rift::Real l_tb = ((c.shear_k[m.orbit01_c0] * (l_lb - c.shear_rest13[m.orbit01_c0])) + ((p_.damping * ((in.v[m.vertex_c3] - in.v[m.vertex_c1])).dot(l_db)) * l_ib));
-  [[maybe_unused]] const rift::Vec3 l_fa = ((l_ta * l_ia) * l_da);
-  [[maybe_unused]] const rift::Vec3 l_fb = ((l_tb * l_ib) * l_db);
+  const bool s0 = (l_la > 0.0);
+  const rift::Real s1 = (1.0 / l_la);
+  [[maybe_unused]] const rift::Real l_ia = (s0 ? s1 : 0.0);
+  const bool s2 = (l_lb > 0.0);
+  const rift::Real s3 = (1.0 / l_lb);
+  [[maybe_unused]] const rift::Real l_ib = (s2 ? s3 : 0.0);
+  const rift::Vec3 s4 = (in.v[m.vertex_c2] - in.v[m.vertex_c0]);
+  const rift::Real s5 = (p_.damping * (s4).dot(l_da));
+  [[maybe_unused]] const rift::Real l_ta = ((c.shear_k[m.orbit01_c0] * (l_la - c.shear_rest02[m.orbit01_c0])) + (s5 * l_ia));
+  const rift::Vec3 s6 = (in.v[m.vertex_c3] - in.v[m.vertex_c1]);
+  const rift::Real s7 = (p_.damping * (s6).dot(l_db));
+  [[maybe_unused]] const rift::Real l_tb = ((c.shear_k[m.orbit01_c0] * (l_lb - c.shear_rest13[m.orbit01_c0])) + (s7 * l_ib));
+  const rift::Real s8 = (l_ta * l_ia);
+  [[maybe_unused]] const rift::Vec3 l_fa = (s8 * l_da);
+  const rift::Real s9 = (l_tb * l_ib);
+  [[maybe_unused]] const rift::Vec3 l_fb = (s9 * l_db);
   [[maybe_unused]] const rift::Vec3 tx[4] = {px[m.vertex_c2], px[m.vertex_c0], px[m.vertex_c3], px[m.vertex_c1]};
   [[maybe_unused]] const rift::Vec3 tv[4] = {pv[m.vertex_c2], pv[m.vertex_c0], pv[m.vertex_c3], pv[m.vertex_c1]};
-  [[maybe_unused]] const rift::Vec3 t_l_da = rift::Vec3((tx[0]) - (tx[1]));
-  [[maybe_unused]] const rift::Vec3 t_l_db = rift::Vec3((tx[2]) - (tx[3]));
-  [[maybe_unused]] const rift::Real t_l_la = rift::Real((l_da).dot((t_l_da)) / (l_da).norm());
-  [[maybe_unused]] const rift::Real t_l_lb = rift::Real((l_db).dot((t_l_db)) / (l_db).norm());
-  [[maybe_unused]] const rift::Real t_l_ia = ((l_la > 0.0) ? rift::Real((rift::Real(-(1.0) * ((t_l_la) / ((l_la) * (l_la)))))) : rift::Real(rift::Real(0)));
-  [[maybe_unused]] const rift::Real t_l_ib = ((l_lb > 0.0) ? rift::Real((rift::Real(-(1.0) * ((t_l_lb) / ((l_lb) * (l_lb)))))) : rift::Real(rift::Real(0)));
-  [[maybe_unused]] const rift::Real t_l_ta = rift::Real((rift::Real((c.shear_k[m.orbit01_c0]) * (rift::Real(t_l_la)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[0]) - (tv[1]))).dot(l_da) + (rift::Vec3(in.v[m.vertex_c2] - in.v[m.vertex_c0])).dot((t_l_da)))))) * (l_ia) + ((p_.damping * (rift::Vec3(in.v[m.vertex_c2] - in.v[m.vertex_c0])).dot(l_da))) * (t_l_ia))));
-  [[maybe_unused]] const rift::Real t_l_tb = rift::Real((rift::Real((c.shear_k[m.orbit01_c0]) * (rift::Real(t_l_lb)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[2]) - (tv[3]))).dot(l_db) + (rift::Vec3(in.v[m.vertex_c3] - in.v[m.vertex_c1])).dot((t_l_db)))))) * (l_ib) + ((p_.damping * (rift::Vec3(in.v[m.vertex_c3] - in.v[m.vertex_c1])).dot(l_db))) * (t_l_ib))));
-  [[maybe_unused]] const rift::Vec3 t_l_fa = rift::Vec3((rift::Real((t_l_ta) * (l_ia) + (l_ta) * (t_l_ia))) * (l_da) + ((l_ta * l_ia)) * (t_l_da));
-  [[maybe_unused]] const rift::Vec3 t_l_fb = rift::Vec3((rift::Real((t_l_tb) * (l_ib) + (l_tb) * (t_l_ib))) * (l_db) + ((l_tb * l_ib)) * (t_l_db));
-  out[m.vertex_c0] += rift::Vec3(t_l_fa);
-  out[m.vertex_c2] += rift::Vec3(rift::Vec3(-(t_l_fa)));
-  out[m.vertex_c1] += rift::Vec3(t_l_fb);
-  out[m.vertex_c3] += rift::Vec3(rift::Vec3(-(t_l_fb)));
+  const rift::Vec3 t_l_da = (tx[0] - tx[1]);
+  const rift::Vec3 t_l_db = (tx[2] - tx[3]);
+  const rift::Real t_l_la = ((l_da).dot(t_l_da) / l_la);
+  const rift::Real t_l_lb = ((l_db).dot(t_l_db) / l_lb);
+  const rift::Real t_l_ia = (s0 ? ((-(s1 * t_l_la)) / l_la) : 0.0);
+  const rift::Real t_l_ib = (s2 ? ((-(s3 * t_l_lb)) / l_lb) : 0.0);
+  const rift::Real t_l_ta = ((c.shear_k[m.orbit01_c0] * t_l_la) + (((p_.damping * (((tv[0] - tv[1])).dot(l_da) + (s4).dot(t_l_da))) * l_ia) + (s5 * t_l_ia)));
+  const rift::Real t_l_tb = ((c.shear_k[m.orbit01_c0] * t_l_lb) + (((p_.damping * (((tv[2] - tv[3])).dot(l_db) + (s6).dot(t_l_db))) * l_ib) + (s7 * t_l_ib)));
+  const rift::Vec3 t_l_fa = ((((t_l_ta * l_ia) + (l_ta * t_l_ia)) * l_da) + (s8 * t_l_da));
+  const rift::Vec3 t_l_fb = ((((t_l_tb * l_ib) + (l_tb * t_l_ib)) * l_db) + (s9 * t_l_db));
+  out[m.vertex_c0] += t_l_fa;
+  out[m.vertex_c2] += (-t_l_fa);
+  out[m.vertex_c1] += t_l_fb;
+  out[m.vertex_c3] += (-t_l_fb);
 }
 
 // ---- interaction 'volume_shear'
@@ -2411,14 +2441,38 @@ void VolumeShearKernel::vertex_slots(const Match& m, rift::Slot* out) const {
   [[maybe_unused]] const rift::Real l_l1 = (l_d1).norm();
   [[maybe_unused]] const rift::Real l_l2 = (l_d2).norm();
   [[maybe_unused]] const rift::Real l_l3 = (l_d3).norm();
-  [[maybe_unused]] const rift::Real l_i0 = ((l_l0 > 0.0) ? (1.0 / l_l0) : 0.0);
-  [[maybe_unused]] const rift::Real l_i1 = ((l_l1 > 0.0) ? (1.0 / l_l1) : 0.0);
-  [[maybe_unused]] const rift::Real l_i2 = ((l_l2 > 0.0) ? (1.0 / l_l2) : 0.0);
-  [[maybe_unused]] const rift::Real l_i3 = ((l_l3 > 0.0) ? (1.0 / l_l3) : 0.0);
-  [[maybe_unused]] const rift::Vec3 l_g0 = ((((l_k * (l_l0 - c.vshear_rest0[m.orbit012_b0])) + ((p_.damping * ((in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(l_d0)) * l_i0)) * l_i0) * l_d0);
-  [[maybe_unused]] const rift::Vec3 l_g1 = ((((l_k * (l_l1 - c.vshear_rest1[m.orbit012_b0])) + ((p_.damping * ((in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(l_d1)) * l_i1)) * l_i1) * l_d1);
-  [[maybe_unused]] const rift::Vec3 l_g2 = ((((l_k * (l_l2 - c.vshear_rest2[m.orbit012_b0])) + ((p_.damping * ((in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(l_d2)) * l_i2)) * l_i2) * l_d2);
-  [[maybe_unused]] const rift::Vec3 l_g3 = ((((l_k * (l_l3 - c.vshear_rest3[m.orbit012_b0])) + ((p_.damping * ((in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(l_d3)) * l_i3)) * l_i3) * l_d3);
+  const bool s0 = (l_l0 > 0.0);
+  const rift::Real s1 = (1.0 / l_l0);
+  [[maybe_unused]] const rift::Real l_i0 = (s0 ? s1 : 0.0);
+  const bool s2 = (l_l1 > 0.0);
+  const rift::Real s3 = (1.0 / l_l1);
+  [[maybe_unused]] const rift::Real l_i1 = (s2 ? s3 : 0.0);
+  const bool s4 = (l_l2 > 0.0);
+  const rift::Real s5 = (1.0 / l_l2);
+  [[maybe_unused]] const rift::Real l_i2 = (s4 ? s5 : 0.0);
+  const bool s6 = (l_l3 > 0.0);
+  const rift::Real s7 = (1.0 / l_l3);
+  [[maybe_unused]] const rift::Real l_i3 = (s6 ? s7 : 0.0);
+  const rift::Vec3 s8 = (in.v[m.vertex_s22] - in.v[m.vertex_b0]);
+  const rift::Real s9 = (p_.damping * (s8).dot(l_d0));
+  const rift::Real s10 = ((l_k * (l_l0 - c.vshear_rest0[m.orbit012_b0])) + (s9 * l_i0));
+  const rift::Real s11 = (s10 * l_i0);
+  [[maybe_unused]] const rift::Vec3 l_g0 = (s11 * l_d0);
+  const rift::Vec3 s12 = (in.v[m.vertex_s32] - in.v[m.vertex_b2]);
+  const rift::Real s13 = (p_.damping * (s12).dot(l_d1));
+  const rift::Real s14 = ((l_k * (l_l1 - c.vshear_rest1[m.orbit012_b0])) + (s13 * l_i1));
+  const rift::Real s15 = (s14 * l_i1);
+  [[maybe_unused]] const rift::Vec3 l_g1 = (s15 * l_d1);
+  const rift::Vec3 s16 = (in.v[m.vertex_s02] - in.v[m.vertex_b4]);
+  const rift::Real s17 = (p_.damping * (s16).dot(l_d2));
+  const rift::Real s18 = ((l_k * (l_l2 - c.vshear_rest2[m.orbit012_b0])) + (s17 * l_i2));
+  const rift::Real s19 = (s18 * l_i2);
+  [[maybe_unused]] const rift::Vec3 l_g2 = (s19 * l_d2);
+  const rift::Vec3 s20 = (in.v[m.vertex_s12] - in.v[m.vertex_b6]);
+  const rift::Real s21 = (p_.damping * (s20).dot(l_d3));
+  const rift::Real s22 = ((l_k * (l_l3 - c.vshear_rest3[m.orbit012_b0])) + (s21 * l_i3));
+  const rift::Real s23 = (s22 * l_i3);
+  [[maybe_unused]] const rift::Vec3 l_g3 = (s23 * l_d3);
   #pragma GCC unroll 24
   for (int dir = 0; dir < 24; ++dir) {
     const int j = dir / 3, c3 = dir % 3;
@@ -2427,30 +2481,30 @@ void VolumeShearKernel::vertex_slots(const Match& m, rift::Slot* out) const {
       tx[v].setZero();
     }
     tx[j][c3] = 1;
-    [[maybe_unused]] const rift::Vec3 t_l_d0 = rift::Vec3((tx[0]) - (tx[1]));
-    [[maybe_unused]] const rift::Vec3 t_l_d1 = rift::Vec3((tx[2]) - (tx[3]));
-    [[maybe_unused]] const rift::Vec3 t_l_d2 = rift::Vec3((tx[4]) - (tx[5]));
-    [[maybe_unused]] const rift::Vec3 t_l_d3 = rift::Vec3((tx[6]) - (tx[7]));
-    [[maybe_unused]] const rift::Real t_l_l0 = rift::Real((l_d0).dot((t_l_d0)) / (l_d0).norm());
-    [[maybe_unused]] const rift::Real t_l_l1 = rift::Real((l_d1).dot((t_l_d1)) / (l_d1).norm());
-    [[maybe_unused]] const rift::Real t_l_l2 = rift::Real((l_d2).dot((t_l_d2)) / (l_d2).norm());
-    [[maybe_unused]] const rift::Real t_l_l3 = rift::Real((l_d3).dot((t_l_d3)) / (l_d3).norm());
-    [[maybe_unused]] const rift::Real t_l_i0 = ((l_l0 > 0.0) ? rift::Real((rift::Real(-(1.0) * ((t_l_l0) / ((l_l0) * (l_l0)))))) : rift::Real(rift::Real(0)));
-    [[maybe_unused]] const rift::Real t_l_i1 = ((l_l1 > 0.0) ? rift::Real((rift::Real(-(1.0) * ((t_l_l1) / ((l_l1) * (l_l1)))))) : rift::Real(rift::Real(0)));
-    [[maybe_unused]] const rift::Real t_l_i2 = ((l_l2 > 0.0) ? rift::Real((rift::Real(-(1.0) * ((t_l_l2) / ((l_l2) * (l_l2)))))) : rift::Real(rift::Real(0)));
-    [[maybe_unused]] const rift::Real t_l_i3 = ((l_l3 > 0.0) ? rift::Real((rift::Real(-(1.0) * ((t_l_l3) / ((l_l3) * (l_l3)))))) : rift::Real(rift::Real(0)));
-    [[maybe_unused]] const rift::Vec3 t_l_g0 = rift::Vec3((rift::Real((rift::Real((rift::Real((l_k) * (rift::Real(t_l_l0)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real(rift::Vec3(rift::Vec3::Zero()).dot(l_d0) + (rift::Vec3(in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot((t_l_d0)))))) * (l_i0) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(l_d0))) * (t_l_i0))))) * (l_i0) + (((l_k * (l_l0 - c.vshear_rest0[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(l_d0)) * l_i0))) * (t_l_i0))) * (l_d0) + ((((l_k * (l_l0 - c.vshear_rest0[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(l_d0)) * l_i0)) * l_i0)) * (t_l_d0));
-    [[maybe_unused]] const rift::Vec3 t_l_g1 = rift::Vec3((rift::Real((rift::Real((rift::Real((l_k) * (rift::Real(t_l_l1)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real(rift::Vec3(rift::Vec3::Zero()).dot(l_d1) + (rift::Vec3(in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot((t_l_d1)))))) * (l_i1) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(l_d1))) * (t_l_i1))))) * (l_i1) + (((l_k * (l_l1 - c.vshear_rest1[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(l_d1)) * l_i1))) * (t_l_i1))) * (l_d1) + ((((l_k * (l_l1 - c.vshear_rest1[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(l_d1)) * l_i1)) * l_i1)) * (t_l_d1));
-    [[maybe_unused]] const rift::Vec3 t_l_g2 = rift::Vec3((rift::Real((rift::Real((rift::Real((l_k) * (rift::Real(t_l_l2)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real(rift::Vec3(rift::Vec3::Zero()).dot(l_d2) + (rift::Vec3(in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot((t_l_d2)))))) * (l_i2) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(l_d2))) * (t_l_i2))))) * (l_i2) + (((l_k * (l_l2 - c.vshear_rest2[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(l_d2)) * l_i2))) * (t_l_i2))) * (l_d2) + ((((l_k * (l_l2 - c.vshear_rest2[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(l_d2)) * l_i2)) * l_i2)) * (t_l_d2));
-    [[maybe_unused]] const rift::Vec3 t_l_g3 = rift::Vec3((rift::Real((rift::Real((rift::Real((l_k) * (rift::Real(t_l_l3)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real(rift::Vec3(rift::Vec3::Zero()).dot(l_d3) + (rift::Vec3(in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot((t_l_d3)))))) * (l_i3) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(l_d3))) * (t_l_i3))))) * (l_i3) + (((l_k * (l_l3 - c.vshear_rest3[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(l_d3)) * l_i3))) * (t_l_i3))) * (l_d3) + ((((l_k * (l_l3 - c.vshear_rest3[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(l_d3)) * l_i3)) * l_i3)) * (t_l_d3));
-    dfdx[8 + j].col(c3) += rift::Vec3(t_l_g0);
-    dfdx[0 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g0)));
-    dfdx[24 + j].col(c3) += rift::Vec3(t_l_g1);
-    dfdx[16 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g1)));
-    dfdx[40 + j].col(c3) += rift::Vec3(t_l_g2);
-    dfdx[32 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g2)));
-    dfdx[56 + j].col(c3) += rift::Vec3(t_l_g3);
-    dfdx[48 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g3)));
+    const rift::Vec3 t_l_d0 = (tx[0] - tx[1]);
+    const rift::Vec3 t_l_d1 = (tx[2] - tx[3]);
+    const rift::Vec3 t_l_d2 = (tx[4] - tx[5]);
+    const rift::Vec3 t_l_d3 = (tx[6] - tx[7]);
+    const rift::Real t_l_l0 = ((l_d0).dot(t_l_d0) / l_l0);
+    const rift::Real t_l_l1 = ((l_d1).dot(t_l_d1) / l_l1);
+    const rift::Real t_l_l2 = ((l_d2).dot(t_l_d2) / l_l2);
+    const rift::Real t_l_l3 = ((l_d3).dot(t_l_d3) / l_l3);
+    const rift::Real t_l_i0 = (s0 ? ((-(s1 * t_l_l0)) / l_l0) : 0.0);
+    const rift::Real t_l_i1 = (s2 ? ((-(s3 * t_l_l1)) / l_l1) : 0.0);
+    const rift::Real t_l_i2 = (s4 ? ((-(s5 * t_l_l2)) / l_l2) : 0.0);
+    const rift::Real t_l_i3 = (s6 ? ((-(s7 * t_l_l3)) / l_l3) : 0.0);
+    const rift::Vec3 t_l_g0 = ((((((l_k * t_l_l0) + (((p_.damping * (s8).dot(t_l_d0)) * l_i0) + (s9 * t_l_i0))) * l_i0) + (s10 * t_l_i0)) * l_d0) + (s11 * t_l_d0));
+    const rift::Vec3 t_l_g1 = ((((((l_k * t_l_l1) + (((p_.damping * (s12).dot(t_l_d1)) * l_i1) + (s13 * t_l_i1))) * l_i1) + (s14 * t_l_i1)) * l_d1) + (s15 * t_l_d1));
+    const rift::Vec3 t_l_g2 = ((((((l_k * t_l_l2) + (((p_.damping * (s16).dot(t_l_d2)) * l_i2) + (s17 * t_l_i2))) * l_i2) + (s18 * t_l_i2)) * l_d2) + (s19 * t_l_d2));
+    const rift::Vec3 t_l_g3 = ((((((l_k * t_l_l3) + (((p_.damping * (s20).dot(t_l_d3)) * l_i3) + (s21 * t_l_i3))) * l_i3) + (s22 * t_l_i3)) * l_d3) + (s23 * t_l_d3));
+    dfdx[8 + j].col(c3) += t_l_g0;
+    dfdx[0 + j].col(c3) += (-t_l_g0);
+    dfdx[24 + j].col(c3) += t_l_g1;
+    dfdx[16 + j].col(c3) += (-t_l_g1);
+    dfdx[40 + j].col(c3) += t_l_g2;
+    dfdx[32 + j].col(c3) += (-t_l_g2);
+    dfdx[56 + j].col(c3) += t_l_g3;
+    dfdx[48 + j].col(c3) += (-t_l_g3);
   }
   #pragma GCC unroll 24
   for (int dir = 0; dir < 24; ++dir) {
@@ -2460,18 +2514,18 @@ void VolumeShearKernel::vertex_slots(const Match& m, rift::Slot* out) const {
       tv[v].setZero();
     }
     tv[j][c3] = 1;
-    [[maybe_unused]] const rift::Vec3 t_l_g0 = rift::Vec3((rift::Real((rift::Real(rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[0]) - (tv[1]))).dot(l_d0) + (rift::Vec3(in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(rift::Vec3(rift::Vec3::Zero())))))) * (l_i0)))) * (l_i0))) * (l_d0));
-    [[maybe_unused]] const rift::Vec3 t_l_g1 = rift::Vec3((rift::Real((rift::Real(rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[2]) - (tv[3]))).dot(l_d1) + (rift::Vec3(in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(rift::Vec3(rift::Vec3::Zero())))))) * (l_i1)))) * (l_i1))) * (l_d1));
-    [[maybe_unused]] const rift::Vec3 t_l_g2 = rift::Vec3((rift::Real((rift::Real(rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[4]) - (tv[5]))).dot(l_d2) + (rift::Vec3(in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(rift::Vec3(rift::Vec3::Zero())))))) * (l_i2)))) * (l_i2))) * (l_d2));
-    [[maybe_unused]] const rift::Vec3 t_l_g3 = rift::Vec3((rift::Real((rift::Real(rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[6]) - (tv[7]))).dot(l_d3) + (rift::Vec3(in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(rift::Vec3(rift::Vec3::Zero())))))) * (l_i3)))) * (l_i3))) * (l_d3));
-    dfdv[8 + j].col(c3) += rift::Vec3(t_l_g0);
-    dfdv[0 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g0)));
-    dfdv[24 + j].col(c3) += rift::Vec3(t_l_g1);
-    dfdv[16 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g1)));
-    dfdv[40 + j].col(c3) += rift::Vec3(t_l_g2);
-    dfdv[32 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g2)));
-    dfdv[56 + j].col(c3) += rift::Vec3(t_l_g3);
-    dfdv[48 + j].col(c3) += rift::Vec3(rift::Vec3(-(t_l_g3)));
+    const rift::Vec3 t_l_g0 = ((((p_.damping * ((tv[0] - tv[1])).dot(l_d0)) * l_i0) * l_i0) * l_d0);
+    const rift::Vec3 t_l_g1 = ((((p_.damping * ((tv[2] - tv[3])).dot(l_d1)) * l_i1) * l_i1) * l_d1);
+    const rift::Vec3 t_l_g2 = ((((p_.damping * ((tv[4] - tv[5])).dot(l_d2)) * l_i2) * l_i2) * l_d2);
+    const rift::Vec3 t_l_g3 = ((((p_.damping * ((tv[6] - tv[7])).dot(l_d3)) * l_i3) * l_i3) * l_d3);
+    dfdv[8 + j].col(c3) += t_l_g0;
+    dfdv[0 + j].col(c3) += (-t_l_g0);
+    dfdv[24 + j].col(c3) += t_l_g1;
+    dfdv[16 + j].col(c3) += (-t_l_g1);
+    dfdv[40 + j].col(c3) += t_l_g2;
+    dfdv[32 + j].col(c3) += (-t_l_g2);
+    dfdv[56 + j].col(c3) += t_l_g3;
+    dfdv[48 + j].col(c3) += (-t_l_g3);
   }
 }
 
@@ -2486,40 +2540,64 @@ void VolumeShearKernel::vertex_slots(const Match& m, rift::Slot* out) const {
   [[maybe_unused]] const rift::Real l_l1 = (l_d1).norm();
   [[maybe_unused]] const rift::Real l_l2 = (l_d2).norm();
   [[maybe_unused]] const rift::Real l_l3 = (l_d3).norm();
-  [[maybe_unused]] const rift::Real l_i0 = ((l_l0 > 0.0) ? (1.0 / l_l0) : 0.0);
-  [[maybe_unused]] const rift::Real l_i1 = ((l_l1 > 0.0) ? (1.0 / l_l1) : 0.0);
-  [[maybe_unused]] const rift::Real l_i2 = ((l_l2 > 0.0) ? (1.0 / l_l2) : 0.0);
-  [[maybe_unused]] const rift::Real l_i3 = ((l_l3 > 0.0) ? (1.0 / l_l3) : 0.0);
-  [[maybe_unused]] const rift::Vec3 l_g0 = ((((l_k * (l_l0 - c.vshear_rest0[m.orbit012_b0])) + ((p_.damping * ((in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(l_d0)) * l_i0)) * l_i0) * l_d0);
-  [[maybe_unused]] const rift::Vec3 l_g1 = ((((l_k * (l_l1 - c.vshear_rest1[m.orbit012_b0])) + ((p_.damping * ((in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(l_d1)) * l_i1)) * l_i1) * l_d1);
-  [[maybe_unused]] const rift::Vec3 l_g2 = ((((l_k * (l_l2 - c.vshear_rest2[m.orbit012_b0])) + ((p_.damping * ((in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(l_d2)) * l_i2)) * l_i2) * l_d2);
-  [[maybe_unused]] const rift::Vec3 l_g3 = ((((l_k * (l_l3 - c.vshear_rest3[m.orbit012_b0])) + ((p_.damping * ((in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(l_d3)) * l_i3)) * l_i3) * l_d3);
+  const bool s0 = (l_l0 > 0.0);
+  const rift::Real s1 = (1.0 / l_l0);
+  [[maybe_unused]] const rift::Real l_i0 = (s0 ? s1 : 0.0);
+  const bool s2 = (l_l1 > 0.0);
+  const rift::Real s3 = (1.0 / l_l1);
+  [[maybe_unused]] const rift::Real l_i1 = (s2 ? s3 : 0.0);
+  const bool s4 = (l_l2 > 0.0);
+  const rift::Real s5 = (1.0 / l_l2);
+  [[maybe_unused]] const rift::Real l_i2 = (s4 ? s5 : 0.0);
+  const bool s6 = (l_l3 > 0.0);
+  const rift::Real s7 = (1.0 / l_l3);
+  [[maybe_unused]] const rift::Real l_i3 = (s6 ? s7 : 0.0);
+  const rift::Vec3 s8 = (in.v[m.vertex_s22] - in.v[m.vertex_b0]);
+  const rift::Real s9 = (p_.damping * (s8).dot(l_d0));
+  const rift::Real s10 = ((l_k * (l_l0 - c.vshear_rest0[m.orbit012_b0])) + (s9 * l_i0));
+  const rift::Real s11 = (s10 * l_i0);
+  [[maybe_unused]] const rift::Vec3 l_g0 = (s11 * l_d0);
+  const rift::Vec3 s12 = (in.v[m.vertex_s32] - in.v[m.vertex_b2]);
+  const rift::Real s13 = (p_.damping * (s12).dot(l_d1));
+  const rift::Real s14 = ((l_k * (l_l1 - c.vshear_rest1[m.orbit012_b0])) + (s13 * l_i1));
+  const rift::Real s15 = (s14 * l_i1);
+  [[maybe_unused]] const rift::Vec3 l_g1 = (s15 * l_d1);
+  const rift::Vec3 s16 = (in.v[m.vertex_s02] - in.v[m.vertex_b4]);
+  const rift::Real s17 = (p_.damping * (s16).dot(l_d2));
+  const rift::Real s18 = ((l_k * (l_l2 - c.vshear_rest2[m.orbit012_b0])) + (s17 * l_i2));
+  const rift::Real s19 = (s18 * l_i2);
+  [[maybe_unused]] const rift::Vec3 l_g2 = (s19 * l_d2);
+  const rift::Vec3 s20 = (in.v[m.vertex_s12] - in.v[m.vertex_b6]);
+  const rift::Real s21 = (p_.damping * (s20).dot(l_d3));
+  const rift::Real s22 = ((l_k * (l_l3 - c.vshear_rest3[m.orbit012_b0])) + (s21 * l_i3));
+  const rift::Real s23 = (s22 * l_i3);
+  [[maybe_unused]] const rift::Vec3 l_g3 = (s23 * l_d3);
   [[maybe_unused]] const rift::Vec3 tx[8] = {px[m.vertex_s22], px[m.vertex_b0], px[m.vertex_s32], px[m.vertex_b2], px[m.vertex_s02], px[m.vertex_b4], px[m.vertex_s12], px[m.vertex_b6]};
   [[maybe_unused]] const rift::Vec3 tv[8] = {pv[m.vertex_s22], pv[m.vertex_b0], pv[m.vertex_s32], pv[m.vertex_b2], pv[m.vertex_s02], pv[m.vertex_b4], pv[m.vertex_s12], pv[m.vertex_b6]};
-  [[maybe_unused]] const rift::Vec3 t_l_d0 = rift::Vec3((tx[0]) - (tx[1]));
-  [[maybe_unused]] const rift::Vec3 t_l_d1 = rift::Vec3((tx[2]) - (tx[3]));
-  [[maybe_unused]] const rift::Vec3 t_l_d2 = rift::Vec3((tx[4]) - (tx[5]));
-  [[maybe_unused]] const rift::Vec3 t_l_d3 = rift::Vec3((tx[6]) - (tx[7]));
-  [[maybe_unused]] const rift::Real t_l_l0 = rift::Real((l_d0).dot((t_l_d0)) / (l_d0).norm());
-  [[maybe_unused]] const rift::Real t_l_l1 = rift::Real((l_d1).dot((t_l_d1)) / (l_d1).norm());
-  [[maybe_unused]] const rift::Real t_l_l2 = rift::Real((l_d2).dot((t_l_d2)) / (l_d2).norm());
-  [[maybe_unused]] const rift::Real t_l_l3 = rift::Real((l_d3).dot((t_l_d3)) / (l_d3).norm());
-  [[maybe_unused]] const rift::Real t_l_i0 = ((l_l0 > 0.0) ? rift::Real((rift::Real(-(1.0) * ((t_l_l0) / ((l_l0) * (l_l0)))))) : rift::Real(rift::Real(0)));
-  [[maybe_unused]] const rift::Real t_l_i1 = ((l_l1 > 0.0) ? rift::Real((rift::Real(-(1.0) * ((t_l_l1) / ((l_l1) * (l_l1)))))) : rift::Real(rift::Real(0)));
-  [[maybe_unused]] const rift::Real t_l_i2 = ((l_l2 > 0.0) ? rift::Real((rift::Real(-(1.0) * ((t_l_l2) / ((l_l2) * (l_l2)))))) : rift::Real(rift::Real(0)));
-  [[maybe_unused]] const rift::Real t_l_i3 = ((l_l3 > 0.0) ? rift::Real((rift::Real(-(1.0) * ((t_l_l3) / ((l_l3) * (l_l3)))))) : rift::Real(rift::Real(0)));
-  [[maybe_unused]] const rift::Vec3 t_l_g0 = rift::Vec3((rift::Real((rift::Real((rift::Real((l_k) * (rift::Real(t_l_l0)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[0]) - (tv[1]))).dot(l_d0) + (rift::Vec3(in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot((t_l_d0)))))) * (l_i0) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(l_d0))) * (t_l_i0))))) * (l_i0) + (((l_k * (l_l0 - c.vshear_rest0[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(l_d0)) * l_i0))) * (t_l_i0))) * (l_d0) + ((((l_k * (l_l0 - c.vshear_rest0[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(l_d0)) * l_i0)) * l_i0)) * (t_l_d0));
-  [[maybe_unused]] const rift::Vec3 t_l_g1 = rift::Vec3((rift::Real((rift::Real((rift::Real((l_k) * (rift::Real(t_l_l1)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[2]) - (tv[3]))).dot(l_d1) + (rift::Vec3(in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot((t_l_d1)))))) * (l_i1) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(l_d1))) * (t_l_i1))))) * (l_i1) + (((l_k * (l_l1 - c.vshear_rest1[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(l_d1)) * l_i1))) * (t_l_i1))) * (l_d1) + ((((l_k * (l_l1 - c.vshear_rest1[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(l_d1)) * l_i1)) * l_i1)) * (t_l_d1));
-  [[maybe_unused]] const rift::Vec3 t_l_g2 = rift::Vec3((rift::Real((rift::Real((rift::Real((l_k) * (rift::Real(t_l_l2)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[4]) - (tv[5]))).dot(l_d2) + (rift::Vec3(in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot((t_l_d2)))))) * (l_i2) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(l_d2))) * (t_l_i2))))) * (l_i2) + (((l_k * (l_l2 - c.vshear_rest2[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(l_d2)) * l_i2))) * (t_l_i2))) * (l_d2) + ((((l_k * (l_l2 - c.vshear_rest2[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(l_d2)) * l_i2)) * l_i2)) * (t_l_d2));
-  [[maybe_unused]] const rift::Vec3 t_l_g3 = rift::Vec3((rift::Real((rift::Real((rift::Real((l_k) * (rift::Real(t_l_l3)))) + (rift::Real((rift::Real((p_.damping) * (rift::Real((rift::Vec3((tv[6]) - (tv[7]))).dot(l_d3) + (rift::Vec3(in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot((t_l_d3)))))) * (l_i3) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(l_d3))) * (t_l_i3))))) * (l_i3) + (((l_k * (l_l3 - c.vshear_rest3[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(l_d3)) * l_i3))) * (t_l_i3))) * (l_d3) + ((((l_k * (l_l3 - c.vshear_rest3[m.orbit012_b0])) + ((p_.damping * (rift::Vec3(in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(l_d3)) * l_i3)) * l_i3)) * (t_l_d3));
-  out[m.vertex_b0] += rift::Vec3(t_l_g0);
-  out[m.vertex_s22] += rift::Vec3(rift::Vec3(-(t_l_g0)));
-  out[m.vertex_b2] += rift::Vec3(t_l_g1);
-  out[m.vertex_s32] += rift::Vec3(rift::Vec3(-(t_l_g1)));
-  out[m.vertex_b4] += rift::Vec3(t_l_g2);
-  out[m.vertex_s02] += rift::Vec3(rift::Vec3(-(t_l_g2)));
-  out[m.vertex_b6] += rift::Vec3(t_l_g3);
-  out[m.vertex_s12] += rift::Vec3(rift::Vec3(-(t_l_g3)));
+  const rift::Vec3 t_l_d0 = (tx[0] - tx[1]);
+  const rift::Vec3 t_l_d1 = (tx[2] - tx[3]);
+  const rift::Vec3 t_l_d2 = (tx[4] - tx[5]);
+  const rift::Vec3 t_l_d3 = (tx[6] - tx[7]);
+  const rift::Real t_l_l0 = ((l_d0).dot(t_l_d0) / l_l0);
+  const rift::Real t_l_l1 = ((l_d1).dot(t_l_d1) / l_l1);
+  const rift::Real t_l_l2 = ((l_d2).dot(t_l_d2) / l_l2);
+  const rift::Real t_l_l3 = ((l_d3).dot(t_l_d3) / l_l3);
+  const rift::Real t_l_i0 = (s0 ? ((-(s1 * t_l_l0)) / l_l0) : 0.0);
+  const rift::Real t_l_i1 = (s2 ? ((-(s3 * t_l_l1)) / l_l1) : 0.0);
+  const rift::Real t_l_i2 = (s4 ? ((-(s5 * t_l_l2)) / l_l2) : 0.0);
+  const rift::Real t_l_i3 = (s6 ? ((-(s7 * t_l_l3)) / l_l3) : 0.0);
+  const rift::Vec3 t_l_g0 = ((((((l_k * t_l_l0) + (((p_.damping * (((tv[0] - tv[1])).dot(l_d0) + (s8).dot(t_l_d0))) * l_i0) + (s9 * t_l_i0))) * l_i0) + (s10 * t_l_i0)) * l_d0) + (s11 * t_l_d0));
+  const rift::Vec3 t_l_g1 = ((((((l_k * t_l_l1) + (((p_.damping * (((tv[2] - tv[3])).dot(l_d1) + (s12).dot(t_l_d1))) * l_i1) + (s13 * t_l_i1))) * l_i1) + (s14 * t_l_i1)) * l_d1) + (s15 * t_l_d1));
+  const rift::Vec3 t_l_g2 = ((((((l_k * t_l_l2) + (((p_.damping * (((tv[4] - tv[5])).dot(l_d2) + (s16).dot(t_l_d2))) * l_i2) + (s17 * t_l_i2))) * l_i2) + (s18 * t_l_i2)) * l_d2) + (s19 * t_l_d2));
+  const rift::Vec3 t_l_g3 = ((((((l_k * t_l_l3) + (((p_.damping * (((tv[6] - tv[7])).dot(l_d3) + (s20).dot(t_l_d3))) * l_i3) + (s21 * t_l_i3))) * l_i3) + (s22 * t_l_i3)) * l_d3) + (s23 * t_l_d3));
+  out[m.vertex_b0] += t_l_g0;
+  out[m.vertex_s22] += (-t_l_g0);
+  out[m.vertex_b2] += t_l_g1;
+  out[m.vertex_s32] += (-t_l_g1);
+  out[m.vertex_b4] += t_l_g2;
+  out[m.vertex_s02] += (-t_l_g2);
+  out[m.vertex_b6] += t_l_g3;
+  out[m.vertex_s12] += (-t_l_g3);
 }
 
 Pack::Pack(const Params& params) : params_(params), description_("Mass-spring interactions of 3D meshes: stretch, linear shear of quad faces, 3D shear of hexahedra (Table 1).") {
