@@ -17,7 +17,13 @@ void ScatterColouring::begin_build(std::size_t n, int k) {
   const std::size_t blocks = (n + block_ - 1) / block_;
   blocks_.assign(blocks, Block{});
   order_.resize(blocks * block_);
+  // Room for the matches tears add, and for a block's worth of pending ones:
+  // a tear must not pay for copying arrays of the whole mesh (a
+  // reallocation grows them by half at least, so later ones are amortised).
+  where_.reserve(n + n / 4 + block_);
   where_.resize(n);
+  pending_.reserve(block_);
+  pending_slots_.reserve(block_ * k_);
   for (std::size_t e = 0; e < n; ++e) {
     order_[e] = static_cast<std::uint32_t>(e);
     where_[e] = static_cast<std::uint32_t>(e);
