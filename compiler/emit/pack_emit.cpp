@@ -4,7 +4,6 @@
 
 #include "ast/orbit_text.hpp"
 #include "emit/names.hpp"
-#include "emit/prelude.hpp"
 
 namespace rift::emit {
 
@@ -340,18 +339,14 @@ GeneratedPack generate_pack(const PackModel& m, const diag::SourceManager& sourc
   w.line();
   for (const char* inc :
        {"<algorithm>", "<cmath>", "<limits>", "<stdexcept>", "<string>", "<type_traits>",
-        "<utility>", "<variant>", "<vector>", "<Eigen/Dense>", "\"rift/core/polar.hpp\""}) {
+        "<utility>", "<variant>", "<vector>", "<Eigen/Dense>", "\"rift/generated/support.hpp\""}) {
     w.line(std::string("#include ") + inc);
   }
   w.line();
   w.line("namespace rift::packs::" + m.pack + " {");
   w.line();
-  std::string_view pre = prelude();
-  while (!pre.empty()) {
-    const std::size_t nl = pre.find('\n');
-    w.line(pre.substr(0, nl));
-    pre = nl == std::string_view::npos ? std::string_view{} : pre.substr(nl + 1);
-  }
+  // Matching, rewriting and aggregates are generic: the runtime owns them.
+  w.line("using namespace rift::generated;");
   w.line();
   w.open("namespace {");
   for (const check::CheckedInteraction& ci : *m.interactions) {

@@ -1,0 +1,221 @@
+// The runtime's support for generated code (rift/generated/, core/
+// symmetric_eigen.hpp), tested on its own: a match's rows, injectivity, slot
+// upkeep after a rewrite (merge, split, new orbit), aggregates over orbits,
+// the symmetric eigen-solver, and set-up helpers.
+#include "rift/generated/support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <set>
+
+#include "test_maps.hpp"
+
+namespace rift {
+namespace {
+
+using generated::build_rows;
+using generated::distinct_darts;
+using generated::scratch;
+using generated::Scratch;
+using generated::update_embedding_slots;
+
+std::set<Dart> orbit_of(const GMap& g, Dart d, Orbit o) {
+  std::set<Dart> out;
+  g.for_each_in_orbit(d, o, [&](Dart x) { out.insert(x); });
+  return out;
+}
+
+TEST(MatchRows, OneRowPerDartOfTheHookOrbitAndTheSameWalkFromEveryHook) {
+  GMap g(2);
+  const Dart quad1 = test::make_polygon(g, 4);
+  const Dart quad2 = test::make_polygon(g, 4);
+  const Dart hooks[] = {quad1, quad2 + 2};  // any dart of the second face
+  const int dims[] = {0, 1};
+  Scratch& s = scratch();
+  std::size_t rows = 0;
+  ASSERT_TRUE(build_rows(g, hooks, 2, dims, 2, s, rows));
+  ASSERT_EQ(rows, 8u);
+  const std::set<Dart> first(s.rows.begin(), s.rows.begin() + 8);
+  EXPECT_EQ(first, orbit_of(g, quad1, Orbit{0, 1}));
+  EXPECT_EQ(s.rows[0], quad1);
+  const std::set<Dart> second(s.rows.begin() + 8, s.rows.end());
+  EXPECT_EQ(second, orbit_of(g, quad2, Orbit{0, 1}));
+  // Row r of each hook is reached by the same links: the two orbits are
+  // isomorphic row by row.
+  for (std::size_t j = 0; j < 2; ++j) {
+    for (std::size_t r = 0; r < rows; ++r) {
+      for (std::size_t k = 0; k < 2; ++k) {
+        EXPECT_EQ(g.alpha(s.rows[j * rows + r], dims[k]), s.rows[j * rows + s.nbr[r * 2 + k]]);
+      }
+    }
+  }
+}
+
+TEST(MatchRows, HooksOnOrbitsOfDifferentShapesDoNotMatch) {
+  GMap g(2);
+  const Dart quad = test::make_polygon(g, 4);
+  const Dart triangle = test::make_polygon(g, 3);
+  const Dart hooks[] = {quad, triangle};
+  const int dims[] = {0, 1};
+  std::size_t rows = 0;
+  EXPECT_FALSE(build_rows(g, hooks, 2, dims, 2, scratch(), rows));
+  // No hook: a generator, one row.
+  EXPECT_TRUE(build_rows(g, hooks, 0, dims, 2, scratch(), rows));
+  EXPECT_EQ(rows, 1u);
+}
+
+TEST(MatchRows, DistinctDartsAndNoMarkLeftBehind) {
+  GMap g(2);
+  test::make_polygon(g, 3);
+  const Dart distinct[] = {0, 1, 2, 5};
+  const Dart repeated[] = {0, 1, 2, 1, 4};
+  EXPECT_TRUE(distinct_darts(g, distinct, 4));
+  EXPECT_FALSE(distinct_darts(g, repeated, 5));
+  EXPECT_EQ(g.reserved_marks(), 0);
+  const Mark m = g.reserve_mark();
+  EXPECT_EQ(g.marked_count(m), 0u);
+  g.free_mark(m);
+}
+
+// Two triangles with a vertex weight summed when vertices merge.
+struct TwoTriangles {
+  GMap g{2};
+  Dart a = test::make_polygon(g, 3);
+  Dart b = test::make_polygon(g, 3);
+  Embedding<Real> w = g.add_embedding<Real>("w", Orbit{1, 2}, MergePolicy::kSum, 0.0);
+  Embedding<Real> edge = g.add_embedding<Real>("edge", Orbit{0, 2}, MergePolicy::kKeepFirst, 0.0);
+
+  // Links (or unlinks) edge 0 of a to edge 0 of b along alpha 2, as a rule's
+  // rewrite does: the links first, the slots after.
+  std::vector<Dart> set_link(bool linked) {
+    const Dart pairs[][2] = {{a, b}, {g.alpha(a, 0), g.alpha(b, 0)}};
+    for (const auto& p : pairs) {
+      if (linked) {
+        g.link(p[0], p[1], 2);
+      } else {
+        g.unlink(p[0], 2);
+      }
+    }
+    std::vector<Dart> darts = {a, b, g.alpha(a, 0), g.alpha(b, 0)};
+    std::vector<Dart> touched;
+    update_embedding_slots(g, darts.data(), darts.size(), scratch(), &touched);
+    return touched;
+  }
+};
+
+TEST(SlotUpkeep, MergedOrbitsCombineWithThePolicyAndSplitOnesKeepACopy) {
+  TwoTriangles t;
+  t.w[t.a] = 1.0;
+  t.w[t.b] = 2.0;
+  t.edge[t.a] = 5.0;
+  t.edge[t.b] = 7.0;
+  const std::vector<Dart> touched = t.set_link(true);
+  EXPECT_TRUE(t.g.is_valid());
+  EXPECT_EQ(t.w.slot(t.a), t.w.slot(t.b));
+  EXPECT_EQ(t.w[t.a], 3.0);     // kSum
+  EXPECT_EQ(t.edge[t.b], 5.0);  // kKeepFirst: the first dart's orbit's value
+  EXPECT_FALSE(touched.empty());
+  for (Dart x : touched)
+    EXPECT_TRUE(t.g.is_alive(x));
+
+  t.set_link(false);
+  EXPECT_TRUE(t.g.is_valid());
+  EXPECT_NE(t.w.slot(t.a), t.w.slot(t.b));
+  EXPECT_EQ(t.w[t.a], 3.0);  // a split keeps a copy for each part (§4.1)
+  EXPECT_EQ(t.w[t.b], 3.0);
+  EXPECT_EQ(t.edge[t.a], 5.0);
+  EXPECT_EQ(t.edge[t.b], 5.0);
+}
+
+TEST(SlotUpkeep, ANewOrbitGetsTheDefault) {
+  GMap g(2);
+  auto w = g.add_embedding<Real>("w", Orbit{1, 2}, MergePolicy::kSum, 0.25);
+  const Dart d = test::make_polygon(g, 4);
+  std::vector<Dart> darts;
+  g.for_each_in_orbit(d, Orbit{0, 1}, [&](Dart x) { darts.push_back(x); });
+  update_embedding_slots(g, darts.data(), darts.size(), scratch(), nullptr);
+  EXPECT_TRUE(g.is_valid());
+  std::set<Slot> slots;
+  for (Dart x : darts) {
+    ASSERT_NE(w.slot(x), kNoSlot);
+    EXPECT_EQ(w[x], 0.25);
+    slots.insert(w.slot(x));
+  }
+  EXPECT_EQ(slots.size(), 4u);  // one per vertex of the quad
+}
+
+TEST(OrbitValues, EachEmbeddingOrbitCountsOnce) {
+  GMap g(2);
+  const Dart quad = test::make_polygon(g, 4);
+  auto x = g.add_embedding<Vec3>("x", Orbit{1, 2}, MergePolicy::kKeepFirst, Vec3::Zero());
+  auto k = g.add_embedding<std::int64_t>("k", Orbit{1, 2}, MergePolicy::kKeepFirst, 0);
+  for (int i = 0; i < 4; ++i) {
+    const Dart corner = quad + 2 * static_cast<Dart>(i);
+    x[corner] = Vec3(i, 2 * i, 1);
+    k[corner] = 10 + i;
+  }
+  const Orbit face{0, 1};
+  EXPECT_EQ(generated::collect_count(g, x, quad, face), 4);  // 8 darts, 4 vertices
+  EXPECT_EQ(generated::collect_sum(g, x, quad, face), Vec3(6, 12, 4));
+  EXPECT_EQ(generated::collect_mean(g, x, quad, face), Vec3(1.5, 3, 1));
+  EXPECT_EQ(generated::collect_mean(g, k, quad, face), 11.5);  // of integers: a real
+  EXPECT_EQ(generated::collect_min(g, k, quad, face), 10);
+  EXPECT_EQ(generated::collect_max(g, k, quad, face), 13);
+  // Over a single vertex's orbit: its own value.
+  EXPECT_EQ(generated::collect_sum(g, k, quad + 2, Orbit{1, 2}), 11);
+}
+
+TEST(SymmetricEigen, EigenvaluesAndTheLargestEigenvectorOfRandomSpectra) {
+  std::mt19937 rng(3);
+  std::normal_distribution<Real> n(0, 1);
+  for (int trial = 0; trial < 500; ++trial) {
+    Eigen::Quaternion<Real> q(n(rng), n(rng), n(rng), n(rng));
+    q.normalize();
+    const Mat3 r = q.toRotationMatrix();
+    Vec3 lambda(n(rng), n(rng), n(rng));
+    if (trial % 5 == 0) lambda(1) = lambda(0);  // repeated eigenvalues
+    std::sort(lambda.data(), lambda.data() + 3);
+    const Mat3 m = r * lambda.asDiagonal() * r.transpose();
+    const Vec3 found = symmetric_eigenvalues(m);
+    EXPECT_LT((found - lambda).norm(), 1e-12 * (1 + lambda.norm())) << "trial " << trial;
+    EXPECT_NEAR(symmetric_max_eigenvalue(m), lambda(2), 1e-12 * (1 + lambda.norm()));
+    const Vec3 v = symmetric_max_eigenvector(m);
+    EXPECT_NEAR(v.norm(), 1.0, 1e-12);
+    // M v = λ3 v (the eigenvector of a repeated λ3 is any of its space).
+    EXPECT_LT((m * v - lambda(2) * v).norm(), 1e-10 * (1 + lambda.norm())) << "trial " << trial;
+  }
+}
+
+TEST(PackValues, ParameterValuesTaggedDartsAndRequiredEmbeddings) {
+  EXPECT_EQ(generated::value_as<Real>(Value{std::int64_t{3}}, "k"), 3.0);
+  EXPECT_EQ(generated::value_as<Vec3>(Value{Vec3(1, 2, 3)}, "v"), Vec3(1, 2, 3));
+  EXPECT_TRUE(generated::value_as<bool>(Value{Bool{true}}, "b"));
+  try {
+    generated::value_as<Vec3>(Value{2.0}, "parameter 'gravity'");
+    ADD_FAILURE() << "a real read as a vec3";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "parameter 'gravity' has a value of the wrong type");
+  }
+
+  GMap g(2);
+  const Dart quad = test::make_polygon(g, 4);
+  auto tag = g.add_embedding<Bool>("tag", Orbit{}, MergePolicy::kKeepFirst, Bool{false});
+  EXPECT_EQ(generated::tagged_dart(g, tag, quad + 3, Orbit{0, 1}), kNoDart);
+  tag[quad + 5] = Bool{true};
+  EXPECT_EQ(generated::tagged_dart(g, tag, quad + 3, Orbit{0, 1}), quad + 5);
+
+  EXPECT_TRUE(generated::require_embedding<Bool>(g, "tag", "interaction 'x'"));
+  try {
+    generated::require_embedding<Real>(g, "stiffness", "interaction 'stretch'");
+    ADD_FAILURE() << "a missing embedding was found";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("interaction 'stretch' reads embedding 'stiffness'"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace rift
