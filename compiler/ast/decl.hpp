@@ -34,7 +34,6 @@ struct Assign {
   Ident embedding;
   ExprPtr value;
   Location loc;
-  const Embedding* target = nullptr;  // bound by resolve/
 };
 
 struct Pattern {
@@ -91,7 +90,6 @@ struct Init {
   Ident dart;
   ExprPtr value;
   Location loc;
-  const Embedding* target = nullptr;  // bound by resolve/
 };
 
 struct Interaction {

@@ -21,14 +21,7 @@ struct Label {
 };
 
 struct Expr;
-struct Let;
-struct Param;
-struct PackParam;
-struct Embedding;
 using ExprPtr = std::unique_ptr<Expr>;
-
-/// What a bare name in an expression refers to (filled by resolve/).
-enum class NameRef { Unresolved, Let, RuleParam, PackParam };
 
 struct Expr {
   enum class Kind {
@@ -63,14 +56,9 @@ struct Expr {
   Location var_loc;
   std::vector<ExprPtr> args;
   int depth = 1;  // of the tree below; the parser caps it so passes may recurse safely
-
-  // Filled by the passes: resolve/ binds names, check/ computes types.
-  Type type = Type::Error;
-  NameRef ref = NameRef::Unresolved;
-  const Let* let = nullptr;
-  const Param* param = nullptr;
-  const PackParam* pack_param = nullptr;
-  const Embedding* embedding = nullptr;  // Read, Collect
+  // What names refer to and the types of expressions are not here: resolve/
+  // and check/ record them in side tables (resolve::Symbols::binding,
+  // check::ExprTypes), so that no pass writes into the tree.
 };
 
 ExprPtr make_expr(Expr::Kind kind, const Location& loc);

@@ -42,7 +42,7 @@ OrbitClasses classes(const PatternSide& side, const std::vector<int>& hook_label
 }
 
 void check_rule_embedding(const CheckedRule& cr, const ast::Embedding& emb,
-                          diag::Diagnostics& diags) {
+                          const resolve::Symbols& symbols, diag::Diagnostics& diags) {
   const RuleGraph& g = cr.graph;
   const std::set<int> orbit(emb.orbit.dims.begin(), emb.orbit.dims.end());
   const OrbitClasses left = classes(g.left, g.hook_label, orbit);
@@ -52,7 +52,7 @@ void check_rule_embedding(const CheckedRule& cr, const ast::Embedding& emb,
   // Expressions for this embedding, per right class.
   std::map<int, const ast::Assign*> given;
   for (const ast::Assign& a : cr.rule->right.assigns) {
-    if (a.target != &emb) continue;
+    if (symbols.target(a) != &emb) continue;
     const int v = g.right.find(a.node.text);
     if (v < 0) continue;  // reported once, by check_assign_targets
     const int c = right.cls[static_cast<std::size_t>(v)];
@@ -151,7 +151,7 @@ void check_embeddings(const std::vector<CheckedRule>& rules, const resolve::Symb
       bool in_range = true;
       for (int d : emb->orbit.dims)
         in_range = in_range && d >= 0 && d <= cr.graph.dimension;
-      if (in_range) check_rule_embedding(cr, *emb, diags);
+      if (in_range) check_rule_embedding(cr, *emb, symbols, diags);
     }
   }
 }

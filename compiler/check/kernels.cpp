@@ -28,7 +28,8 @@ bool is_vertex_orbit(const std::vector<int>& dims, int dimension) {
 
 class KernelChecker {
  public:
-  KernelChecker(int dimension, diag::Diagnostics& diags) : dimension_(dimension), diags_(diags) {}
+  KernelChecker(int dimension, const resolve::Symbols& symbols, diag::Diagnostics& diags)
+      : dimension_(dimension), symbols_(symbols), diags_(diags) {}
 
   void expr(const ast::Expr& e) {
     if (e.kind == ast::Expr::Kind::Fold) {
@@ -41,13 +42,14 @@ class KernelChecker {
                               "force loop does not do; compute the value in an init and read it");
       return;
     }
-    if (e.kind == ast::Expr::Kind::Read && e.embedding &&
+    const ast::Embedding* embedding = symbols_.binding(e).embedding;
+    if (e.kind == ast::Expr::Kind::Read && embedding &&
         (e.name == kPositionEmbedding || e.name == kVelocityEmbedding) &&
-        !is_vertex_orbit(e.embedding->orbit.dims, dimension_) && reported_.insert(e.name).second) {
+        !is_vertex_orbit(embedding->orbit.dims, dimension_) && reported_.insert(e.name).second) {
       diags_
           .error(e.loc, "the integrator holds '" + e.name + "' per vertex: declare it on " +
                             vertex_orbit_text(dimension_) + " to read it in an interaction")
-          .notes.push_back({e.embedding->orbit.loc, "its orbit"});
+          .notes.push_back({embedding->orbit.loc, "its orbit"});
     }
     for (const auto& a : e.args)
       expr(*a);
@@ -57,15 +59,16 @@ class KernelChecker {
 
  private:
   int dimension_;
+  const resolve::Symbols& symbols_;
   diag::Diagnostics& diags_;
   std::set<std::string> reported_;  // once per embedding and interaction
 };
 
 }  // namespace
 
-void check_kernels(const ast::Program& program, const resolve::Symbols& /*symbols*/,
+void check_kernels(const ast::Program& program, const resolve::Symbols& symbols,
                    diag::Diagnostics& diags) {
-  KernelChecker kc(program.dimension, diags);
+  KernelChecker kc(program.dimension, symbols, diags);
   for (const ast::File& file : program.files) {
     for (const ast::Interaction& inter : file.interactions) {
       kc.next_interaction();

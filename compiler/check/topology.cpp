@@ -357,7 +357,7 @@ std::string word_text(const std::vector<int>& word) {
 /// support: the same node of two matches is never the same dart (a word of
 /// involutions is a bijection).
 void check_force_ownership(const ast::Interaction& inter, const RuleGraph& g,
-                           diag::Diagnostics& diags) {
+                           const resolve::Symbols& symbols, diag::Diagnostics& diags) {
   const PatternSide& side = g.left;
   if (g.hooks.empty()) return;
   // The word of each node from the hook, breadth-first along explicit arcs.
@@ -378,24 +378,24 @@ void check_force_ownership(const ast::Interaction& inter, const RuleGraph& g,
   const std::vector<int>& support = inter.support.dims;
   std::vector<const ast::Assign*> darts;  // stores into embeddings on <>
   for (const ast::Assign& f : inter.forces) {
-    if (!f.target) continue;
+    const ast::Embedding* target = symbols.target(f);
+    if (!target) continue;
     const int node = side.find(f.node.text);
     if (node < 0 || !path[static_cast<std::size_t>(node)]) continue;
     const std::vector<int> word = reduced(*path[static_cast<std::size_t>(node)]);
-    if (f.target->orbit.dims.empty()) {
+    if (target->orbit.dims.empty()) {
       darts.push_back(&f);
       continue;
     }
-    if (within(f.target->orbit.dims, support) && within(word, support)) continue;
+    if (within(target->orbit.dims, support) && within(word, support)) continue;
     diags
         .error(f.embedding.loc,
-               "'" + f.embedding.text + "' is stored per orbit " +
-                   orbit_text(f.target->orbit.dims) + " at '" + f.node.text +
-                   "', which is not inside the support orbit " + orbit_text(inter.support.dims) +
-                   " of the match: two matches could store into " +
+               "'" + f.embedding.text + "' is stored per orbit " + orbit_text(target->orbit.dims) +
+                   " at '" + f.node.text + "', which is not inside the support orbit " +
+                   orbit_text(inter.support.dims) + " of the match: two matches could store into " +
                    "the same orbit (stored forces are written, not added); store it on an " +
                    "orbit inside the support, or on darts")
-        .notes.push_back({f.target->orbit.loc, "its orbit"});
+        .notes.push_back({target->orbit.loc, "its orbit"});
   }
   for (std::size_t i = 0; i < darts.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j) {
@@ -423,6 +423,7 @@ void check_force_ownership(const ast::Interaction& inter, const RuleGraph& g,
 }  // namespace
 
 std::vector<CheckedInteraction> check_interactions(const ast::Program& program,
+                                                   const resolve::Symbols& symbols,
                                                    diag::Diagnostics& diags) {
   std::vector<CheckedInteraction> out;
   for (const ast::File& file : program.files) {
@@ -471,19 +472,21 @@ std::vector<CheckedInteraction> check_interactions(const ast::Program& program,
       }
       vertex += ">";
       for (const ast::Assign& f : inter.forces) {
-        if (!f.target) continue;
+        const ast::Embedding* target = symbols.target(f);
+        if (!target) continue;
         bool inside = true;
-        for (int d : f.target->orbit.dims)
+        for (int d : target->orbit.dims)
           inside = inside && d >= 1 && d <= program.dimension;
         if (!inside) {
           diags
               .error(f.embedding.loc, "force embedding '" + f.embedding.text +
                                           "' is not stored in a sub-orbit of the vertex orbit " +
                                           vertex + ", so it cannot be gathered per vertex")
-              .notes.push_back({f.target->orbit.loc, "its orbit"});
+              .notes.push_back({target->orbit.loc, "its orbit"});
         }
       }
-      if (rc.ok() && diags.error_count() == before) check_force_ownership(inter, ci.graph, diags);
+      if (rc.ok() && diags.error_count() == before)
+        check_force_ownership(inter, ci.graph, symbols, diags);
       ci.ok = rc.ok() && diags.error_count() == before;
       out.push_back(std::move(ci));
     }

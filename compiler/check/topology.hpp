@@ -26,6 +26,7 @@ struct CheckedInteraction {
 
 std::vector<CheckedRule> check_rules(const ast::Program& program, diag::Diagnostics& diags);
 std::vector<CheckedInteraction> check_interactions(const ast::Program& program,
+                                                   const resolve::Symbols& symbols,
                                                    diag::Diagnostics& diags);
 /// A criterion's `apply ... at` gives one dart per hook of the rule.
 void check_applies(const ast::Program& program, const std::vector<CheckedRule>& rules,

@@ -26,12 +26,15 @@ bool assignable(Type from, Type to) {
 
 class TypeChecker {
  public:
-  TypeChecker(int dimension, diag::Diagnostics& diags) : dimension_(dimension), diags_(diags) {}
+  TypeChecker(int dimension, const resolve::Symbols& symbols, ExprTypes& types,
+              diag::Diagnostics& diags)
+      : dimension_(dimension), symbols_(symbols), types_(types), diags_(diags) {}
 
-  Type expr(const Expr& ce) {
-    auto& e = const_cast<Expr&>(ce);  // the pass records types in the tree
-    e.type = compute(e);
-    return e.type;
+  /// The type of `e`, recorded in the side table for lower/ and emit/.
+  Type expr(const Expr& e) {
+    const Type t = compute(e);
+    types_.set(e, t);
+    return t;
   }
 
   /// Checks that `e` has a type assignable to `want`; `what` names the place.
@@ -47,7 +50,7 @@ class TypeChecker {
   }
 
  private:
-  Type compute(Expr& e) {
+  Type compute(const Expr& e) {
     switch (e.kind) {
       case Expr::Kind::IntLit:
         return Type::Int;
@@ -55,11 +58,13 @@ class TypeChecker {
         return Type::Real;
       case Expr::Kind::BoolLit:
         return Type::Bool;
-      case Expr::Kind::Name:
-        if (e.let) return e.let->value->type;
-        if (e.param) return e.param->type;
-        if (e.pack_param) return e.pack_param->type;
+      case Expr::Kind::Name: {
+        const resolve::Binding& b = symbols_.binding(e);
+        if (b.let) return types_.of(*b.let->value);
+        if (b.param) return b.param->type;
+        if (b.pack_param) return b.pack_param->type;
         return Type::Error;
+      }
       case Expr::Kind::Read:
         return read(e);
       case Expr::Kind::Collect:
@@ -116,14 +121,16 @@ class TypeChecker {
 
   Type read(const Expr& e) {
     check_hops(e);
-    return e.embedding ? e.embedding->type : Type::Error;
+    const ast::Embedding* embedding = symbols_.binding(e).embedding;
+    return embedding ? embedding->type : Type::Error;
   }
 
   Type collect(const Expr& e) {
     check_hops(e);
     check_orbit_type(e.orbit, dimension_, "a collection", diags_);
-    if (!e.embedding) return Type::Error;
-    const Type t = e.embedding->type;
+    const ast::Embedding* embedding = symbols_.binding(e).embedding;
+    if (!embedding) return Type::Error;
+    const Type t = embedding->type;
     if (e.op == "count") return Type::Int;
     if (e.op == "min" || e.op == "max") {
       if (numeric(t)) return t;
@@ -246,6 +253,8 @@ class TypeChecker {
   }
 
   int dimension_;
+  const resolve::Symbols& symbols_;
+  ExprTypes& types_;
   diag::Diagnostics& diags_;
 };
 
@@ -264,12 +273,14 @@ void check_embedding(const ast::Embedding& e, int dimension, TypeChecker& tc,
   }
 }
 
-void check_assign(const ast::Assign& a, TypeChecker& tc, const char* what) {
-  if (!a.target) {
+void check_assign(const ast::Assign& a, const resolve::Symbols& symbols, TypeChecker& tc,
+                  const char* what) {
+  const ast::Embedding* target = symbols.target(a);
+  if (!target) {
     tc.expr(*a.value);
     return;
   }
-  tc.expect(*a.value, a.target->type, std::string(what) + " '" + a.embedding.text + "'");
+  tc.expect(*a.value, target->type, std::string(what) + " '" + a.embedding.text + "'");
 }
 
 void check_component_params(const std::vector<ast::Param>& params, TypeChecker& tc,
@@ -332,7 +343,7 @@ void check_script(const ast::Script& script, const resolve::Symbols& symbols, in
     }
     if (st.where) tc.expect(*st.where, Type::Bool, "a 'where' condition");
     if (st.kind == ast::ScriptStmt::Kind::Set) {
-      check_assign(st.set, tc, "the value of");
+      check_assign(st.set, symbols, tc, "the value of");
       continue;
     }
     check_call_args(st.rule, symbols, st.args, st.loc, tc, diags);
@@ -362,9 +373,9 @@ bool check_orbit_type(const ast::Label& label, int dimension, const char* what,
   return true;
 }
 
-void check_types(const ast::Program& program, const resolve::Symbols& symbols,
+void check_types(const ast::Program& program, const resolve::Symbols& symbols, ExprTypes& types,
                  diag::Diagnostics& diags) {
-  TypeChecker tc(program.dimension, diags);
+  TypeChecker tc(program.dimension, symbols, types, diags);
   std::map<std::string, diag::Location> initialised;
   for (const ast::File& file : program.files) {
     for (const auto& e : file.embeddings)
@@ -372,7 +383,7 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols,
     for (const auto& p : file.params)
       tc.expect(*p.value, p.type, "the value of '" + p.name.text + "'");
     for (const auto& init : file.inits) {
-      const ast::Embedding* emb = symbols.embedding(init.embedding.text);
+      const ast::Embedding* emb = symbols.target(init);
       if (!emb) {
         tc.expr(*init.value);
         continue;
@@ -389,21 +400,21 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols,
       for (const auto& w : rule.whens)
         tc.expect(*w, Type::Bool, "a precondition");
       for (const auto& a : rule.right.assigns)
-        check_assign(a, tc, "the value of");
+        check_assign(a, symbols, tc, "the value of");
       for (const auto& u : rule.updates)
-        check_assign(u, tc, "the update of");
+        check_assign(u, symbols, tc, "the update of");
     }
     for (const auto& script : file.scripts)
       check_script(script, symbols, program.dimension, tc, diags);
     for (const auto& inter : file.interactions) {
       check_component_params(inter.params, tc, diags);
       for (const auto& init : inter.inits) {
-        if (!init.target) {
+        const ast::Embedding* target = symbols.target(init);
+        if (!target) {
           tc.expr(*init.value);
           continue;
         }
-        tc.expect(*init.value, init.target->type,
-                  "the initial value of '" + init.embedding.text + "'");
+        tc.expect(*init.value, target->type, "the initial value of '" + init.embedding.text + "'");
         auto [it, fresh] = initialised.emplace(init.embedding.text, init.embedding.loc);
         if (!fresh) {
           diags.error(init.embedding.loc, "'" + init.embedding.text + "' is initialised twice")
@@ -414,12 +425,13 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols,
       for (const auto& w : inter.whens)
         tc.expect(*w, Type::Bool, "a precondition");
       for (const auto& f : inter.forces) {
-        check_assign(f, tc, "the force");
-        if (f.target && f.target->type != Type::Vec3) {
+        check_assign(f, symbols, tc, "the force");
+        const ast::Embedding* target = symbols.target(f);
+        if (target && target->type != Type::Vec3) {
           diags
               .error(f.embedding.loc, "force embedding '" + f.embedding.text +
-                                          "' must hold vec3 values, not " + str(f.target->type))
-              .notes.push_back({f.target->name.loc, "declared here"});
+                                          "' must hold vec3 values, not " + str(target->type))
+              .notes.push_back({target->name.loc, "declared here"});
         }
       }
       if (inter.energy) tc.expect(*inter.energy, Type::Real, "the energy");

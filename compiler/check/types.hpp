@@ -4,12 +4,13 @@
 #pragma once
 
 #include "ast/program.hpp"
+#include "check/expr_types.hpp"
 #include "diag/diagnostics.hpp"
 #include "resolve/symbols.hpp"
 
 namespace rift::check {
 
-void check_types(const ast::Program& program, const resolve::Symbols& symbols,
+void check_types(const ast::Program& program, const resolve::Symbols& symbols, ExprTypes& types,
                  diag::Diagnostics& diags);
 
 /// Orbit labels used as orbit types (embeddings, supports, collections,

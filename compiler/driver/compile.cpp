@@ -22,13 +22,14 @@ namespace {
 
 struct Checked {
   resolve::Symbols symbols;
+  check::ExprTypes types;
   std::vector<check::CheckedRule> rules;
   std::vector<check::CheckedInteraction> interactions;
 };
 
 void require_jacobians(const Checked& checked, diag::Diagnostics& diags) {
   for (const check::CheckedInteraction& ci : checked.interactions) {
-    const lower::InteractionPlan plan = lower::plan_interaction(ci, checked.symbols);
+    const lower::InteractionPlan plan = lower::plan_interaction(ci, checked.symbols, checked.types);
     const lower::DerivativePlan d =
         lower::plan_derivative(plan.body, plan.kernel, ci.interaction->name.loc);
     if (!d.available) {
@@ -54,9 +55,9 @@ void run_checks(const ast::Program& program, diag::Diagnostics& diags, Checked& 
   }
   out.symbols = resolve::collect_symbols(program, diags);
   resolve::resolve_names(program, out.symbols, diags);
-  check::check_types(program, out.symbols, diags);
+  check::check_types(program, out.symbols, out.types, diags);
   out.rules = check::check_rules(program, diags);
-  out.interactions = check::check_interactions(program, diags);
+  out.interactions = check::check_interactions(program, out.symbols, diags);
   check::check_applies(program, out.rules, diags);
   check::check_kernels(program, out.symbols, diags);
   check::check_generated_names(program, out.symbols, diags);
@@ -111,12 +112,13 @@ void generate(const ast::Program& program, const Checked& checked,
   model.line_directives = options.line_directives;
   model.program = &program;
   model.symbols = &checked.symbols;
+  model.types = &checked.types;
   model.rules = &checked.rules;
   model.interactions = &checked.interactions;
   // lower: every interaction to its kernel and its body in the IR.
   std::vector<lower::InteractionPlan> interaction_plans;
   for (const check::CheckedInteraction& ci : checked.interactions)
-    interaction_plans.push_back(lower::plan_interaction(ci, checked.symbols));
+    interaction_plans.push_back(lower::plan_interaction(ci, checked.symbols, checked.types));
   model.interaction_plans = &interaction_plans;
   model.pack = program.files.empty() ? "pack" : program.files.front().pack.text;
   model.pack_namespace = "rift::packs::" + model.pack;
@@ -194,7 +196,8 @@ Lowered lower_text(const std::string& path, const std::string& text) {
   out.diagnostics = state->diags.render();
   if (out.ok) {
     for (const check::CheckedInteraction& ci : state->checked.interactions)
-      out.interactions.push_back(lower::plan_interaction(ci, state->checked.symbols));
+      out.interactions.push_back(
+          lower::plan_interaction(ci, state->checked.symbols, state->checked.types));
   }
   out.keep_alive = state;
   return out;

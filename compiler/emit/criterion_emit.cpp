@@ -46,8 +46,9 @@ std::set<std::string> criterion_embeddings(const ast::Criterion& crit) {
 /// Whether the candidate carries an apply argument (vec3 arguments named
 /// `normal` and `point`).
 
-bool carried(const ast::ApplyArg& a) {
-  return a.value->type == ast::Type::Vec3 && (a.name.text == "normal" || a.name.text == "point");
+bool carried(const ast::ApplyArg& a, const check::ExprTypes& types) {
+  return types.of(*a.value) == ast::Type::Vec3 &&
+         (a.name.text == "normal" || a.name.text == "point");
 }
 
 }  // namespace
@@ -55,7 +56,7 @@ bool carried(const ast::ApplyArg& a) {
 void declare_criterion(Writer& w, const ast::Criterion& crit, const PackModel& model) {
   const std::string cls = criterion_class(crit.name.text);
   const std::string params = component_params_struct(crit.name.text);
-  declare_component_params(w, params, crit.params);
+  declare_component_params(w, params, crit.params, *model.types);
   w.line("/// Criterion '" + crit.name.text + "': applies rule '" + crit.rule.text +
          "' where its measure passes.");
   w.open("class " + cls + " final : public rift::Criterion {");
@@ -87,7 +88,8 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
   const std::string cls = criterion_class(crit.name.text);
   const std::string user = "criterion '" + crit.name.text + "'";
   const std::vector<ast::Param>& rule_params = *model.symbols->callee_params(crit.rule.text);
-  const lower::CriterionPlan plan = lower::plan_criterion(crit, rule_params);
+  const lower::CriterionPlan plan =
+      lower::plan_criterion(crit, rule_params, *model.symbols, *model.types);
   const ir::Body& b = plan.body;
   const RenderContext ctx = criterion_context(b);
   const std::string d = dart_name(crit.dart.text);
@@ -120,7 +122,7 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
     // (values are shared across both, folds are walked together within each).
     std::vector<ir::ExprId> roots = {plan.measure, plan.threshold}, payload;
     for (std::size_t k = 0; k < crit.apply_args.size(); ++k) {
-      if (!carried(crit.apply_args[k])) continue;
+      if (!carried(crit.apply_args[k], *model.types)) continue;
       lower::lets_read(b, plan.args[k], for_payload);
       payload.push_back(plan.args[k]);
     }
@@ -146,7 +148,7 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
     write_wanted_lets(w, r, b, for_payload, written);
     for (std::size_t k = 0; k < crit.apply_args.size(); ++k) {
       const ast::ApplyArg& a = crit.apply_args[k];
-      if (!carried(a)) continue;
+      if (!carried(a, *model.types)) continue;
       write_rendered(w, r, a.value->loc, "c." + a.name.text + " = ", plan.args[k], ";");
     }
   }
@@ -160,7 +162,7 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
   std::vector<bool> wanted(b.lets.size(), false), written(b.lets.size(), false);
   std::vector<ir::ExprId> roots;
   for (std::size_t k = 0; k < crit.apply_args.size(); ++k) {
-    if (carried(crit.apply_args[k])) continue;
+    if (carried(crit.apply_args[k], *model.types)) continue;
     lower::lets_read(b, plan.args[k], wanted);
     roots.push_back(plan.args[k]);
   }
@@ -180,7 +182,7 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
   for (std::size_t k = 0; k < crit.apply_args.size(); ++k) {
     const ast::ApplyArg& a = crit.apply_args[k];
     const std::string field = "args." + member_name(a.name.text);
-    if (carried(a)) {
+    if (carried(a, *model.types)) {
       w.line(field + " = candidate." + a.name.text + ";");
       continue;
     }
@@ -217,12 +219,13 @@ void declare_rule_class(Writer& w, const std::string& name, std::size_t hook_cou
   w.line();
 }
 
-void emit_rule_class(Writer& w, const std::string& name, const std::vector<ast::Param>& params) {
+void emit_rule_class(Writer& w, const std::string& name, const std::vector<ast::Param>& params,
+                     const check::ExprTypes& types) {
   const std::string cls = rule_class(name);
   w.open(cls + "::" + cls + "(const Params& pack) : pack_(pack) {");
   if (!params.empty()) {
     w.open("specs_ = {");
-    write_param_specs(w, params, false);
+    write_param_specs(w, params, false, types);
     w.close("};");
   }
   w.close();

@@ -39,7 +39,7 @@ std::string write_rendered(Writer& w, BodyRenderer& r, const diag::Location& loc
 void write_lets(Writer& w, const std::vector<ast::Let>& lets, const ExprContext& ctx) {
   for (const ast::Let& l : lets) {
     write_sourced(w, l.value->loc,
-                  "[[maybe_unused]] const " + cpp_type(l.value->type) + " " +
+                  "[[maybe_unused]] const " + cpp_type(ctx.types->of(*l.value)) + " " +
                       let_name(l.name.text) + " = " + emit_expr(*l.value, ctx) + ";");
   }
 }
@@ -51,7 +51,7 @@ void write_body(Writer& w, const std::vector<ast::Let>& lets,
     if (st.kind == ast::BodyStmt::Kind::Let) {
       const ast::Let& l = lets[st.index];
       write_sourced(w, l.value->loc,
-                    "[[maybe_unused]] const " + cpp_type(l.value->type) + " " +
+                    "[[maybe_unused]] const " + cpp_type(ctx.types->of(*l.value)) + " " +
                         let_name(l.name.text) + " = " + emit_expr(*l.value, ctx) + ";");
     } else {
       const ast::Expr& cond = *whens[st.index];

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ast/program.hpp"
+#include "check/expr_types.hpp"
 #include "check/topology.hpp"
 #include "emit/expr_emit.hpp"
 #include "emit/ir_render.hpp"
@@ -21,6 +22,7 @@ namespace rift::emit {
 struct PackModel {
   const ast::Program* program = nullptr;
   const resolve::Symbols* symbols = nullptr;
+  const check::ExprTypes* types = nullptr;
   const std::vector<check::CheckedRule>* rules = nullptr;
   const std::vector<check::CheckedInteraction>* interactions = nullptr;
   const std::vector<lower::InteractionPlan>* interaction_plans =
@@ -35,16 +37,17 @@ struct PackModel {
 std::string tag_embedding(std::string_view interaction);
 
 /// A constant expression (defaults), as C++.
-std::string constant_expr(const ast::Expr& e, ast::Type to);
+std::string constant_expr(const ast::Expr& e, ast::Type to, const check::ExprTypes& types);
 
 /// `struct NAME { T field = default; ... };` for scene-given parameters.
 void declare_component_params(Writer& w, const std::string& name,
-                              const std::vector<ast::Param>& params);
+                              const std::vector<ast::Param>& params, const check::ExprTypes& types);
 /// `NAME NAME_from(const rift::ComponentUse& use)`: reads (and checks) them from a scene.
 void emit_component_params_reader(Writer& w, const std::string& name, const std::string& user,
                                   const std::vector<ast::Param>& params);
 /// `{"stiffness", rift::ValueType::kReal, default, "description", positive, non_negative}, ...`
-void write_param_specs(Writer& w, const std::vector<ast::Param>& params, bool from_scene);
+void write_param_specs(Writer& w, const std::vector<ast::Param>& params, bool from_scene,
+                       const check::ExprTypes& types);
 
 /// Names of the embeddings an expression reads.
 void embeddings_read(const ast::Expr& e, std::set<std::string>& out);
@@ -84,6 +87,7 @@ void declare_criterion(Writer& w, const ast::Criterion& crit, const PackModel& m
 void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& model);
 /// A rule or script as a rift::Rule (arguments by position).
 void declare_rule_class(Writer& w, const std::string& name, std::size_t hooks);
-void emit_rule_class(Writer& w, const std::string& name, const std::vector<ast::Param>& params);
+void emit_rule_class(Writer& w, const std::string& name, const std::vector<ast::Param>& params,
+                     const check::ExprTypes& types);
 
 }  // namespace rift::emit

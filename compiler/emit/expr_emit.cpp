@@ -39,6 +39,8 @@ class Emitter {
  public:
   explicit Emitter(const ExprContext& ctx) : ctx_(ctx) {}
 
+  Type type_of(const Expr& e) const { return ctx_.types->of(e); }
+
   std::string expr(const Expr& e) {
     switch (e.kind) {
       case Expr::Kind::IntLit:
@@ -47,10 +49,12 @@ class Emitter {
         return real_literal(e.real);
       case Expr::Kind::BoolLit:
         return e.boolean ? "true" : "false";
-      case Expr::Kind::Name:
-        if (e.let) return let_name(e.name);
-        if (e.param) return ctx_.args + "." + member_name(e.name);
+      case Expr::Kind::Name: {
+        const resolve::Binding* b = ctx_.symbols ? &ctx_.symbols->binding(e) : nullptr;
+        if (b && b->let) return let_name(e.name);
+        if (b && b->param) return ctx_.args + "." + member_name(e.name);
         return ctx_.params + "." + member_name(e.name);
+      }
       case Expr::Kind::Read:
         if (ctx_.read) return ctx_.read(e);
         return embedding_var(e.name) + "[" + dart_path(e, ctx_) + "]";
@@ -62,9 +66,9 @@ class Emitter {
       case Expr::Kind::Binary:
         return binary(e);
       case Expr::Kind::Cond: {
-        const std::string t = cpp_type(e.type);
-        return std::string("(") + expr(*e.args[0]) + " ? " + t + "(" + as(*e.args[1], e.type) +
-               ") : " + t + "(" + as(*e.args[2], e.type) + "))";
+        const std::string t = cpp_type(type_of(e));
+        return std::string("(") + expr(*e.args[0]) + " ? " + t + "(" + as(*e.args[1], type_of(e)) +
+               ") : " + t + "(" + as(*e.args[2], type_of(e)) + "))";
       }
       case Expr::Kind::Index: {
         std::string out = std::string("(") + expr(*e.args[0]) + ")(";
@@ -88,7 +92,7 @@ class Emitter {
     if (e.kind == Expr::Kind::IntLit && to == Type::Real) {
       return real_literal(static_cast<double>(e.integer));
     }
-    return convert(expr(e), e.type, to);
+    return convert(expr(e), type_of(e), to);
   }
 
   /// An immediately invoked lambda: one dart per sub-orbit, the body per dart.
@@ -102,7 +106,7 @@ class Emitter {
     const std::string id = std::to_string(fold_depth_);
     const FoldNesting nesting(fold_depth_);
     const std::string acc = "acc" + id, n = "n" + id;
-    const Type acc_type = e.op == "count" ? Type::Int : e.type;
+    const Type acc_type = e.op == "count" ? Type::Int : type_of(e);
     const std::string t = cpp_type(acc_type);
     std::string init = zero_of(acc_type);
     if (e.op == "min") init = "std::numeric_limits<" + t + ">::max()";
@@ -147,8 +151,8 @@ class Emitter {
 
   std::string unary(const Expr& e) {
     if (e.op == "not") return "(!" + expr(*e.args[0]) + ")";
-    if (scalar(e.type)) return "(-" + expr(*e.args[0]) + ")";
-    return cpp_type(e.type) + "(-" + expr(*e.args[0]) + ")";
+    if (scalar(type_of(e))) return "(-" + expr(*e.args[0]) + ")";
+    return cpp_type(type_of(e)) + "(-" + expr(*e.args[0]) + ")";
   }
 
   std::string binary(const Expr& e) {
@@ -159,7 +163,7 @@ class Emitter {
       return std::string("(") + expr(a) + (op == "and" ? " && " : " || ") + expr(b) + ")";
     }
     // Scalars meet in a common type; next to a vector or matrix they are reals.
-    Type ta = a.type, tb = b.type;
+    Type ta = type_of(a), tb = type_of(b);
     if (scalar(ta) && scalar(tb)) {
       const Type common = ta == Type::Real || tb == Type::Real ? Type::Real : Type::Int;
       return std::string("(") + as(a, common) + " " + op + " " + as(b, common) + ")";
@@ -167,13 +171,13 @@ class Emitter {
     const std::string lhs = scalar(ta) ? as(a, Type::Real) : expr(a);
     const std::string rhs = scalar(tb) ? as(b, Type::Real) : expr(b);
     if (op == "==" || op == "!=") return "(" + lhs + " " + op + " " + rhs + ")";
-    return cpp_type(e.type) + "(" + lhs + " " + op + " " + rhs + ")";
+    return cpp_type(type_of(e)) + "(" + lhs + " " + op + " " + rhs + ")";
   }
 
   std::string call(const Expr& e) {
     std::vector<Type> types;
     for (const auto& a : e.args)
-      types.push_back(a->type);
+      types.push_back(type_of(*a));
     const check::Signature* sig = check::select_overload(*check::builtin(e.name), types);
     std::vector<std::string> x;
     for (std::size_t k = 0; k < e.args.size(); ++k)

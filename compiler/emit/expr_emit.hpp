@@ -7,7 +7,9 @@
 #include <string>
 
 #include "ast/expr.hpp"
+#include "check/expr_types.hpp"
 #include "emit/names.hpp"
+#include "resolve/symbols.hpp"
 
 namespace rift::emit {
 
@@ -20,6 +22,11 @@ struct ExprContext {
   /// When set, writes an embedding read (Expr::Kind::Read) instead of
   /// `e_NAME[dart]`: force kernels read through slots cached in the match.
   std::function<std::string(const ast::Expr& read)> read;
+  /// What names refer to (resolve/). Constant expressions name nothing and
+  /// need none.
+  const resolve::Symbols* symbols = nullptr;
+  /// The expressions' types (check/): every context has them.
+  const check::ExprTypes* types = nullptr;
 };
 
 std::string emit_expr(const ast::Expr& e, const ExprContext& ctx);

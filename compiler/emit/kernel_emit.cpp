@@ -656,7 +656,7 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
   const ast::Interaction& inter = *plan.interaction;
   const ir::Body& b = plan.body;
   const std::string params = component_params_struct(inter.name.text);
-  declare_component_params(w, params, inter.params);
+  declare_component_params(w, params, inter.params, *model.types);
   w.line("/// Interaction '" + inter.name.text + "' on " + orbit_text(inter.support.dims) +
          (inter.tagged ? ", tagged" : "") + ": a kernel for rift::CachedInteraction.");
   w.open("class " + k.cls + " {");

@@ -30,13 +30,15 @@ void for_each_criterion(const PackModel& m, F&& f) {
 
 // Appends the embeddings `e` reads (Read and Collect nodes) that `names`
 // does not hold yet, in order of first use.
-void add_embedding_reads(const ast::Expr& e, std::vector<std::string>& names) {
-  if ((e.kind == ast::Expr::Kind::Read || e.kind == ast::Expr::Kind::Collect) && e.embedding &&
-      std::find(names.begin(), names.end(), e.embedding->name.text) == names.end()) {
-    names.push_back(e.embedding->name.text);
+void add_embedding_reads(const ast::Expr& e, const resolve::Symbols& symbols,
+                         std::vector<std::string>& names) {
+  const ast::Embedding* embedding = symbols.binding(e).embedding;
+  if ((e.kind == ast::Expr::Kind::Read || e.kind == ast::Expr::Kind::Collect) && embedding &&
+      std::find(names.begin(), names.end(), embedding->name.text) == names.end()) {
+    names.push_back(embedding->name.text);
   }
   for (const ast::ExprPtr& a : e.args) {
-    if (a) add_embedding_reads(*a, names);
+    if (a) add_embedding_reads(*a, symbols, names);
   }
 }
 
@@ -93,7 +95,7 @@ void write_header(Writer& w, const PackModel& m) {
   for (const ast::File& f : m.program->files) {
     for (const ast::PackParam& p : f.params) {
       w.line(cpp_type(p.type) + " " + member_name(p.name.text) + " = " +
-             constant_expr(*p.value, p.type) + ";");
+             constant_expr(*p.value, p.type, *m.types) + ";");
     }
   }
   w.close("};");
@@ -175,8 +177,8 @@ void write_header(Writer& w, const PackModel& m) {
   w.line("void " + register_function(m.pack) + "(rift::PackRegistry& registry);");
 }
 
-std::string default_of(const ast::Embedding& e) {
-  return e.default_value ? constant_expr(*e.default_value, e.type) : zero_of(e.type);
+std::string default_of(const ast::Embedding& e, const check::ExprTypes& types) {
+  return e.default_value ? constant_expr(*e.default_value, e.type, types) : zero_of(e.type);
 }
 
 void write_pack_class(Writer& w, const PackModel& m) {
@@ -194,7 +196,7 @@ void write_pack_class(Writer& w, const PackModel& m) {
   for_each_embedding(m, [&](const ast::Embedding& e) {
     w.line("embeddings_.push_back({" + quote(e.name.text) + ", " + value_type_enum(e.type) + ", " +
            orbit_code(e.orbit.dims) + ", " + policy_of(e) + ", rift::Value(" +
-           storage_type(e.type) + "(" + default_of(e) + "))});");
+           storage_type(e.type) + "(" + default_of(e, *m.types) + "))});");
   });
   for (const check::CheckedInteraction& ci : *m.interactions) {
     if (!ci.interaction->tagged) continue;
@@ -215,19 +217,19 @@ void write_pack_class(Writer& w, const PackModel& m) {
                               (forces.empty() ? "" : "; forces stored in " + forces);
     w.open("catalog_.interactions.push_back({" + quote(in.name.text) + ", " +
            quote(in.description.empty() ? about : in.description + " (" + about + ")") + ", {");
-    write_param_specs(w, in.params, true);
+    write_param_specs(w, in.params, true, *m.types);
     w.close("}, kDimension, " + name_list(stores) + "});");
   }
   for_each_criterion(m, [&](const ast::Criterion& c) {
     const std::string about = "on " + orbit_text(c.orbit.dims) + "; applies rule " + c.rule.text;
     w.open("catalog_.criteria.push_back({" + quote(c.name.text) + ", " +
            quote(c.description.empty() ? about : c.description + " (" + about + ")") + ", {");
-    write_param_specs(w, c.params, true);
+    write_param_specs(w, c.params, true, *m.types);
     std::vector<std::string> reads;
     for (const ast::Let& l : c.lets) {
-      if (l.value) add_embedding_reads(*l.value, reads);
+      if (l.value) add_embedding_reads(*l.value, *m.symbols, reads);
     }
-    if (c.measure) add_embedding_reads(*c.measure, reads);
+    if (c.measure) add_embedding_reads(*c.measure, *m.symbols, reads);
     w.close("}, kDimension, {}, " + name_list(reads) + "});");
   });
   w.close();
@@ -296,7 +298,7 @@ void write_declare(Writer& w, const PackModel& m) {
     for (const ast::Embedding& e : f.embeddings) {
       const std::string name = quote(e.name.text);
       const std::string orbit = orbit_code(e.orbit.dims);
-      const std::string def = default_of(e);
+      const std::string def = default_of(e, *m.types);
       w.open("if (!g.has_embedding(" + name + ")) {");
       w.line("g.declare_embedding<" + storage_type(e.type) + ">(" + name + ", " + orbit + ", " +
              policy_of(e) + ", " + storage_type(e.type) + "(" + def + "));");
@@ -370,8 +372,9 @@ GeneratedPack generate_pack(const PackModel& m, const diag::SourceManager& sourc
     emit_kernel(w, ip, m);
   for_each_criterion(m, [&](const ast::Criterion& c) { emit_criterion(w, c, m); });
   for (const check::CheckedRule& cr : *m.rules)
-    emit_rule_class(w, cr.rule->name.text, cr.rule->params);
-  for_each_script(m, [&](const ast::Script& s) { emit_rule_class(w, s.name.text, s.params); });
+    emit_rule_class(w, cr.rule->name.text, cr.rule->params, *m.types);
+  for_each_script(
+      m, [&](const ast::Script& s) { emit_rule_class(w, s.name.text, s.params, *m.types); });
   write_pack_class(w, m);
   w.line("}  // namespace rift::packs::" + m.pack);
   w.line();

@@ -79,6 +79,8 @@ void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) 
   const std::string user = "rule '" + rule.name.text + "'";
   ExprContext ctx;
   ctx.dart = [](const std::string& node) { return dart_name(node); };
+  ctx.symbols = model.symbols;
+  ctx.types = model.types;
 
   std::set<std::string> used;
   for (const auto& l : rule.lets)
@@ -129,7 +131,8 @@ void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) 
   }
   for (std::size_t k = 0; k < rule.right.assigns.size(); ++k) {
     const ast::Assign& a = rule.right.assigns[k];
-    w.line("std::vector<" + cpp_type(a.target->type) + "> value_" + std::to_string(k) + "(rows);");
+    w.line("std::vector<" + cpp_type(model.symbols->target(a)->type) + "> value_" +
+           std::to_string(k) + "(rows);");
   }
   if (!rule.right.assigns.empty()) {
     open_row_loop(w, g.left, false);
@@ -138,7 +141,9 @@ void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) 
       const ast::Assign& a = rule.right.assigns[k];
       write_sourced(w, a.value->loc,
                     "value_" + std::to_string(k) + "[r] = " +
-                        convert(emit_expr(*a.value, ctx), a.value->type, a.target->type) + ";");
+                        convert(emit_expr(*a.value, ctx), ctx.types->of(*a.value),
+                                model.symbols->target(a)->type) +
+                        ";");
     }
     w.close();
   }
@@ -199,7 +204,9 @@ void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) 
     for (const ast::Assign& u : rule.updates) {
       write_sourced(w, u.value->loc,
                     embedding_var(u.embedding.text) + "[" + dart_name(u.node.text) + "] = " +
-                        convert(emit_expr(*u.value, ctx), u.value->type, u.target->type) + ";");
+                        convert(emit_expr(*u.value, ctx), ctx.types->of(*u.value),
+                                model.symbols->target(u)->type) +
+                        ";");
     }
     w.close();
   }

@@ -70,6 +70,8 @@ void emit_script(Writer& w, const ast::Script& script, const PackModel& model) {
   const std::string user = "script '" + script.name.text + "'";
   ExprContext ctx;
   ctx.dart = [](const std::string& node) { return dart_name(node); };
+  ctx.symbols = model.symbols;
+  ctx.types = model.types;
   w.line("// " + user + " (" + std::to_string(script.hooks.size()) + " hook(s))");
   w.open("bool " + rule_function(script.name.text) +
          "(rift::GMap& g, std::span<const rift::Dart> hooks, const " + script.name.text +
@@ -95,8 +97,8 @@ void emit_script(Writer& w, const ast::Script& script, const PackModel& model) {
       case ast::ScriptStmt::Kind::Let: {
         const ast::Let& let = script.lets[st.let];
         write_sourced(w, let.value->loc,
-                      "const " + cpp_type(let.value->type) + " " + let_name(let.name.text) + " = " +
-                          emit_expr(*let.value, ctx) + ";");
+                      "const " + cpp_type(ctx.types->of(*let.value)) + " " +
+                          let_name(let.name.text) + " = " + emit_expr(*let.value, ctx) + ";");
         break;
       }
       case ast::ScriptStmt::Kind::Set: {
@@ -104,7 +106,9 @@ void emit_script(Writer& w, const ast::Script& script, const PackModel& model) {
         const ast::Assign& a = st.set;
         write_sourced(w, a.value->loc,
                       embedding_var(a.embedding.text) + "[" + dart_name(a.node.text) + "] = " +
-                          convert(emit_expr(*a.value, ctx), a.value->type, a.target->type) + ";");
+                          convert(emit_expr(*a.value, ctx), ctx.types->of(*a.value),
+                                  model.symbols->target(a)->type) +
+                          ";");
         close_each(w, st);
         break;
       }
@@ -116,7 +120,8 @@ void emit_script(Writer& w, const ast::Script& script, const PackModel& model) {
           const ast::Param* p = param_named(*params, a.name.text);
           write_sourced(w, a.value->loc,
                         "call." + member_name(a.name.text) + " = " +
-                            convert(emit_expr(*a.value, ctx), a.value->type, p->type) + ";");
+                            convert(emit_expr(*a.value, ctx), ctx.types->of(*a.value), p->type) +
+                            ";");
         }
         std::string hooks;
         for (std::size_t k = 0; k < st.hooks.size(); ++k)

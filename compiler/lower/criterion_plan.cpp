@@ -5,13 +5,13 @@
 
 namespace rift::lower {
 
-CriterionPlan plan_criterion(const ast::Criterion& crit,
-                             const std::vector<ast::Param>& rule_params) {
+CriterionPlan plan_criterion(const ast::Criterion& crit, const std::vector<ast::Param>& rule_params,
+                             const resolve::Symbols& symbols, const check::ExprTypes& types) {
   CriterionPlan plan;
   plan.criterion = &crit;
   ir::Body& body = plan.body;
   body.nodes.push_back(crit.dart.text);
-  ExprLowering lowering(body.graph, body.nodes, nullptr);
+  ExprLowering lowering(body.graph, body.nodes, nullptr, symbols, types);
   for (const ast::Let& let : crit.lets) {
     const int index = static_cast<int>(body.lets.size());
     body.lets.push_back({let.name.text, lowering.lower(*let.value), let.value->loc});
@@ -25,7 +25,7 @@ CriterionPlan plan_criterion(const ast::Criterion& crit,
   plan.measure = lowering.lower_as(*crit.measure->args[0], ir::Type::Real);
   plan.threshold = lowering.lower_as(*crit.measure->args[1], ir::Type::Real);
   for (const ast::ApplyArg& a : crit.apply_args) {
-    ir::Type to = a.value->type;
+    ir::Type to = types.of(*a.value);
     for (const ast::Param& p : rule_params) {
       if (p.name.text == a.name.text) to = p.type;
     }

@@ -8,7 +8,9 @@
 #include <vector>
 
 #include "ast/decl.hpp"
+#include "check/expr_types.hpp"
 #include "ir/body.hpp"
+#include "resolve/symbols.hpp"
 
 namespace rift::lower {
 
@@ -23,8 +25,8 @@ struct CriterionPlan {
   std::vector<ir::ExprId> args;
 };
 
-CriterionPlan plan_criterion(const ast::Criterion& crit,
-                             const std::vector<ast::Param>& rule_params);
+CriterionPlan plan_criterion(const ast::Criterion& crit, const std::vector<ast::Param>& rule_params,
+                             const resolve::Symbols& symbols, const check::ExprTypes& types);
 
 /// Marks in `used` (one entry per let) the lets `root` reads, directly or through other lets.
 void lets_read(const ir::Body& body, ir::ExprId root, std::vector<bool>& used);

@@ -36,8 +36,9 @@ Op binary_op(const std::string& op) {
 }  // namespace
 
 ExprLowering::ExprLowering(ir::Graph& graph, std::vector<std::string>& nodes,
-                           const KernelPlan* kernel)
-    : g_(graph), nodes_(nodes), kernel_(kernel) {}
+                           const KernelPlan* kernel, const resolve::Symbols& symbols,
+                           const check::ExprTypes& types)
+    : g_(graph), nodes_(nodes), kernel_(kernel), symbols_(symbols), types_(types) {}
 
 void ExprLowering::add_let(const ast::Let* let, int index) {
   lets_[let] = index;
@@ -82,12 +83,12 @@ ir::Place ExprLowering::place(const Expr& e) const {
 ExprId ExprLowering::read(const Expr& e) {
   ir::Node n;
   n.loc = e.loc;
-  n.type = e.type;
+  n.type = types_.of(e);
   n.place = place(e);
   n.embedding = e.name;
   n.op = Op::Read;
   if (kernel_) {
-    std::vector<int> orbit = e.embedding->orbit.dims;
+    std::vector<int> orbit = symbols_.binding(e).embedding->orbit.dims;
     std::sort(orbit.begin(), orbit.end());
     n.place.slot = kernel_->find(n.place.node, e.hops, orbit);
     if (e.name == check::kPositionEmbedding) n.op = Op::Position;
@@ -101,7 +102,7 @@ ExprId ExprLowering::binary(const Expr& e) {
   const Expr& b = *e.args[1];
   const Op op = binary_op(e.op);
   // Scalars meet in a common type; next to a vector or matrix they are reals.
-  Type ta = a.type, tb = b.type;
+  Type ta = types_.of(a), tb = types_.of(b);
   ExprId x, y;
   if (scalar(ta) && scalar(tb)) {
     const Type common = ta == Type::Real || tb == Type::Real ? Type::Real : Type::Int;
@@ -111,13 +112,13 @@ ExprId ExprLowering::binary(const Expr& e) {
     x = scalar(ta) ? lower_as(a, Type::Real) : lower(a);
     y = scalar(tb) ? lower_as(b, Type::Real) : lower(b);
   }
-  return g_.binary(op, e.type, x, y);
+  return g_.binary(op, types_.of(e), x, y);
 }
 
 ExprId ExprLowering::call(const Expr& e) {
   std::vector<Type> types;
   for (const auto& a : e.args)
-    types.push_back(a->type);
+    types.push_back(types_.of(*a));
   const check::Signature* sig = check::select_overload(*check::builtin(e.name), types);
   std::vector<ExprId> args;
   for (std::size_t k = 0; k < e.args.size(); ++k)
@@ -134,7 +135,7 @@ ExprId ExprLowering::call(const Expr& e) {
 ExprId ExprLowering::fold(const Expr& e) {
   ir::Node n;
   n.op = Op::Fold;
-  n.type = e.type;
+  n.type = types_.of(e);
   n.loc = e.loc;
   n.place = place(e);
   ir::aggregate_from_name(e.op, n.aggregate);
@@ -143,7 +144,7 @@ ExprId ExprLowering::fold(const Expr& e) {
   nodes_.push_back(e.var);
   n.var = static_cast<int>(nodes_.size() - 1);
   const Expr& body = *e.args[0];
-  n.a = e.op == "count" ? lower(body) : lower_as(body, e.type);
+  n.a = e.op == "count" ? lower(body) : lower_as(body, types_.of(e));
   // The variable stays in `nodes` (its index is taken) but no longer resolves.
   nodes_[static_cast<std::size_t>(n.var)] = e.var;
   return g_.add(std::move(n));
@@ -163,13 +164,14 @@ ExprId ExprLowering::lower(const Expr& e) {
       break;
     case Expr::Kind::Name: {
       ir::Node n;
-      n.type = e.type;
+      n.type = types_.of(e);
       n.name = e.name;
-      if (e.let) {
+      const resolve::Binding& b = symbols_.binding(e);
+      if (b.let) {
         n.op = Op::Let;
-        const auto it = lets_.find(e.let);
+        const auto it = lets_.find(b.let);
         n.index = it == lets_.end() ? -1 : it->second;
-      } else if (e.param) {
+      } else if (b.param) {
         n.op = Op::Param;
       } else {
         n.op = Op::PackParam;
@@ -183,7 +185,7 @@ ExprId ExprLowering::lower(const Expr& e) {
       ir::Node n;
       n.op = Op::Collect;
       n.loc = e.loc;
-      n.type = e.type;
+      n.type = types_.of(e);
       n.place = place(e);
       n.embedding = e.name;
       n.orbit = e.orbit.dims;
@@ -192,7 +194,7 @@ ExprId ExprLowering::lower(const Expr& e) {
       break;
     }
     case Expr::Kind::Unary:
-      id = g_.unary(e.op == "not" ? Op::Not : Op::Neg, e.type, lower(*e.args[0]));
+      id = g_.unary(e.op == "not" ? Op::Not : Op::Neg, types_.of(e), lower(*e.args[0]));
       break;
     case Expr::Kind::Binary:
       id = binary(e);
@@ -200,17 +202,17 @@ ExprId ExprLowering::lower(const Expr& e) {
     case Expr::Kind::Cond: {
       ir::Node n;
       n.op = Op::Cond;
-      n.type = e.type;
+      n.type = types_.of(e);
       n.a = lower(*e.args[0]);
-      n.b = lower_as(*e.args[1], e.type);
-      n.c = lower_as(*e.args[2], e.type);
+      n.b = lower_as(*e.args[1], types_.of(e));
+      n.c = lower_as(*e.args[2], types_.of(e));
       id = g_.add(std::move(n));
       break;
     }
     case Expr::Kind::Index: {
       ir::Node n;
       n.op = Op::Index;
-      n.type = e.type;
+      n.type = types_.of(e);
       n.a = lower(*e.args[0]);
       n.b = lower(*e.args[1]);
       if (e.args.size() > 2) n.c = lower(*e.args[2]);

@@ -10,8 +10,10 @@
 #include <vector>
 
 #include "ast/expr.hpp"
+#include "check/expr_types.hpp"
 #include "ir/expr.hpp"
 #include "lower/kernel_plan.hpp"
+#include "resolve/symbols.hpp"
 
 namespace rift::lower {
 
@@ -19,8 +21,9 @@ class ExprLowering {
  public:
   /// `nodes`: the body's dart names (pattern nodes); fold variables are
   /// appended as they are met. `kernel`: set for a force loop, whose reads go
-  /// through the slots it planned.
-  ExprLowering(ir::Graph& graph, std::vector<std::string>& nodes, const KernelPlan* kernel);
+  /// through the slots it planned. `symbols`: what names refer to (resolve/).
+  ExprLowering(ir::Graph& graph, std::vector<std::string>& nodes, const KernelPlan* kernel,
+               const resolve::Symbols& symbols, const check::ExprTypes& types);
 
   /// Lets lowered so far become visible to later expressions.
   void add_let(const ast::Let* let, int index);
@@ -41,6 +44,8 @@ class ExprLowering {
   ir::Graph& g_;
   std::vector<std::string>& nodes_;
   const KernelPlan* kernel_;
+  const resolve::Symbols& symbols_;
+  const check::ExprTypes& types_;
   std::map<const ast::Let*, int> lets_;
 };
 

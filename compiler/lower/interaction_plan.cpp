@@ -16,7 +16,7 @@ void embeddings_read(const ir::Graph& g, ir::ExprId root, std::set<std::string>&
 }  // namespace
 
 InteractionPlan plan_interaction(const check::CheckedInteraction& ci,
-                                 const resolve::Symbols& symbols) {
+                                 const resolve::Symbols& symbols, const check::ExprTypes& types) {
   const ast::Interaction& inter = *ci.interaction;
   InteractionPlan plan;
   plan.interaction = &inter;
@@ -24,7 +24,7 @@ InteractionPlan plan_interaction(const check::CheckedInteraction& ci,
   ir::Body& body = plan.body;
   body.nodes = plan.kernel.nodes;
 
-  ExprLowering loop(body.graph, body.nodes, &plan.kernel);
+  ExprLowering loop(body.graph, body.nodes, &plan.kernel, symbols, types);
   for (const ast::BodyStmt& st : inter.body) {
     ir::Stmt s;
     if (st.kind == ast::BodyStmt::Kind::Let) {
@@ -59,14 +59,14 @@ InteractionPlan plan_interaction(const check::CheckedInteraction& ci,
   if (inter.energy) body.energy = loop.lower_as(*inter.energy, ir::Type::Real);
 
   // Inits run on the initial map, reading through it rather than through slots.
-  ExprLowering at_init(body.graph, body.nodes, nullptr);
+  ExprLowering at_init(body.graph, body.nodes, nullptr, symbols, types);
   for (const ast::Init& init : inter.inits) {
     InitPlan p;
     for (std::size_t v = 0; v < body.nodes.size(); ++v) {
       if (body.nodes[v] == init.dart.text) p.node = static_cast<int>(v);
     }
     p.embedding = init.embedding.text;
-    p.type = init.target->type;
+    p.type = symbols.target(init)->type;
     p.value = at_init.lower_as(*init.value, p.type);
     p.loc = init.value->loc;
     plan.inits.push_back(p);

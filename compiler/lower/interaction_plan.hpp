@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ast/decl.hpp"
+#include "check/expr_types.hpp"
 #include "check/topology.hpp"
 #include "ir/body.hpp"
 #include "lower/kernel_plan.hpp"
@@ -37,6 +38,6 @@ struct InteractionPlan {
 };
 
 InteractionPlan plan_interaction(const check::CheckedInteraction& inter,
-                                 const resolve::Symbols& symbols);
+                                 const resolve::Symbols& symbols, const check::ExprTypes& types);
 
 }  // namespace rift::lower

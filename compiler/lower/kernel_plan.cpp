@@ -15,8 +15,9 @@ std::vector<int> sorted(std::vector<int> dims) {
 
 class SlotCollector {
  public:
-  SlotCollector(const check::RuleGraph& g, int dimension, KernelPlan& plan)
-      : g_(g), dimension_(dimension), plan_(plan) {}
+  SlotCollector(const check::RuleGraph& g, int dimension, const resolve::Symbols& symbols,
+                KernelPlan& plan)
+      : g_(g), dimension_(dimension), symbols_(symbols), plan_(plan) {}
 
   int add(int node, const std::vector<int>& hops, const std::vector<int>& orbit,
           const std::string& via) {
@@ -36,8 +37,9 @@ class SlotCollector {
   }
 
   void reads(const ast::Expr& e) {
-    if (e.kind == ast::Expr::Kind::Read && e.embedding) {
-      add(g_.left.find(e.node), e.hops, e.embedding->orbit.dims, e.name);
+    const ast::Embedding* embedding = symbols_.binding(e).embedding;
+    if (e.kind == ast::Expr::Kind::Read && embedding) {
+      add(g_.left.find(e.node), e.hops, embedding->orbit.dims, e.name);
     }
     for (const auto& a : e.args)
       reads(*a);
@@ -46,6 +48,7 @@ class SlotCollector {
  private:
   const check::RuleGraph& g_;
   int dimension_;
+  const resolve::Symbols& symbols_;
   KernelPlan& plan_;
 };
 
@@ -67,7 +70,7 @@ int KernelPlan::find(int node, const std::vector<int>& hops, const std::vector<i
   return -1;
 }
 
-KernelPlan plan_kernel(const check::CheckedInteraction& ci, const resolve::Symbols& /*symbols*/) {
+KernelPlan plan_kernel(const check::CheckedInteraction& ci, const resolve::Symbols& symbols) {
   const ast::Interaction& inter = *ci.interaction;
   const check::RuleGraph& g = ci.graph;
   KernelPlan plan;
@@ -86,7 +89,7 @@ KernelPlan plan_kernel(const check::CheckedInteraction& ci, const resolve::Symbo
   for (int d : plan.depth)
     plan.radius = std::max(plan.radius, d);
 
-  SlotCollector collect(g, g.dimension, plan);
+  SlotCollector collect(g, g.dimension, symbols, plan);
   for (const auto& l : inter.lets)
     collect.reads(*l.value);
   for (const auto& w : inter.whens)
@@ -97,7 +100,7 @@ KernelPlan plan_kernel(const check::CheckedInteraction& ci, const resolve::Symbo
     ForceStore store;
     store.embedding = f.embedding.text;
     store.vertex_slot = collect.add(node, {}, vertex_orbit(g.dimension), "");
-    store.store_slot = collect.add(node, {}, f.target->orbit.dims, f.embedding.text);
+    store.store_slot = collect.add(node, {}, symbols.target(f)->orbit.dims, f.embedding.text);
     plan.forces.push_back(store);
   }
   if (inter.energy) collect.reads(*inter.energy);

@@ -28,13 +28,12 @@ struct Scope {
 
 class Resolver {
  public:
-  Resolver(const Symbols& symbols, diag::Diagnostics& diags) : symbols_(symbols), diags_(diags) {}
+  Resolver(Symbols& symbols, diag::Diagnostics& diags) : symbols_(symbols), diags_(diags) {}
 
   void expr(const Expr& e, const Scope& scope) {
-    auto& m = const_cast<Expr&>(e);  // passes annotate the tree in place
     switch (e.kind) {
       case Expr::Kind::Name:
-        name(m, scope);
+        name(e, scope);
         break;
       case Expr::Kind::Read:
       case Expr::Kind::Collect:
@@ -43,7 +42,7 @@ class Resolver {
           return;
         }
         node(e.node, e.node_loc, scope);
-        m.embedding = embedding(e.name, e.loc);
+        symbols_.bindings[&e].embedding = embedding(e.name, e.loc);
         break;
       case Expr::Kind::Fold: {
         if (scope.constant) {
@@ -69,6 +68,14 @@ class Resolver {
     const ast::Embedding* emb = symbols_.embedding(name);
     if (!emb) diags_.error(loc, "unknown embedding '" + name + "'");
     return emb;
+  }
+
+  /// Binds the embedding an assignment or an init writes (Symbols::target).
+  void bind_target(const ast::Assign& a) {
+    symbols_.assign_targets[&a] = embedding(a.embedding.text, a.embedding.loc);
+  }
+  void bind_target(const ast::Init& init) {
+    symbols_.init_targets[&init] = embedding(init.embedding.text, init.embedding.loc);
   }
 
   /// Checks that `name` is a node readable in `scope`.
@@ -108,14 +115,14 @@ class Resolver {
   }
 
  private:
-  void name(Expr& e, const Scope& scope) {
+  /// Binds a bare name (Symbols::binding) or reports why it cannot be read.
+  void name(const Expr& e, const Scope& scope) {
     if (scope.lets) {
       // The latest visible let of that name wins.
       for (std::size_t k = scope.visible_lets; k-- > 0;) {
         const ast::Let& let = (*scope.lets)[k];
         if (let.name.text == e.name) {
-          e.ref = ast::NameRef::Let;
-          e.let = &let;
+          symbols_.bindings[&e].let = &let;
           ++let.uses;
           return;
         }
@@ -124,8 +131,7 @@ class Resolver {
     if (scope.params) {
       for (const ast::Param& p : *scope.params) {
         if (p.name.text == e.name) {
-          e.ref = ast::NameRef::RuleParam;
-          e.param = &p;
+          symbols_.bindings[&e].param = &p;
           ++p.uses;
           return;
         }
@@ -136,8 +142,7 @@ class Resolver {
       return;
     }
     if (const ast::PackParam* p = symbols_.param(e.name)) {
-      e.ref = ast::NameRef::PackParam;
-      e.pack_param = p;
+      symbols_.bindings[&e].pack_param = p;
       return;
     }
     if (scope.nodes.count(e.name) || scope.hidden_nodes.count(e.name)) {
@@ -167,7 +172,7 @@ class Resolver {
     diags_.error(e.loc, "unknown name '" + e.name + "'");
   }
 
-  const Symbols& symbols_;
+  Symbols& symbols_;
   diag::Diagnostics& diags_;
 };
 
@@ -192,7 +197,7 @@ void resolve_rule(const ast::Rule& rule, Resolver& r) {
   before.visible_lets = rule.lets.size();
   const std::set<std::string> right = node_names(rule.right);
   for (const auto& a : rule.right.assigns) {
-    const_cast<ast::Assign&>(a).target = r.embedding(a.embedding.text, a.embedding.loc);
+    r.bind_target(a);
     r.expr(*a.value, before);
   }
   Scope after;  // updates read the rewritten map; lets describe the match, so they are not visible
@@ -206,7 +211,7 @@ void resolve_rule(const ast::Rule& rule, Resolver& r) {
   }
   after.hidden_reason = "is deleted by the rule; an update reads the map after the rewrite";
   for (const auto& u : rule.updates) {
-    const_cast<ast::Assign&>(u).target = r.embedding(u.embedding.text, u.embedding.loc);
+    r.bind_target(u);
     if (!right.count(u.node.text)) {
       r.node(u.node.text, u.node.loc, after);
     }
@@ -256,8 +261,7 @@ void resolve_script(const ast::Script& script, const Symbols& symbols, Resolver&
     }
     if (st.where) r.expr(*st.where, inner);
     if (st.kind == ast::ScriptStmt::Kind::Set) {
-      const_cast<ast::Assign&>(st.set).target =
-          r.embedding(st.set.embedding.text, st.set.embedding.loc);
+      r.bind_target(st.set);
       r.node(st.set.node.text, st.set.node.loc, inner);
       r.expr(*st.set.value, inner);
       continue;
@@ -308,7 +312,7 @@ void check_recursion(const CallGraph& calls, diag::Diagnostics& diags) {
 
 }  // namespace
 
-void resolve_names(const ast::Program& program, const Symbols& symbols, diag::Diagnostics& diags) {
+void resolve_names(const ast::Program& program, Symbols& symbols, diag::Diagnostics& diags) {
   Resolver r(symbols, diags);
   Scope constant;
   constant.constant = true;
@@ -320,7 +324,7 @@ void resolve_names(const ast::Program& program, const Symbols& symbols, diag::Di
     for (const auto& p : file.params)
       r.expr(*p.value, constant);
     for (const auto& init : file.inits) {
-      const_cast<ast::Init&>(init).target = r.embedding(init.embedding.text, init.embedding.loc);
+      r.bind_target(init);
       Scope s;
       s.nodes.insert(init.dart.text);
       r.expr(*init.value, s);
@@ -339,7 +343,7 @@ void resolve_names(const ast::Program& program, const Symbols& symbols, diag::Di
       at_init.match_lets_reason =
           "is a value of the force loop; an init runs once on the initial mesh and cannot read it";
       for (const auto& init : inter.inits) {
-        const_cast<ast::Init&>(init).target = r.embedding(init.embedding.text, init.embedding.loc);
+        r.bind_target(init);
         if (!s.nodes.count(init.dart.text)) {
           diags
               .error(init.dart.loc, "an interaction's init writes at one of its pattern nodes; '" +
@@ -353,7 +357,7 @@ void resolve_names(const ast::Program& program, const Symbols& symbols, diag::Di
       s.lets = &inter.lets;
       s.visible_lets = inter.lets.size();
       for (const auto& f : inter.forces) {
-        const_cast<ast::Assign&>(f).target = r.embedding(f.embedding.text, f.embedding.loc);
+        r.bind_target(f);
         r.node(f.node.text, f.node.loc, s);
         r.expr(*f.value, s);
       }

@@ -9,6 +9,8 @@
 
 namespace rift::resolve {
 
-void resolve_names(const ast::Program& program, const Symbols& symbols, diag::Diagnostics& diags);
+/// Records the embedding of every assignment and init in `symbols`
+/// (Symbols::target); the program is only read.
+void resolve_names(const ast::Program& program, Symbols& symbols, diag::Diagnostics& diags);
 
 }  // namespace rift::resolve

@@ -73,4 +73,20 @@ Symbols collect_symbols(const ast::Program& program, diag::Diagnostics& diags) {
   return symbols;
 }
 
+const ast::Embedding* Symbols::target(const ast::Assign& assign) const {
+  const auto it = assign_targets.find(&assign);
+  return it == assign_targets.end() ? nullptr : it->second;
+}
+
+const ast::Embedding* Symbols::target(const ast::Init& init) const {
+  const auto it = init_targets.find(&init);
+  return it == init_targets.end() ? nullptr : it->second;
+}
+
+const Binding& Symbols::binding(const ast::Expr& e) const {
+  static const Binding kUnresolved;
+  const auto it = bindings.find(&e);
+  return it == bindings.end() ? kUnresolved : it->second;
+}
+
 }  // namespace rift::resolve

@@ -4,11 +4,21 @@
 
 #include <map>
 #include <string>
+#include <unordered_map>
 
 #include "ast/program.hpp"
 #include "diag/diagnostics.hpp"
 
 namespace rift::resolve {
+
+/// What a bare name (one of let, param, pack_param) or an embedding read or
+/// collection (embedding) of an expression refers to.
+struct Binding {
+  const ast::Let* let = nullptr;
+  const ast::Param* param = nullptr;
+  const ast::PackParam* pack_param = nullptr;
+  const ast::Embedding* embedding = nullptr;
+};
 
 struct Symbols {
   std::map<std::string, const ast::Embedding*, std::less<>> embeddings;
@@ -24,6 +34,20 @@ struct Symbols {
   const ast::Script* script(std::string_view name) const;
   /// The parameters of the rule or script `name`, or nullptr when there is none.
   const std::vector<ast::Param>* callee_params(std::string_view name) const;
+
+  /// The embedding each assignment (right-node expression, update, force,
+  /// script `set`) and each init writes, as resolve_names bound it: a side
+  /// table, so that the AST stays as the parser built it. nullptr when the
+  /// name is unknown (reported by resolve_names).
+  const ast::Embedding* target(const ast::Assign& assign) const;
+  const ast::Embedding* target(const ast::Init& init) const;
+  std::unordered_map<const ast::Assign*, const ast::Embedding*> assign_targets;
+  std::unordered_map<const ast::Init*, const ast::Embedding*> init_targets;
+
+  /// What each name and each embedding read of an expression refers to, as
+  /// resolve_names bound it (all null when it did not resolve).
+  const Binding& binding(const ast::Expr& e) const;
+  std::unordered_map<const ast::Expr*, Binding> bindings;
 };
 
 /// Collects every declaration; a name declared twice is an error with a note

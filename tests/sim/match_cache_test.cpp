@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <random>
 #include <set>
 
+#include "rift/core/parallel.hpp"
 #include "rift/mesh/assemble.hpp"
 #include "rift/mesh/generators.hpp"
 #include "rift/sim/cached_interaction.hpp"
@@ -58,6 +61,21 @@ struct HingeKernel {
 };
 
 using Hinge = CachedInteraction<HingeKernel>;
+
+// The same kernel with its force targets: CachedInteraction scatters it in
+// the order of a ScatterColouring.
+struct ColouredHingeKernel : HingeKernel {
+  static constexpr int kForceTerms = 2;
+  void force_targets(const Match& m, Slot* out) const {
+    out[0] = m.far_a;
+    out[1] = m.far_b;
+  }
+  void add_forces_all(std::span<const Match> ms, const ForceInput& in, Vec3* f, bool store) {
+    for (const Match& m : ms)
+      add_forces(m, in, f, store);
+  }
+};
+using ColouredHinge = CachedInteraction<ColouredHingeKernel>;
 
 std::multiset<std::tuple<Dart, Slot, Slot, Slot, Slot>> contents(const Hinge& h) {
   std::multiset<std::tuple<Dart, Slot, Slot, Slot, Slot>> s;
@@ -121,6 +139,68 @@ TEST_P(MatchCacheTest, LocalRematchEqualsFullRematch) {
 
 INSTANTIATE_TEST_SUITE_P(Meshes, MatchCacheTest,
                          ::testing::Values("grid:quad:4x4", "grid:mix:3x3"));
+
+// After every local re-match the colouring still covers each match once and
+// no two blocks of one colour share a vertex, and the forces are the same
+// bits on 1 and 3 threads (blocks of 4 matches: many blocks, many colours).
+TEST(MatchCache, TheScatterColouringFollowsLocalRematches) {
+  GMap map = assemble_gmap(make_generated_mesh("grid:quad:12x12"));
+  ColouredHinge hinge;
+  hinge.set_scatter_block(4);
+  hinge.initialise(map);
+  auto targets = [&](std::size_t e, Slot* out) {
+    hinge.kernel().force_targets(hinge.cache().matches()[e], out);
+  };
+  ASSERT_EQ(hinge.colouring().check(hinge.active_matches(), 2, targets), "");
+  EXPECT_GT(hinge.colouring().colours(), 1u);
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<Dart> pick(0, static_cast<Dart>(map.capacity() - 1));
+  std::vector<std::pair<Dart, Dart>> undone;
+  for (int step = 0; step < 200; ++step) {
+    std::vector<Dart> touched;
+    if (step % 3 == 2 && !undone.empty()) {
+      const auto [a, b] = undone.back();
+      undone.pop_back();
+      if (!map.sew(a, b, 2)) continue;
+      map.for_each_in_orbit(a, Orbit::sewing(2, 2), [&](Dart x) {
+        touched.push_back(x);
+        touched.push_back(map.alpha(x, 2));
+      });
+    } else {
+      const Dart d = pick(rng);
+      if (map.is_free(d, 2)) continue;
+      undone.emplace_back(d, map.alpha(d, 2));
+      map.for_each_in_orbit(d, Orbit::sewing(2, 2), [&](Dart x) {
+        touched.push_back(x);
+        touched.push_back(map.alpha(x, 2));
+      });
+      map.unsew(d, 2);
+    }
+    std::vector<Dart> region;
+    for (Dart t : touched)
+      map.for_each_in_orbit(t, Orbit::cell(0, 2), [&](Dart x) { region.push_back(x); });
+    hinge.rematch(map, region);
+    ASSERT_EQ(hinge.colouring().check(hinge.active_matches(), 2, targets), "") << "step " << step;
+  }
+  EXPECT_GT(hinge.colouring().blocks() * 4, hinge.active_matches()) << "pending became blocks";
+  auto& x = map.embedding<Vec3>("position").values();
+  for (std::size_t i = 0; i < x.size(); ++i)
+    x[i] += Vec3(1e-3 * std::sin(3.0 * i), 1e-5 * std::cos(7.0 * i), 1e-7 * i);
+  const std::vector<Vec3> v(x.size(), Vec3::Zero());
+  std::vector<Vec3> one(x.size(), Vec3::Zero()), three(x.size(), Vec3::Zero());
+  set_thread_count(1);
+  hinge.add_forces({x.data(), v.data()}, one.data(), false);
+  set_thread_count(3);
+  hinge.add_forces({x.data(), v.data()}, three.data(), false);
+  set_thread_count(0);
+  EXPECT_EQ(std::memcmp(one.data(), three.data(), one.size() * sizeof(Vec3)), 0);
+  // The same forces as a plain loop over the matches (up to rounding).
+  std::vector<Vec3> plain(x.size(), Vec3::Zero());
+  for (const auto& m : hinge.cache().matches())
+    hinge.kernel().add_forces(m, {x.data(), v.data()}, plain.data(), false);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    EXPECT_LE((plain[i] - one[i]).norm(), 1e-12 * (1 + plain[i].norm())) << i;
+}
 
 TEST(MatchCache, LostMatchesResetTheirStoredForces) {
   GMap map = assemble_gmap(make_grid(GridKind::Quad, 2, 1));

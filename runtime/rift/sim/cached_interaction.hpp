@@ -26,15 +26,15 @@
 // rule's `semidefinite;`), and a kernel without them may give `static constexpr const char*
 // kJacobianUnavailable` (riftc's located reason).
 //
-// On several threads (rift/core/parallel.hpp) a kernel that supplies
+// A kernel that supplies its force targets (riftc emits them)
 //
 //   static constexpr int kForceTerms;                   // forces per match
 //   void force_targets(const Match&, Slot* out) const;  // their vertex slots
-//   void force_terms_all(std::span<const Match>, const ForceInput&, Vec3* terms, bool store);
 //
-// has its matches evaluated in parallel blocks, each match writing its forces
-// to its own entries, then summed per vertex by a TermGather in match order:
-// the bits of the one-thread pass, whatever the thread count.
+// scatters in the order of a ScatterColouring (rift/sim/scatter_colouring.hpp):
+// blocks of matches coloured so that the blocks of one colour share no
+// vertex run in parallel, straight into f, and each vertex receives its
+// terms in the same order on any number of threads (one thread included).
 #pragma once
 
 #include <algorithm>
@@ -45,7 +45,7 @@
 #include "rift/core/parallel.hpp"
 #include "rift/sim/force_model.hpp"
 #include "rift/sim/match_cache.hpp"
-#include "rift/sim/term_gather.hpp"
+#include "rift/sim/scatter_colouring.hpp"
 
 namespace rift {
 
@@ -59,49 +59,37 @@ class CachedInteraction final : public ForceModel {
   Kernel& kernel() { return kernel_; }
 
   void initialise(GMap& map) override {
-    gather_stale_ = true;
     kernel_.initialise(map);
     cache_.build(map, Kernel::kSupport, [&](const GMap& m, Dart d, typename Kernel::Match& out) {
       return kernel_.match(m, d, out);
     });
+    if constexpr (kColoured) {
+      const auto all = cache_.matches();
+      colouring_.build(all.size(), Kernel::kForceTerms,
+                       [&](std::size_t e, Slot* out) { kernel_.force_targets(all[e], out); });
+    }
   }
 
   void rematch(const GMap& map, std::span<const Dart> region) override {
-    gather_stale_ = true;
-    cache_.rematch(
-        map, Kernel::kSupport, Kernel::kRadius, region,
-        [&](const GMap& m, Dart d, typename Kernel::Match& out) {
-          return kernel_.match(m, d, out);
-        },
-        [&](const typename Kernel::Match& lost, bool alive) {
-          if (alive) kernel_.reset_stored(lost);
-        });
+    auto match = [&](const GMap& m, Dart d, typename Kernel::Match& out) {
+      return kernel_.match(m, d, out);
+    };
+    auto lost = [&](const typename Kernel::Match& m, bool alive) {
+      if (alive) kernel_.reset_stored(m);
+    };
+    if constexpr (kColoured) {
+      ColouringObserver observer{kernel_, colouring_};
+      cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost, observer);
+    } else {
+      cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost);
+    }
   }
 
   void add_forces(const ForceInput& in, Vec3* f, bool store) override {
-    using Match = typename Kernel::Match;
-    const std::span<const Match> all(cache_.matches());
-    if constexpr (requires { Kernel::kForceTerms; }) {
-      if (thread_count() > 1 && all.size() >= kMinParallelBlocks * kParallelBlock) {
-        add_forces_parallel(in, f, store);
-        return;
-      }
-    }
-    // The pass runs in blocks so that an interrupt is seen within one block
-    // (a few thousand matches: microseconds), not one whole pass.
-    for (std::size_t first = 0; first < all.size(); first += kInterruptBlock) {
-      throw_if_interrupted();
-      const std::span<const Match> block =
-          all.subspan(first, std::min(kInterruptBlock, all.size() - first));
-      if constexpr (requires(Kernel & k, std::span<const Match> ms) {
-                      k.add_forces_all(ms, in, f, store);
-                    }) {
-        // Generated kernels run the whole block themselves (columns read once).
-        kernel_.add_forces_all(block, in, f, store);
-      } else {
-        for (const auto& m : block)
-          kernel_.add_forces(m, in, f, store);
-      }
+    if constexpr (kColoured) {
+      add_forces_coloured(in, f, store);
+    } else {
+      add_forces_in_order(in, f, store);
     }
   }
 
@@ -169,38 +157,86 @@ class CachedInteraction final : public ForceModel {
     }
   }
   const MatchCache<typename Kernel::Match>& cache() const { return cache_; }
+  const ScatterColouring& colouring() const { return colouring_; }
+  /// Matches per block of the coloured scatter; before initialise (tests
+  /// use small blocks to have many).
+  void set_scatter_block(std::size_t block) { colouring_ = ScatterColouring(block); }
 
  private:
-  void add_forces_parallel(const ForceInput& in, Vec3* f, bool store) {
-    using Match = typename Kernel::Match;
-    constexpr std::size_t k = Kernel::kForceTerms;
-    const std::span<const Match> all(cache_.matches());
-    if (gather_stale_) {
-      // Once per change of the matches (a tear), not per pass.
-      targets_.resize(all.size() * k);
-      for (std::size_t i = 0; i < all.size(); ++i)
-        kernel_.force_targets(all[i], targets_.data() + i * k);
-      gather_.build(targets_);
-      gather_stale_ = false;
+  using Match = typename Kernel::Match;
+  static constexpr bool kColoured =
+      requires(Kernel & k, const Match& m, Slot* out, std::span<const Match> ms,
+               const ForceInput& in, Vec3* f) {
+    Kernel::kForceTerms;
+    k.force_targets(m, out);
+    k.add_forces_all(ms, in, f, true);
+  };
+
+  // Follows the match cache's changes in the colouring.
+  struct ColouringObserver {
+    Kernel& kernel;
+    ScatterColouring& colouring;
+    void erased(std::uint32_t e, std::uint32_t last) { colouring.erase(e, last); }
+    void replaced(std::uint32_t e, const Match& before, const Match& after) {
+      Slot a[Kernel::kForceTerms], b[Kernel::kForceTerms];
+      kernel.force_targets(before, a);
+      kernel.force_targets(after, b);
+      colouring.replace(e, std::equal(a, a + Kernel::kForceTerms, b), b);
     }
-    terms_.resize(all.size() * k);  // keeps its capacity: no allocation once warm
-    auto run = [&](std::size_t first, std::size_t last) {
-      throw_if_interrupted();
-      kernel_.force_terms_all(all.subspan(first, last - first), in, terms_.data() + first * k,
-                              store);
+    void inserted(std::uint32_t e, const Match& m) {
+      Slot s[Kernel::kForceTerms];
+      kernel.force_targets(m, s);
+      colouring.insert(e, s);
+    }
+  };
+
+  void add_forces_coloured(const ForceInput& in, Vec3* f, bool store) {
+    const std::span<const Match> all(cache_.matches());
+    auto body = [&](const std::uint32_t* entries, std::size_t n, bool consecutive) {
+      if (n == 0) return;
+      if (consecutive) {
+        kernel_.add_forces_all(all.subspan(entries[0], n), in, f, store);
+        return;
+      }
+      // A block a tear reshuffled: its matches copied in order, a few at a
+      // time, into a buffer the kernel runs over.
+      Match buffer[kGather];
+      for (std::size_t first = 0; first < n; first += kGather) {
+        const std::size_t count = std::min(kGather, n - first);
+        for (std::size_t i = 0; i < count; ++i)
+          buffer[i] = all[entries[first + i]];
+        kernel_.add_forces_all(std::span<const Match>(buffer, count), in, f, store);
+      }
     };
-    parallel_blocks(all.size(), kParallelBlock, run);
-    gather_.add_to(terms_.data(), f);
+    colouring_.run(body);
   }
 
+  // A kernel without targets: in match order. The pass runs in blocks so that
+  // an interrupt is seen within one block (a few thousand matches:
+  // microseconds), not one whole pass.
+  void add_forces_in_order(const ForceInput& in, Vec3* f, bool store) {
+    const std::span<const Match> all(cache_.matches());
+    for (std::size_t first = 0; first < all.size(); first += kInterruptBlock) {
+      throw_if_interrupted();
+      const std::span<const Match> block =
+          all.subspan(first, std::min(kInterruptBlock, all.size() - first));
+      if constexpr (requires(Kernel & k, std::span<const Match> ms) {
+                      k.add_forces_all(ms, in, f, store);
+                    }) {
+        // Generated kernels run the whole block themselves (columns read once).
+        kernel_.add_forces_all(block, in, f, store);
+      } else {
+        for (const auto& m : block)
+          kernel_.add_forces(m, in, f, store);
+      }
+    }
+  }
+
+  static constexpr std::size_t kGather = 64;
   static constexpr std::size_t kInterruptBlock = 4096;
   Kernel kernel_;
   MatchCache<typename Kernel::Match> cache_;
-  // The force pass on several threads: per-match forces and their gather.
-  std::vector<Vec3> terms_;
-  std::vector<Slot> targets_;
-  TermGather gather_;
-  bool gather_stale_ = true;
+  ScatterColouring colouring_;  ///< the order of the force pass, when the kernel gives targets
 };
 
 }  // namespace rift

@@ -35,18 +35,38 @@ class MatchCache {
     });
   }
 
+  /// What rematch tells an observer of the dense array (the scatter
+  /// colouring), in the order it happens. Entries are indices in matches().
+  struct NoObserver {
+    /// Entry e is dropped; `last` (the last entry) then takes index e.
+    void erased(std::uint32_t /*e*/, std::uint32_t /*last*/) {}
+    /// Entry e is matched again: `before` becomes `after`.
+    void replaced(std::uint32_t /*e*/, const Match& /*before*/, const Match& /*after*/) {}
+    /// A new entry e (the last).
+    void inserted(std::uint32_t /*e*/, const Match& /*m*/) {}
+  };
+
   /// Re-matches every support orbit within `radius` links of `region` (the
   /// darts a rewrite touched, live or deleted). lost(const Match&, bool alive)
   /// is called for each match that disappears, before it is dropped.
   template <class MatchFn, class LostFn>
   void rematch(const GMap& map, Orbit support, int radius, std::span<const Dart> region,
                MatchFn&& match, LostFn&& lost) {
+    NoObserver none;
+    rematch(map, support, radius, region, match, lost, none);
+  }
+
+  /// The same, telling `observer` (a NoObserver's three methods) of every
+  /// change of the dense array.
+  template <class MatchFn, class LostFn, class Observer>
+  void rematch(const GMap& map, Orbit support, int radius, std::span<const Dart> region,
+               MatchFn&& match, LostFn&& lost, Observer& observer) {
     if (entry_of_dart_.size() < map.capacity()) entry_of_dart_.resize(map.capacity(), kNone);
     // Deleted owners first: their matches are gone for good.
     for (Dart d : region) {
       if (d < entry_of_dart_.size() && entry_of_dart_[d] != kNone && !map.is_alive(d)) {
         lost(matches_[entry_of_dart_[d]], false);
-        erase(entry_of_dart_[d]);
+        erase(entry_of_dart_[d], observer);
       }
     }
     // Every live dart within `radius` links of the region, each once.
@@ -86,7 +106,7 @@ class MatchCache {
         } else {
           // Two orbits merged (a sew): one match is enough.
           lost(matches_[e], true);
-          erase(e);
+          erase(e, observer);
         }
       });
       Match m{};
@@ -94,13 +114,15 @@ class MatchCache {
       if (owner != kNoDart) {
         const std::uint32_t e = entry_of_dart_[owner];
         if (matched) {
+          observer.replaced(e, matches_[e], m);
           matches_[e] = m;
         } else {
           lost(matches_[e], true);
-          erase(e);
+          erase(e, observer);
         }
       } else if (matched) {
         insert(d, m);
+        observer.inserted(static_cast<std::uint32_t>(matches_.size() - 1), m);
       }
     }
     for (Dart d : frontier_) {
@@ -119,8 +141,10 @@ class MatchCache {
     owners_.push_back(owner);
   }
   // Swap-and-pop keeps the array dense.
-  void erase(std::uint32_t e) {
+  template <class Observer>
+  void erase(std::uint32_t e, Observer& observer) {
     const std::uint32_t last = static_cast<std::uint32_t>(matches_.size() - 1);
+    observer.erased(e, last);
     entry_of_dart_[owners_[e]] = kNone;
     if (e != last) {
       matches_[e] = matches_[last];

@@ -1,0 +1,155 @@
+// The order in which a force pass scatters its matches, the same for any
+// thread count, with blocks of one colour safe to run at once.
+//
+// A force pass adds each match's forces to its vertices (f[v] += ...): two
+// matches sharing a vertex must not run at once, and for the sums to be the
+// same bits on 1 or 8 threads each vertex must receive its terms in an order
+// that does not depend on the threads. Here the matches are grouped in blocks
+// of block() consecutive matches (a size that depends on nothing but the
+// matches), and the blocks are coloured so that two blocks of one colour touch
+// no common vertex. A pass runs colour by colour, the blocks of one colour in
+// parallel, each block's matches in order, scattering straight into f: a
+// vertex receives its terms colour by colour, one block per colour, so in the
+// same order whatever the threads (one thread runs the same order too). No
+// per-match terms go through memory.
+//
+// After a tear (MatchCache::rematch) the colouring follows locally: a match
+// lost leaves its block, a match whose vertices changed and a new match go
+// to a short "pending" list scattered after the colours on one thread, and
+// every block() pending matches become a new block with its own colour. Masks
+// per vertex (one bit per colour of a block touching it) make colouring a
+// block cost its own size; they only ever over-approximate (a block that
+// loses a match keeps its bits), which can cost a colour, never a race.
+//
+// Entries are the indices of the matches in the MatchCache's dense array.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "rift/core/types.hpp"
+
+namespace rift {
+
+class ScatterColouring {
+ public:
+  /// Matches per block, by default: n / kTargetBlocks for n matches, at
+  /// least kMinBlock. Large blocks meet few others (few colours) and have
+  /// few vertices on their border, which each colour's sweep reads again;
+  /// 64 blocks leave a few per colour to every thread of a large machine.
+  /// The size depends on the matches alone, never on the threads.
+  static constexpr std::size_t kMinBlock = 2048;
+  static constexpr std::size_t kTargetBlocks = 64;
+
+  /// `block`: matches per block, 0 for the default above (tests use small
+  /// blocks to have many).
+  explicit ScatterColouring(std::size_t block = 0) : fixed_block_(block) {}
+  /// Colours beyond this many: the block runs on one thread after them.
+  static constexpr int kMaxColours = 64;
+
+  /// A non-owning reference to `void(const std::uint32_t* entries,
+  /// std::size_t count, bool consecutive)`: one block's entries, in order;
+  /// `consecutive` when they are entries[0], entries[0] + 1, ...
+  class BlockBody {
+   public:
+    template <class F>
+    requires(!std::is_same_v<std::remove_cvref_t<F>, BlockBody>)
+        BlockBody(F& f)  // NOLINT(google-explicit-constructor): an argument adaptor
+        : object_(static_cast<void*>(&f)),
+          call_([](void* o, const std::uint32_t* e, std::size_t n, bool c) {
+            (*static_cast<F*>(o))(e, n, c);
+          }) {}
+    void operator()(const std::uint32_t* e, std::size_t n, bool consecutive) const {
+      call_(object_, e, n, consecutive);
+    }
+
+   private:
+    void* object_;
+    void (*call_)(void*, const std::uint32_t*, std::size_t, bool);
+  };
+
+  /// Groups entries 0..n-1 in blocks of block() consecutive entries and
+  /// colours them. `targets(e, out)` writes the k vertex slots entry e adds
+  /// forces to (kNoSlot: none). O(n k).
+  template <class Targets>
+  void build(std::size_t n, int k, Targets&& targets) {
+    begin_build(n, k);
+    for (std::size_t first = 0; first < n; first += block_) {
+      const std::size_t last = std::min(n, first + block_);
+      scratch_.resize((last - first) * k_);
+      for (std::size_t e = first; e < last; ++e)
+        targets(e, scratch_.data() + (e - first) * k_);
+      colour_block(static_cast<std::uint32_t>(first / block_), scratch_);
+    }
+  }
+
+  /// The matches changed (MatchCache::rematch's events, in its order).
+  /// Entry e is dropped and the last entry `last` takes its index.
+  void erase(std::uint32_t e, std::uint32_t last);
+  /// Entry e keeps its place when its vertices are the same (`same`), else
+  /// goes to the pending list (whose vertex slots are `slots`).
+  void replace(std::uint32_t e, bool same, std::span<const Slot> slots);
+  /// A new entry (the index after the last) with these vertex slots.
+  void insert(std::uint32_t e, std::span<const Slot> slots);
+
+  /// Calls body on every block: colour by colour, the blocks of one colour
+  /// in parallel (rift/core/parallel.hpp), then the blocks beyond
+  /// kMaxColours and the pending entries on the calling thread.
+  void run(BlockBody body) const;
+
+  std::size_t block() const { return block_; }
+  std::size_t colours() const { return by_colour_.size(); }
+  std::size_t blocks() const { return blocks_.size(); }
+  std::size_t pending() const { return pending_.size(); }
+  std::size_t entries() const { return where_.size(); }
+
+  /// Checks the colouring against the targets the matches have now (for
+  /// tests): every entry in exactly one place, no vertex touched by two
+  /// blocks of one colour. Returns an empty string or what is wrong.
+  template <class Targets>
+  std::string check(std::size_t n, int k, Targets&& targets) const {
+    std::vector<Slot> all(n * static_cast<std::size_t>(k));
+    for (std::size_t e = 0; e < n; ++e)
+      targets(e, all.data() + e * static_cast<std::size_t>(k));
+    return check_targets(all, k);
+  }
+
+ private:
+  struct Block {
+    std::uint32_t size = 0;
+    std::uint16_t colour = 0;  ///< kSerial: beyond kMaxColours
+    bool consecutive = true;   ///< order_ holds first, first + 1, ...
+  };
+  static constexpr std::uint16_t kSerial = 0xffff;
+  static constexpr std::uint32_t kPendingBit = 0x80000000u;
+
+  /// Blocks of block() consecutive entries, not yet coloured.
+  void begin_build(std::size_t n, int k);
+  /// Colours block b from the masks of `slots` and records its bits.
+  void colour_block(std::uint32_t b, std::span<const Slot> slots);
+  /// Takes e out of its block or the pending list.
+  void remove(std::uint32_t e);
+  void add_pending(std::uint32_t e, std::span<const Slot> slots);
+  /// Every block() pending entries become a block.
+  void flush_pending();
+  std::string check_targets(std::span<const Slot> targets, int k) const;
+
+  std::size_t fixed_block_;  ///< 0: chosen by build()
+  std::size_t block_ = kMinBlock;
+  std::size_t k_ = 0;
+  std::vector<Block> blocks_;
+  std::vector<std::uint32_t> order_;  ///< blocks × block(): block b's entries from b·block()
+  std::vector<std::uint32_t> where_;  ///< per entry: its index in order_, or kPendingBit | index
+  std::vector<std::vector<std::uint32_t>> by_colour_;  ///< block ids, increasing
+  std::vector<std::uint32_t> serial_;                  ///< blocks beyond kMaxColours
+  std::vector<std::uint32_t> pending_;
+  std::vector<Slot> pending_slots_;  ///< pending × k: their vertex slots, for colouring
+  std::vector<std::uint64_t> mask_;  ///< per vertex slot: colours of blocks touching it
+  std::vector<Slot> scratch_;        ///< one block's vertex slots, while colouring it
+};
+
+}  // namespace rift

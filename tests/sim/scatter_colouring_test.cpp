@@ -1,0 +1,161 @@
+// The coloured scatter order (rift/sim/scatter_colouring.hpp): no vertex is
+// touched by two blocks of one colour, every entry is scattered once, after
+// any sequence of the match cache's changes, and the per-vertex sums are the
+// same bits on any number of threads.
+#include "rift/sim/scatter_colouring.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "rift/core/parallel.hpp"
+
+namespace rift {
+namespace {
+
+struct ThreadCountGuard {
+  ~ThreadCountGuard() { set_thread_count(0); }
+};
+
+using Spring = std::array<Slot, 2>;
+
+/// Springs between the neighbours of an n×n grid of vertices, row by row
+/// (the order of a mesh's elements), both directions of each edge as the
+/// paper's atomic springs.
+std::vector<Spring> grid_springs(Slot n) {
+  std::vector<Spring> s;
+  for (Slot r = 0; r < n; ++r) {
+    for (Slot c = 0; c < n; ++c) {
+      const Slot v = r * n + c;
+      if (c + 1 < n) {
+        s.push_back({v, v + 1});
+        s.push_back({v + 1, v});
+      }
+      if (r + 1 < n) {
+        s.push_back({v, v + n});
+        s.push_back({v + n, v});
+      }
+    }
+  }
+  return s;
+}
+
+void build(ScatterColouring& c, const std::vector<Spring>& springs) {
+  c.build(springs.size(), 2, [&](std::size_t e, Slot* out) {
+    out[0] = springs[e][0];
+    out[1] = springs[e][1];
+  });
+}
+
+std::string check(const ScatterColouring& c, const std::vector<Spring>& springs) {
+  return c.check(springs.size(), 2, [&](std::size_t e, Slot* out) {
+    out[0] = springs[e][0];
+    out[1] = springs[e][1];
+  });
+}
+
+/// Per vertex, the sum of its springs' terms (of very different magnitudes,
+/// so that any change of order changes the bits) in the colouring's order.
+std::vector<Real> scatter(const ScatterColouring& c, const std::vector<Spring>& springs,
+                          std::size_t vertices, std::vector<int>* visits = nullptr) {
+  std::vector<Real> sum(vertices, 0);
+  if (visits) visits->assign(springs.size(), 0);
+  auto body = [&](const std::uint32_t* entries, std::size_t n, bool consecutive) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint32_t e = entries[i];
+      if (consecutive) {
+        EXPECT_EQ(e, entries[0] + i);
+      }
+      if (visits) ++(*visits)[e];
+      const Real term = std::ldexp(1.0 + 1e-3 * e, static_cast<int>(e % 61) - 30);
+      sum[springs[e][0]] += term;
+      sum[springs[e][1]] -= 0.5 * term;
+    }
+  };
+  c.run(body);
+  return sum;
+}
+
+TEST(ScatterColouring, AGridNeedsFewColoursAndNoBlocksOfOneColourShareAVertex) {
+  const std::vector<Spring> springs = grid_springs(60);
+  for (std::size_t block : {16u, 256u, 2048u}) {
+    ScatterColouring c(block);
+    build(c, springs);
+    EXPECT_EQ(check(c, springs), "") << block;
+    EXPECT_EQ(c.blocks(), (springs.size() + block - 1) / block);
+    EXPECT_EQ(c.pending(), 0u);
+    EXPECT_LE(c.colours(), 6u) << block;
+    std::vector<int> visits;
+    scatter(c, springs, 3600, &visits);
+    for (int v : visits)
+      ASSERT_EQ(v, 1);
+  }
+}
+
+TEST(ScatterColouring, FollowsErasesReplacementsAndInsertionsAndSumsTheSameOnAnyThreads) {
+  ThreadCountGuard guard;
+  std::vector<Spring> springs = grid_springs(40);
+  Slot vertices = 1600;
+  ScatterColouring c(16);
+  build(c, springs);
+  std::mt19937 rng(3);
+  for (int step = 0; step < 3000; ++step) {
+    const int what = static_cast<int>(rng() % 3);
+    const auto e = static_cast<std::uint32_t>(rng() % springs.size());
+    if (what == 0 && springs.size() > 1) {  // swap-and-pop, as MatchCache::erase
+      const auto last = static_cast<std::uint32_t>(springs.size() - 1);
+      c.erase(e, last);
+      springs[e] = springs[last];
+      springs.pop_back();
+    } else if (what == 1) {
+      // Matched again: half the time the same vertices, else one moved to
+      // another vertex, sometimes a new one (a split).
+      Spring s = springs[e];
+      const bool same = rng() % 2 == 0;
+      if (!same) s[rng() % 2] = rng() % 8 == 0 ? vertices++ : static_cast<Slot>(rng() % vertices);
+      c.replace(e, same, s);
+      springs[e] = s;
+    } else {
+      const Spring s{static_cast<Slot>(rng() % vertices), static_cast<Slot>(rng() % vertices)};
+      c.insert(static_cast<std::uint32_t>(springs.size()), s);
+      springs.push_back(s);
+    }
+    if (step % 50 == 0 || step > 2950) {
+      ASSERT_EQ(check(c, springs), "") << "step " << step;
+    }
+  }
+  EXPECT_GT(c.blocks(), springs.size() / 16) << "pending entries became blocks";
+  std::vector<int> visits;
+  set_thread_count(1);
+  const std::vector<Real> one = scatter(c, springs, vertices, &visits);
+  for (int v : visits)
+    ASSERT_EQ(v, 1);
+  for (int threads : {2, 8}) {
+    set_thread_count(threads);
+    const std::vector<Real> many = scatter(c, springs, vertices);
+    EXPECT_EQ(std::memcmp(one.data(), many.data(), one.size() * sizeof(Real)), 0) << threads;
+  }
+}
+
+TEST(ScatterColouring, BlocksThatTouchEverythingRunOnOneThreadAfterTheColours) {
+  // Every spring touches vertex 0: no two blocks may share a colour, so
+  // beyond kMaxColours blocks the rest must run serially.
+  std::vector<Spring> springs;
+  for (Slot v = 1; v <= 200; ++v)
+    springs.push_back({0, v});
+  ScatterColouring c(2);
+  build(c, springs);
+  EXPECT_EQ(c.colours(), static_cast<std::size_t>(ScatterColouring::kMaxColours));
+  EXPECT_EQ(check(c, springs), "");
+  std::vector<int> visits;
+  scatter(c, springs, 201, &visits);
+  for (int v : visits)
+    ASSERT_EQ(v, 1);
+}
+
+}  // namespace
+}  // namespace rift
