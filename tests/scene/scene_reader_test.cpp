@@ -118,8 +118,8 @@ TEST_F(SceneFiles, WrongValuesAreRejectedWithWhatIsExpected) {
   EXPECT_EQ(with("threshold = 0.5", "threshold = \"high\""),
             ":24: error: 'threshold' must be a number, not a string");
   EXPECT_EQ(with("rk4", "rk5"),
-            ":7: error: unknown integrator 'rk5': expected euler, symplectic_euler, rk4 or "
-            "implicit_euler (did you mean 'rk4'?)");
+            ":7: error: unknown integrator 'rk5': expected euler, symplectic_euler, rk4, "
+            "implicit_euler or bdf2 (did you mean 'rk4'?)");
   EXPECT_EQ(with("\"grid:quad:10x10\"", "\"missing.obj\""),
             ":3: error: mesh file '" + (dir_ / "missing.obj").string() + "' does not exist");
   EXPECT_EQ(with("\"grid:quad:10x10\"", "\"grid:quad:0x10\""),
@@ -188,8 +188,8 @@ TEST_F(SceneFiles, ImplicitSolverKeys) {
   std::string rk4 = kGood;
   rk4.replace(rk4.find("[mass]"), 6, "[implicit]\ncg_tolerance = 1e-4\n\n[mass]");
   EXPECT_EQ(error(rk4),
-            ":12: error: [implicit] sets the solver of integrator = \"implicit_euler\", but the "
-            "scene's integrator is 'rk4'");
+            ":12: error: [implicit] sets the solver of integrator = \"implicit_euler\" or "
+            "\"bdf2\", but the scene's integrator is 'rk4'");
 }
 
 TEST_F(SceneFiles, MissingPiecesAndBrokenToml) {

@@ -14,6 +14,7 @@
 
 #include "rift/mesh/assemble.hpp"
 #include "rift/mesh/generators.hpp"
+#include "rift/sim/bdf2.hpp"
 #include "rift/sim/simulation.hpp"
 #include "test_spring_model.hpp"
 
@@ -51,7 +52,7 @@ class AnchorSprings final : public ForceModel {
   std::size_t n_;
 };
 
-Real oscillator_error(Real dt, Real t_end) {
+Real oscillator_error(Real dt, Real t_end, bool bdf2 = false) {
   const Real k = 4.0;  // omega = 2 with unit mass
   AnchorSprings model(k, 1);
   ForceModel* models[] = {&model};
@@ -65,8 +66,14 @@ Real oscillator_error(Real dt, Real t_end) {
     model.add_forces({xs.data(), vs.data()}, f.data(), false);
   };
   const int steps = static_cast<int>(std::lround(t_end / dt));
-  for (int s = 0; s < steps; ++s)
-    euler.step(force, mass, is_free, nullptr, x, v, dt);
+  Bdf2 method;
+  for (int s = 0; s < steps; ++s) {
+    if (bdf2) {
+      method.step(euler, force, mass, is_free, nullptr, x, v, dt);
+    } else {
+      euler.step(force, mass, is_free, nullptr, x, v, dt);
+    }
+  }
   return std::abs(x[0].x() - std::cos(2.0 * steps * dt));
 }
 
@@ -74,6 +81,13 @@ TEST(ImplicitEuler, ConvergesAtOrderOneOnTheOscillator) {
   const Real e1 = oscillator_error(1e-3, 1.0), e2 = oscillator_error(5e-4, 1.0);
   EXPECT_NEAR(std::log2(e1 / e2), 1.0, 0.05);
   EXPECT_LT(e1, 1e-2);
+}
+
+TEST(Bdf2, ConvergesAtOrderTwoOnTheOscillator) {
+  // Halving the step divides the error by about 4 (backward Euler's by 2).
+  const Real e1 = oscillator_error(1e-2, 1.0, true), e2 = oscillator_error(5e-3, 1.0, true);
+  EXPECT_NEAR(e1 / e2, 4.0, 0.3);
+  EXPECT_LT(e1, oscillator_error(1e-2, 1.0, false) / 10);
 }
 
 TEST(ImplicitEuler, HalfEdgeSpringJacobiansMatchCentralDifferences) {
@@ -243,6 +257,32 @@ TEST(ImplicitEuler, UndampedStiffSpringsStayBoundedAtAHundredTimesTheExplicitLim
   EXPECT_GT(projected, 0u);
 }
 
+TEST(Bdf2, UndampedStiffSpringsStayBoundedAtAHundredTimesTheExplicitLimit) {
+  const Real k = 1e4;
+  Simulation probe = spring_cloth(IntegratorKind::kSymplecticEuler, 1e-3, k, 0, Vec3::Zero());
+  const Real limit = 2 / largest_omega(probe);  // the limit symplectic Euler blows up above
+  ASSERT_GT(limit, 0);
+  // BDF2 is A-stable but, unlike backward Euler, not monotone in energy
+  // step by step: bounded means a few times the initial energy at most,
+  // over many periods of the stiffest mode, and dissipated in the end.
+  ImplicitSettings newton;
+  newton.newton_iterations = 20;
+  Simulation sim = spring_cloth(IntegratorKind::kBdf2, 100 * limit, k, 0, Vec3::Zero(), newton);
+  stretch(sim, 5);
+  const Real e0 = energy(sim);
+  ASSERT_GT(e0, 0);
+  Real largest = 0;
+  for (int s = 0; s < 200; ++s) {
+    sim.step();
+    const Real e = energy(sim);
+    ASSERT_TRUE(std::isfinite(e)) << "step " << s;
+    largest = std::max(largest, e);
+  }
+  EXPECT_LT(largest, 2 * e0);
+  EXPECT_LT(energy(sim), e0);
+  EXPECT_GT(sim.implicit()->last().cg_iterations, 0);
+}
+
 TEST(ImplicitEuler, HangingClothReachesStaticEquilibriumWithPinsFixed) {
   // dt = 0.02 is far beyond the explicit limit of k = 2000 (about 2e-3).
   Simulation sim = spring_cloth(IntegratorKind::kImplicitEuler, 0.02, 2000, 1.0, Vec3(0, -9.81, 0));
@@ -378,6 +418,14 @@ TEST(ImplicitEuler, TearsTheClothLikeRk4AtSmallSteps) {
   EXPECT_EQ(tears_with(IntegratorKind::kImplicitEuler, PreconditionerKind::kJacobi), rk4);
   EXPECT_EQ(tears_with(IntegratorKind::kImplicitEuler, PreconditionerKind::kIncompleteCholesky),
             rk4);
+}
+
+// After each tear the slots change: BDF2 restarts with a backward Euler step
+// on the new system (its pattern follows the map) and tears as RK4 does.
+TEST(Bdf2, TearsTheClothLikeRk4AtSmallSteps) {
+  const std::vector<Dart> rk4 = tears_with(IntegratorKind::kRK4, PreconditionerKind::kJacobi);
+  ASSERT_GE(rk4.size(), 3u);
+  EXPECT_EQ(tears_with(IntegratorKind::kBdf2, PreconditionerKind::kJacobi), rk4);
 }
 
 TEST(ImplicitEuler, NamesTheInteractionWithoutJacobians) {

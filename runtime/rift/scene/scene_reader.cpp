@@ -88,9 +88,10 @@ class SceneReader {
     }
     scene.output.dir = "out/" + scene.name;
     if (auto* t = optional_table(root, "output")) read_output(*t, scene.output);
-    if (scene.implicit_line > 0 && scene.integrator != IntegratorKind::kImplicitEuler) {
+    if (scene.implicit_line > 0 && !is_implicit(scene.integrator)) {
       fail(scene.implicit_line,
-           "[implicit] sets the solver of integrator = \"implicit_euler\", but the scene's "
+           "[implicit] sets the solver of integrator = \"implicit_euler\" or \"bdf2\", but the "
+           "scene's "
            "integrator is '" +
                std::string(to_string(scene.integrator)) + "'");
     }
@@ -249,8 +250,9 @@ class SceneReader {
       auto kind = parse_integrator(name);
       if (!kind) {
         fail(*n, "unknown integrator '" + name +
-                     "': expected euler, symplectic_euler, rk4 or implicit_euler" +
-                     did_you_mean(name, {"euler", "symplectic_euler", "rk4", "implicit_euler"}));
+                     "': expected euler, symplectic_euler, rk4, implicit_euler or bdf2" +
+                     did_you_mean(name,
+                                  {"euler", "symplectic_euler", "rk4", "implicit_euler", "bdf2"}));
       }
       scene.integrator = *kind;
     }

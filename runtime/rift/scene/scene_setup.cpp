@@ -295,10 +295,11 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
 
   for (const ComponentUse& u : scene.interactions) {
     auto model = packs.pack_of_interaction(u.name, n)->make_interaction(u);
-    if (scene.integrator == IntegratorKind::kImplicitEuler && model->jacobian_vertices() <= 0) {
+    if (is_implicit(scene.integrator) && model->jacobian_vertices() <= 0) {
       throw InputError(scene.path, u.line,
-                       "integrator = \"implicit_euler\" needs the Jacobians of interaction '" +
-                           u.name + "', which has none: " + model->jacobian_unavailable_reason());
+                       "integrator = \"" + std::string(to_string(scene.integrator)) +
+                           "\" needs the Jacobians of interaction '" + u.name +
+                           "', which has none: " + model->jacobian_unavailable_reason());
     }
     sim->add_force_model(std::move(model));
   }
@@ -308,7 +309,7 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
   sim->initialise();
   rep.total_mass = sim->total_mass();
   rep.warnings = inert_component_warnings(scene, packs, *sim);
-  if (scene.integrator == IntegratorKind::kImplicitEuler && scene.implicit.newton_iterations > 1 &&
+  if (is_implicit(scene.integrator) && scene.implicit.newton_iterations > 1 &&
       scene.implicit.line_search == LineSearch::kEnergy) {
     const std::string why = sim->implicit_potential_missing();
     if (!why.empty()) {

@@ -38,11 +38,12 @@ std::string suggested_fix(const Simulation& sim) {
   std::string fix = fmt::format(
       "try a smaller time step ([simulation] dt = {:.3g}, a quarter of {:.3g})", s.dt / 4, s.dt);
   const auto implicit = parse_integrator("implicit_euler");
-  if (implicit && s.integrator != *implicit) {
+  if (implicit && !is_implicit(s.integrator)) {
     fix +=
         " or the unconditionally stable integrator ([simulation] integrator = \"implicit_euler\")";
   } else if (implicit) {
-    fix += "; implicit_euler diverged: more [implicit] newton_iterations or a tighter cg_tolerance";
+    fix += "; " + std::string(to_string(s.integrator)) +
+           " diverged: more [implicit] newton_iterations or a tighter cg_tolerance";
   }
   return fix;
 }

@@ -11,6 +11,7 @@ std::optional<IntegratorKind> parse_integrator(std::string_view name) {
   if (name == "symplectic_euler" || name == "symplectic") return IntegratorKind::kSymplecticEuler;
   if (name == "rk4") return IntegratorKind::kRK4;
   if (name == "implicit_euler") return IntegratorKind::kImplicitEuler;
+  if (name == "bdf2") return IntegratorKind::kBdf2;
   return std::nullopt;
 }
 
@@ -24,6 +25,8 @@ std::string_view to_string(IntegratorKind kind) {
       return "rk4";
     case IntegratorKind::kImplicitEuler:
       return "implicit_euler";
+    case IntegratorKind::kBdf2:
+      return "bdf2";
   }
   return "?";
 }
@@ -51,8 +54,9 @@ void Integrator::step(const AccelerationFn& accel, std::vector<Vec3>& x, std::ve
     case IntegratorKind::kRK4:
       break;
     case IntegratorKind::kImplicitEuler:
+    case IntegratorKind::kBdf2:
       // Needs Jacobians, not accelerations: Simulation runs ImplicitEuler.
-      throw std::logic_error("Integrator::step cannot run implicit_euler");
+      throw std::logic_error("Integrator::step cannot run an implicit integrator");
   }
 
   // Classical RK4 on y = (x, v), y' = (v, a(x, v)), accumulated on the fly

@@ -15,9 +15,16 @@ enum class IntegratorKind {
   kSymplecticEuler,  ///< v += dt a(t); x += dt v(t+dt). First order; bounded energy.
   kRK4,              ///< classical Runge-Kutta on (x, v). Fourth order (the paper's choice).
   kImplicitEuler,    ///< backward Euler with Jacobians (ImplicitEuler, not this class).
+  kBdf2,             ///< second-order BDF with Jacobians (Bdf2 over ImplicitEuler). Second order.
 };
 
-/// "euler", "symplectic_euler" (or "symplectic"), "rk4", "implicit_euler".
+/// The integrators that solve a linear system with the interactions'
+/// Jacobians (Simulation runs them with ImplicitEuler, not Integrator).
+inline bool is_implicit(IntegratorKind kind) {
+  return kind == IntegratorKind::kImplicitEuler || kind == IntegratorKind::kBdf2;
+}
+
+/// "euler", "symplectic_euler" (or "symplectic"), "rk4", "implicit_euler", "bdf2".
 std::optional<IntegratorKind> parse_integrator(std::string_view name);
 std::string_view to_string(IntegratorKind kind);
 

@@ -86,7 +86,7 @@ void Simulation::initialise() {
     if (f.orbit() == Orbit::cell(0, map_.dimension())) vertex_force_ = f;
   }
   refresh_inverse_masses();
-  if (settings_.integrator == IntegratorKind::kImplicitEuler) {
+  if (is_implicit(settings_.integrator)) {
     implicit_ = std::make_unique<ImplicitEuler>(settings_.implicit);
     std::vector<ForceModel*> models;
     for (auto& model : models_)
@@ -314,6 +314,7 @@ void Simulation::on_topology_changed(std::span<const Dart> touched) {
   for (auto& model : models_)
     model->rematch(map_, region_);
   if (implicit_) implicit_->topology_changed();
+  bdf2_.restart();  // the slots' history no longer matches the map
   refresh_inverse_masses(region_);
 }
 

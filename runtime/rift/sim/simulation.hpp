@@ -12,6 +12,7 @@
 
 #include "rift/gmap/gmap.hpp"
 #include "rift/pack/criterion.hpp"
+#include "rift/sim/bdf2.hpp"
 #include "rift/sim/divergence.hpp"
 #include "rift/sim/external_force.hpp"
 #include "rift/sim/force_model.hpp"
@@ -161,7 +162,8 @@ class Simulation {
   GMap map_;
   SimulationSettings settings_;
   Integrator integrator_;
-  std::unique_ptr<ImplicitEuler> implicit_;  // integrator = implicit_euler
+  std::unique_ptr<ImplicitEuler> implicit_;  // integrator = implicit_euler or bdf2
+  Bdf2 bdf2_;                                // integrator = bdf2: the step before
   std::vector<char> is_free_;                // implicit: inverse mass > 0
   std::vector<Vec3> target_v_;               // implicit: end-of-step velocity of the others
   std::vector<Vec3> scratch_a_;              // implicit: accelerations, unused

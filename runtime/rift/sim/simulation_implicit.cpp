@@ -1,5 +1,5 @@
-// Simulation's step with integrator = implicit_euler: the glue between the
-// loop's state (masses, pins, forces) and ImplicitEuler.
+// Simulation's step with integrator = implicit_euler or bdf2: the glue
+// between the loop's state (masses, pins, forces) and ImplicitEuler.
 #include "rift/sim/handles.hpp"
 #include "rift/sim/simulation.hpp"
 
@@ -36,13 +36,17 @@ void Simulation::implicit_step() {
   };
   a0_.assign(forces_.begin(), forces_.end());  // forces at (x, v), computed by step()
   add_external(a0_);
-  implicit_->step(
-      [&](const std::vector<Vec3>& xs, const std::vector<Vec3>& vs, std::vector<Vec3>& f) {
-        accelerations(xs, vs, scratch_a_, false);
-        f.assign(forces_.begin(), forces_.end());
-        add_external(f);
-      },
-      mass, is_free_, target_v_.data(), x, v, h, &a0_);
+  const ImplicitEuler::ForceFn force = [&](const std::vector<Vec3>& xs, const std::vector<Vec3>& vs,
+                                           std::vector<Vec3>& f) {
+    accelerations(xs, vs, scratch_a_, false);
+    f.assign(forces_.begin(), forces_.end());
+    add_external(f);
+  };
+  if (settings_.integrator == IntegratorKind::kBdf2) {
+    bdf2_.step(*implicit_, force, mass, is_free_, target_v_.data(), x, v, h, &a0_);
+  } else {
+    implicit_->step(force, mass, is_free_, target_v_.data(), x, v, h, &a0_);
+  }
 }
 
 }  // namespace rift
