@@ -357,52 +357,18 @@ void write_add_forces_all(Writer& w, const Kernel& k) {
   w.line();
 }
 
-// The force pass of several threads (rift::CachedInteraction): each match
-// writes its forces to its own kForceTerms entries of `terms`, in the order
-// add_forces_all adds them, and the runtime sums them per vertex in that
-// order, so the totals are those of add_forces_all whatever the threads.
-void write_force_terms_all(Writer& w, const Kernel& k) {
+// The vertex slots each force of a match goes to, in the order add_forces_all
+// adds them: rift::CachedInteraction colours blocks of matches by them
+// (rift/sim/scatter_colouring.hpp) so that the blocks of one colour can
+// scatter at once, in an order that does not depend on the threads.
+void write_force_targets(Writer& w, const Kernel& k) {
   const ir::Body& b = k.plan->body;
   if (b.forces.empty()) return;
-  const std::string count = std::to_string(b.forces.size());
   w.open("void " + k.cls + "::force_targets(const Match& m, rift::Slot* out) const {");
   for (std::size_t i = 0; i < b.forces.size(); ++i) {
     w.line("out[" + std::to_string(i) + "] = m." +
            k.slots[static_cast<std::size_t>(b.forces[i].vertex_slot)] + ";");
   }
-  w.close();
-  w.line();
-  w.open("void " + k.cls +
-         "::force_terms_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* "
-         "terms, bool store) {");
-  w.line("const Columns c = columns();");
-  std::set<std::string> stores;
-  for (const ir::Force& f : b.forces)
-    stores.insert(f.embedding);
-  for (const std::string& e : stores)
-    w.line("rift::Vec3* const stored_" + e + " = " + embedding_var(e) + ".values().data();");
-  w.open("for (const Match& m : ms) {");
-  w.line("Result r;");
-  w.open("if (!evaluate<true>(m, in, c, r)) {");
-  w.open("if (store) {");
-  for (const ir::Force& f : b.forces) {
-    w.line("stored_" + f.embedding + "[m." + k.slots[static_cast<std::size_t>(f.store_slot)] +
-           "] = rift::Vec3::Zero();");
-  }
-  w.close();
-  w.line("for (int i = 0; i < " + count + "; ++i) terms[i].setZero();");
-  w.line("terms += " + count + ";");
-  w.line("continue;");
-  w.close();
-  for (std::size_t i = 0; i < b.forces.size(); ++i) {
-    const ir::Force& f = b.forces[i];
-    const std::string field = std::string("r.") + force_field(b, f);
-    w.line("terms[" + std::to_string(i) + "] = " + field + ";");
-    w.line("if (store) stored_" + f.embedding + "[m." +
-           k.slots[static_cast<std::size_t>(f.store_slot)] + "] = " + field + ";");
-  }
-  w.line("terms += " + count + ";");
-  w.close();
   w.close();
   w.line();
 }
@@ -689,13 +655,11 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
       "void add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, "
       "bool store);");
   if (!b.forces.empty()) {
-    w.line("/// The same pass for several threads: each match writes its forces to its own");
-    w.line("/// kForceTerms entries of `terms`, headed for the vertex slots force_targets gives.");
+    w.line(
+        "/// The vertex slots of a match's kForceTerms forces, in the order add_forces_all adds");
+    w.line("/// them (the coloured scatter of several threads groups matches by them).");
     w.line("static constexpr int kForceTerms = " + std::to_string(b.forces.size()) + ";");
     w.line("void force_targets(const Match& m, rift::Slot* out) const;");
-    w.line(
-        "void force_terms_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* "
-        "terms, bool store);");
   }
   w.line("void reset_stored(const Match& m);");
   w.line("rift::Real energy(const Match& m, const rift::ForceInput& in) const;");
@@ -777,7 +741,7 @@ void emit_kernel(Writer& w, const InteractionPlan& plan, const PackModel& model)
   write_columns(w, k);
   write_evaluate(w, k);
   write_add_forces_all(w, k);
-  write_force_terms_all(w, k);
+  write_force_targets(w, k);
   write_reset(w, k);
   write_energy(w, k);
   if (k.derivative.available) {

@@ -436,34 +436,6 @@ void CorotationalKernel::force_targets(const Match& m, rift::Slot* out) const {
   out[3] = m.vertex_c3;
 }
 
-void CorotationalKernel::force_terms_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* terms, bool store) {
-  const Columns c = columns();
-  rift::Vec3* const stored_f_fem = e_f_fem.values().data();
-  for (const Match& m : ms) {
-    Result r;
-    if (!evaluate<true>(m, in, c, r)) {
-      if (store) {
-        stored_f_fem[m.orbit12_c0] = rift::Vec3::Zero();
-        stored_f_fem[m.orbit12_c1] = rift::Vec3::Zero();
-        stored_f_fem[m.orbit12_c2] = rift::Vec3::Zero();
-        stored_f_fem[m.orbit12_c3] = rift::Vec3::Zero();
-      }
-      for (int i = 0; i < 4; ++i) terms[i].setZero();
-      terms += 4;
-      continue;
-    }
-    terms[0] = r.f_fem_c0;
-    if (store) stored_f_fem[m.orbit12_c0] = r.f_fem_c0;
-    terms[1] = r.f_fem_c1;
-    if (store) stored_f_fem[m.orbit12_c1] = r.f_fem_c1;
-    terms[2] = r.f_fem_c2;
-    if (store) stored_f_fem[m.orbit12_c2] = r.f_fem_c2;
-    terms[3] = r.f_fem_c3;
-    if (store) stored_f_fem[m.orbit12_c3] = r.f_fem_c3;
-    terms += 4;
-  }
-}
-
 void CorotationalKernel::reset_stored(const Match& m) {
   if (m.orbit12_c0 < e_f_fem.values().size()) e_f_fem.values()[m.orbit12_c0] = rift::Vec3::Zero();
   if (m.orbit12_c1 < e_f_fem.values().size()) e_f_fem.values()[m.orbit12_c1] = rift::Vec3::Zero();

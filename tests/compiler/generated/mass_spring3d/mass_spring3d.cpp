@@ -254,28 +254,6 @@ void StretchKernel::force_targets(const Match& m, rift::Slot* out) const {
   out[1] = m.vertex_b;
 }
 
-void StretchKernel::force_terms_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* terms, bool store) {
-  const Columns c = columns();
-  rift::Vec3* const stored_f_stretch = e_f_stretch.values().data();
-  for (const Match& m : ms) {
-    Result r;
-    if (!evaluate<true>(m, in, c, r)) {
-      if (store) {
-        stored_f_stretch[m.dart_a] = rift::Vec3::Zero();
-        stored_f_stretch[m.dart_b] = rift::Vec3::Zero();
-      }
-      for (int i = 0; i < 2; ++i) terms[i].setZero();
-      terms += 2;
-      continue;
-    }
-    terms[0] = r.f_stretch_a;
-    if (store) stored_f_stretch[m.dart_a] = r.f_stretch_a;
-    terms[1] = r.f_stretch_b;
-    if (store) stored_f_stretch[m.dart_b] = r.f_stretch_b;
-    terms += 2;
-  }
-}
-
 void StretchKernel::reset_stored(const Match& m) {
   if (m.dart_a < e_f_stretch.values().size()) e_f_stretch.values()[m.dart_a] = rift::Vec3::Zero();
   if (m.dart_b < e_f_stretch.values().size()) e_f_stretch.values()[m.dart_b] = rift::Vec3::Zero();
@@ -521,34 +499,6 @@ void ShearKernel::force_targets(const Match& m, rift::Slot* out) const {
   out[1] = m.vertex_c2;
   out[2] = m.vertex_c1;
   out[3] = m.vertex_c3;
-}
-
-void ShearKernel::force_terms_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* terms, bool store) {
-  const Columns c = columns();
-  rift::Vec3* const stored_f_shear = e_f_shear.values().data();
-  for (const Match& m : ms) {
-    Result r;
-    if (!evaluate<true>(m, in, c, r)) {
-      if (store) {
-        stored_f_shear[m.orbit1_c0] = rift::Vec3::Zero();
-        stored_f_shear[m.orbit1_c2] = rift::Vec3::Zero();
-        stored_f_shear[m.orbit1_c1] = rift::Vec3::Zero();
-        stored_f_shear[m.orbit1_c3] = rift::Vec3::Zero();
-      }
-      for (int i = 0; i < 4; ++i) terms[i].setZero();
-      terms += 4;
-      continue;
-    }
-    terms[0] = r.f_shear_c0;
-    if (store) stored_f_shear[m.orbit1_c0] = r.f_shear_c0;
-    terms[1] = r.f_shear_c2;
-    if (store) stored_f_shear[m.orbit1_c2] = r.f_shear_c2;
-    terms[2] = r.f_shear_c1;
-    if (store) stored_f_shear[m.orbit1_c1] = r.f_shear_c1;
-    terms[3] = r.f_shear_c3;
-    if (store) stored_f_shear[m.orbit1_c3] = r.f_shear_c3;
-    terms += 4;
-  }
 }
 
 void ShearKernel::reset_stored(const Match& m) {
@@ -2102,46 +2052,6 @@ void VolumeShearKernel::force_targets(const Match& m, rift::Slot* out) const {
   out[5] = m.vertex_s02;
   out[6] = m.vertex_b6;
   out[7] = m.vertex_s12;
-}
-
-void VolumeShearKernel::force_terms_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* terms, bool store) {
-  const Columns c = columns();
-  rift::Vec3* const stored_f_volume_shear = e_f_volume_shear.values().data();
-  for (const Match& m : ms) {
-    Result r;
-    if (!evaluate<true>(m, in, c, r)) {
-      if (store) {
-        stored_f_volume_shear[m.orbit12_b0] = rift::Vec3::Zero();
-        stored_f_volume_shear[m.orbit12_s22] = rift::Vec3::Zero();
-        stored_f_volume_shear[m.orbit12_b2] = rift::Vec3::Zero();
-        stored_f_volume_shear[m.orbit12_s32] = rift::Vec3::Zero();
-        stored_f_volume_shear[m.orbit12_b4] = rift::Vec3::Zero();
-        stored_f_volume_shear[m.orbit12_s02] = rift::Vec3::Zero();
-        stored_f_volume_shear[m.orbit12_b6] = rift::Vec3::Zero();
-        stored_f_volume_shear[m.orbit12_s12] = rift::Vec3::Zero();
-      }
-      for (int i = 0; i < 8; ++i) terms[i].setZero();
-      terms += 8;
-      continue;
-    }
-    terms[0] = r.f_volume_shear_b0;
-    if (store) stored_f_volume_shear[m.orbit12_b0] = r.f_volume_shear_b0;
-    terms[1] = r.f_volume_shear_s22;
-    if (store) stored_f_volume_shear[m.orbit12_s22] = r.f_volume_shear_s22;
-    terms[2] = r.f_volume_shear_b2;
-    if (store) stored_f_volume_shear[m.orbit12_b2] = r.f_volume_shear_b2;
-    terms[3] = r.f_volume_shear_s32;
-    if (store) stored_f_volume_shear[m.orbit12_s32] = r.f_volume_shear_s32;
-    terms[4] = r.f_volume_shear_b4;
-    if (store) stored_f_volume_shear[m.orbit12_b4] = r.f_volume_shear_b4;
-    terms[5] = r.f_volume_shear_s02;
-    if (store) stored_f_volume_shear[m.orbit12_s02] = r.f_volume_shear_s02;
-    terms[6] = r.f_volume_shear_b6;
-    if (store) stored_f_volume_shear[m.orbit12_b6] = r.f_volume_shear_b6;
-    terms[7] = r.f_volume_shear_s12;
-    if (store) stored_f_volume_shear[m.orbit12_s12] = r.f_volume_shear_s12;
-    terms += 8;
-  }
 }
 
 void VolumeShearKernel::reset_stored(const Match& m) {

@@ -59,11 +59,10 @@ class StretchKernel {
   bool match(const rift::GMap& g, rift::Dart support, Match& m) const;
   /// The force pass over every match: adds each force to f (and stores it when `store`).
   void add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store);
-  /// The same pass for several threads: each match writes its forces to its own
-  /// kForceTerms entries of `terms`, headed for the vertex slots force_targets gives.
+  /// The vertex slots of a match's kForceTerms forces, in the order add_forces_all adds
+  /// them (the coloured scatter of several threads groups matches by them).
   static constexpr int kForceTerms = 2;
   void force_targets(const Match& m, rift::Slot* out) const;
-  void force_terms_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* terms, bool store);
   void reset_stored(const Match& m);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).
@@ -137,11 +136,10 @@ class ShearKernel {
   bool match(const rift::GMap& g, rift::Dart support, Match& m) const;
   /// The force pass over every match: adds each force to f (and stores it when `store`).
   void add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store);
-  /// The same pass for several threads: each match writes its forces to its own
-  /// kForceTerms entries of `terms`, headed for the vertex slots force_targets gives.
+  /// The vertex slots of a match's kForceTerms forces, in the order add_forces_all adds
+  /// them (the coloured scatter of several threads groups matches by them).
   static constexpr int kForceTerms = 4;
   void force_targets(const Match& m, rift::Slot* out) const;
-  void force_terms_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* terms, bool store);
   void reset_stored(const Match& m);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).
@@ -228,11 +226,10 @@ class VolumeShearKernel {
   bool match(const rift::GMap& g, rift::Dart support, Match& m) const;
   /// The force pass over every match: adds each force to f (and stores it when `store`).
   void add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store);
-  /// The same pass for several threads: each match writes its forces to its own
-  /// kForceTerms entries of `terms`, headed for the vertex slots force_targets gives.
+  /// The vertex slots of a match's kForceTerms forces, in the order add_forces_all adds
+  /// them (the coloured scatter of several threads groups matches by them).
   static constexpr int kForceTerms = 8;
   void force_targets(const Match& m, rift::Slot* out) const;
-  void force_terms_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* terms, bool store);
   void reset_stored(const Match& m);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).
