@@ -19,8 +19,7 @@
 #include <cmath>
 #include <memory>
 
-#include "../physics/physics_setup.hpp"
-#include "../reference/paper_cloth.hpp"
+#include "paper_cloth_sim.hpp"
 #include "rift/core/parallel.hpp"
 
 namespace {
@@ -29,10 +28,7 @@ using rift::GridKind;
 using rift::Real;
 using rift::Vec3;
 
-// The damped RK4 limit of the 100 g cloth scales as h^2 (docs/physics.md §5).
-Real cloth_step(int n) {
-  return rift::reference::kPaperDt * (10.0 / n) * (10.0 / n);
-}
+using rift::bench::paper_cloth_dt;
 
 void report(benchmark::State& state, double vertices) {
   state.counters["vertices"] = vertices;
@@ -41,44 +37,33 @@ void report(benchmark::State& state, double vertices) {
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
-// One thread: the plot compares the work per vertex (threads:
-// rift_bench_threads).
+// Steps on one thread (the plot compares the work per vertex; threads:
+// rift_bench_threads). False, with the benchmark skipped, when the
+// simulation diverged.
 template <typename Step>
-void run_steps(benchmark::State& state, Step&& step, const Vec3* watched) {
+bool run_steps(benchmark::State& state, Step&& step, const Vec3* watched) {
   rift::set_thread_count(1);
-  for (int s = 0; s < 3; ++s)  // warm: first-touch pages, lazy columns, caches
-    step();
-  for (auto _ : state) {
-    step();
-    benchmark::DoNotOptimize(watched);
-    benchmark::ClobberMemory();
+  try {
+    for (int s = 0; s < 3; ++s)  // warm: first-touch pages, lazy columns, caches
+      step();
+    for (auto _ : state) {
+      step();
+      benchmark::DoNotOptimize(watched);
+      benchmark::ClobberMemory();
+    }
+  } catch (const rift::SimulationError& e) {
+    state.SkipWithError(e.what());
+    return false;
   }
+  return true;
 }
 
 void BM_ScalingClothRift(benchmark::State& state, GridKind kind) {
-  using namespace rift::physics_test;
-  const int n = static_cast<int>(state.range(0));
-  const rift::MeshData mesh = rift::reference::hanging_grid(kind, n, n);
-  SimSetup setup;
-  setup.settings.integrator = rift::IntegratorKind::kRK4;
-  setup.settings.dt = cloth_step(n);
-  setup.interactions = paper_cloth_springs();
-  setup.prepare = [&](rift::Simulation& sim) {
-    sim.set_total_mass(0.1);
-    const Vec3 left = mesh.points[rift::reference::grid_point(n, 0, n)];
-    const Vec3 right = mesh.points[rift::reference::grid_point(n, n, n)];
-    sim.pin_where(
-        [&](const Vec3& x) { return (x - left).norm() < 1e-9 || (x - right).norm() < 1e-9; });
-  };
-  auto sim = simulate(rift::assemble_gmap(mesh), setup);
-  try {
-    run_steps(
-        state, [&] { sim->step(); }, sim->position().values().data());
-  } catch (const rift::SimulationError& e) {
-    state.SkipWithError(e.what());
+  auto sim = rift::bench::paper_cloth_simulation(kind, static_cast<int>(state.range(0)));
+  if (!run_steps(
+          state, [&] { sim->step(); }, sim->position().values().data()))
     return;
-  }
-  report(state, static_cast<double>(mesh.points.size()));
+  report(state, static_cast<double>(sim->map().count_cells_of_dimension(0)));
 }
 
 bool all_finite(const std::vector<Vec3>& x) {
@@ -93,7 +78,7 @@ void BM_ScalingClothReference(benchmark::State& state, GridKind kind, bool cumul
   rift::reference::ReferenceCloth cloth = rift::reference::paper_cloth(kind, n, n);
   if (cumulated) cloth.cumulate_springs();
   run_steps(
-      state, [&] { cloth.step_rk4(cloth_step(n)); }, cloth.positions().data());
+      state, [&] { cloth.step_rk4(paper_cloth_dt(n)); }, cloth.positions().data());
   if (!all_finite(cloth.positions())) state.SkipWithError("the cloth exploded");
   state.counters["springs"] = static_cast<double>(cloth.springs().size());
   report(state, static_cast<double>(cloth.vertex_count()));
@@ -114,13 +99,9 @@ void BM_ScalingSolid(benchmark::State& state, rift::BlockKind kind) {
   }
   const rift::MeshData mesh = rift::make_block(kind, n, n, n);
   auto sim = simulate(rift::assemble_gmap(mesh), setup);
-  try {
-    run_steps(
-        state, [&] { sim->step(); }, sim->position().values().data());
-  } catch (const rift::SimulationError& e) {
-    state.SkipWithError(e.what());
+  if (!run_steps(
+          state, [&] { sim->step(); }, sim->position().values().data()))
     return;
-  }
   report(state, static_cast<double>(mesh.points.size()));
 }
 

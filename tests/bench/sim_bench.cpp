@@ -6,38 +6,15 @@
 // docs/physics.md §7 for the command and the figures.
 #include <benchmark/benchmark.h>
 
-#include "../physics/physics_setup.hpp"
-#include "../reference/paper_cloth.hpp"
+#include "paper_cloth_sim.hpp"
 
 namespace {
 
 using rift::GridKind;
 using rift::Real;
 using rift::Vec3;
-using rift::reference::kPaperDt;
 
-// The same 100 g cloth on a finer grid has lighter vertices: the damped RK4
-// limit scales as h^2, and so does dt (docs/physics.md §5).
-Real step_for(int n) {
-  return kPaperDt * (10.0 / n) * (10.0 / n);
-}
-
-std::unique_ptr<rift::Simulation> generated_cloth(GridKind kind, int n) {
-  using namespace rift::physics_test;
-  const rift::MeshData mesh = rift::reference::hanging_grid(kind, n, n);
-  SimSetup setup;
-  setup.settings.integrator = rift::IntegratorKind::kRK4;
-  setup.settings.dt = step_for(n);
-  setup.interactions = paper_cloth_springs();
-  setup.prepare = [&](rift::Simulation& sim) {
-    sim.set_total_mass(0.1);
-    const Vec3 left = mesh.points[rift::reference::grid_point(n, 0, n)];
-    const Vec3 right = mesh.points[rift::reference::grid_point(n, n, n)];
-    sim.pin_where(
-        [&](const Vec3& x) { return (x - left).norm() < 1e-9 || (x - right).norm() < 1e-9; });
-  };
-  return simulate(rift::assemble_gmap(mesh), setup);
-}
+using rift::bench::paper_cloth_dt;
 
 void report(benchmark::State& state, double springs, double vertices) {
   state.counters["springs"] = springs;
@@ -49,7 +26,7 @@ void report(benchmark::State& state, double springs, double vertices) {
 
 void BM_GeneratedRk4Step(benchmark::State& state, GridKind kind) {
   const int n = static_cast<int>(state.range(0));
-  auto sim = generated_cloth(kind, n);
+  auto sim = rift::bench::paper_cloth_simulation(kind, n);
   for (int s = 0; s < 200; ++s)
     sim->step();
   for (auto _ : state) {
@@ -78,9 +55,9 @@ void BM_ReferenceRk4Step(benchmark::State& state, GridKind kind, bool cumulated)
   rift::reference::ReferenceCloth cloth = rift::reference::paper_cloth(kind, n, n);
   if (cumulated) cloth.cumulate_springs();
   for (int s = 0; s < 200; ++s)
-    cloth.step_rk4(step_for(n));
+    cloth.step_rk4(paper_cloth_dt(n));
   for (auto _ : state) {
-    cloth.step_rk4(step_for(n));
+    cloth.step_rk4(paper_cloth_dt(n));
     benchmark::DoNotOptimize(cloth.positions().data());
     benchmark::ClobberMemory();
   }

@@ -14,8 +14,7 @@
 #include <map>
 #include <memory>
 
-#include "../physics/physics_setup.hpp"
-#include "../reference/paper_cloth.hpp"
+#include "paper_cloth_sim.hpp"
 #include "rift/core/parallel.hpp"
 #include "rift/mesh/load_map.hpp"
 
@@ -28,21 +27,7 @@ rift::Simulation& cloth(int n) {
   static std::map<int, std::unique_ptr<rift::Simulation>> built;
   auto& sim = built[n];
   if (sim) return *sim;
-  using namespace rift::physics_test;
-  const rift::MeshData mesh = rift::reference::hanging_grid(rift::GridKind::Quad, n, n);
-  SimSetup setup;
-  setup.settings.integrator = rift::IntegratorKind::kRK4;
-  // The damped RK4 limit scales as h² (docs/physics.md §5).
-  setup.settings.dt = rift::reference::kPaperDt * (10.0 / n) * (10.0 / n);
-  setup.interactions = paper_cloth_springs();
-  setup.prepare = [&](rift::Simulation& s) {
-    s.set_total_mass(0.1);
-    const Vec3 left = mesh.points[rift::reference::grid_point(n, 0, n)];
-    const Vec3 right = mesh.points[rift::reference::grid_point(n, n, n)];
-    s.pin_where(
-        [&](const Vec3& x) { return (x - left).norm() < 1e-9 || (x - right).norm() < 1e-9; });
-  };
-  sim = simulate(rift::assemble_gmap(mesh), setup);
+  sim = rift::bench::paper_cloth_simulation(rift::GridKind::Quad, n);
   sim->step();  // warm: every buffer at its size
   return *sim;
 }
