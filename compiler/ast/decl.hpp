@@ -194,6 +194,9 @@ struct Include {
 /// One parsed file.
 struct File {
   int file_id = -1;
+  /// The simulator's state embeddings, which rift declares in every pack
+  /// (parse/state_embeddings.hpp); the pack's own files are not builtin.
+  bool builtin = false;
   bool has_header = false;
   Ident pack;
   std::string description;  // the `///` comment above the header

@@ -267,8 +267,11 @@ void check_embedding(const ast::Embedding& e, int dimension, TypeChecker& tc,
     if (!kPolicies.count(e.merge->text)) {
       diags.error(e.merge->loc, "unknown merge policy '" + e.merge->text +
                                     "'; expected keep, sum, mean or refuse");
-    } else if ((e.merge->text == "sum" || e.merge->text == "mean") && e.type == Type::Bool) {
-      diags.error(e.merge->loc, "merge policy '" + e.merge->text + "' needs numbers, not bool");
+    } else if (e.merge->text == "mean" && e.type == Type::Bool) {
+      // `sum` of bools is their logical or (a vertex merged with a pinned
+      // one is pinned); a mean of truth values has no such reading.
+      diags.error(e.merge->loc,
+                  "merge policy 'mean' needs numbers, not bool; 'sum' merges bools by 'or'");
     }
   }
 }

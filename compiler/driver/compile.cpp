@@ -14,6 +14,7 @@
 #include "lower/interaction_plan.hpp"
 #include "lower/kernel_plan.hpp"
 #include "parse/loader.hpp"
+#include "parse/state_embeddings.hpp"
 #include "resolve/resolve.hpp"
 
 namespace rift::driver {
@@ -95,6 +96,7 @@ std::string depfile_text(const std::filesystem::path& target, const diag::Source
   std::string text = escape(target.string()) + ":";
   for (std::size_t k = 0; k < sources.size(); ++k) {
     const std::string& path = sources.file(static_cast<int>(k)).path;
+    if (path == parse::kStateSource) continue;  // built in, not a file
     std::error_code ec;
     const auto abs = std::filesystem::absolute(path, ec);
     text += ' ';
