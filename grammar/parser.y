@@ -117,6 +117,7 @@ ExprPtr call(std::string name, std::vector<ExprPtr> args, const rift::diag::Loca
        MAX "max" T_REAL "real" T_INT "int" T_BOOL "bool" T_VEC3 "vec3" T_MAT3 "mat3"
        AND "and" OR "or" NOT "not" TAGGED "tagged" SCRIPT "script" SET "set" FOR "for"
        EACH "each" IN "in" OF "of" WHERE "where"
+%token JACOBIAN "jacobian" BY "by"
 
 %token SEMI ";" COLON ":" COMMA "," DOT "." AT_SIGN "@" ASSIGN "=" LBRACE "{" RBRACE "}"
        LPAREN "(" RPAREN ")" LBRACKET "[" RBRACKET "]" LT "<" GT ">" LE "<=" GE ">="
@@ -414,6 +415,9 @@ interaction_stmt
   | ENERGY expr SEMI {
       if (ctx.interaction.energy) ctx.diags.error(@1, "the interaction already has an energy");
       ctx.interaction.energy = $2;
+    }
+  | JACOBIAN ident DOT ident BY ident DOT ident ASSIGN expr SEMI {
+      ctx.interaction.jacobians.push_back(rift::ast::JacobianBlock{$2, $4, $6, $8, $10, @$});
     }
   | SEMIDEFINITE SEMI {
       if (ctx.interaction.semidefinite) {

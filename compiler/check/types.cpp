@@ -434,6 +434,8 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols, E
               .notes.push_back({target->name.loc, "declared here"});
         }
       }
+      for (const auto& j : inter.jacobians)
+        tc.expect(*j.value, Type::Mat3, "a Jacobian block");
       if (inter.energy) tc.expect(*inter.energy, Type::Real, "the energy");
     }
     for (const auto& crit : file.criteria) {
