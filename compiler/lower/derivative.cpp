@@ -406,7 +406,7 @@ void name_missing_block(const ir::Body& body, const KernelPlan& kernel, std::siz
       activity.active(f.value);
       // Only a built-in without a derivative can be replaced by given blocks
       // (a fold also reads vertices outside the match).
-      if (one.why.empty() || one.why.rfind("'", 0) != 0) continue;
+      if (one.why.empty() || one.why.front() != '\'') continue;
       out.why += ", or give the Jacobian blocks it enters (the first missing: 'jacobian " +
                  body.nodes[static_cast<std::size_t>(f.node)] + "." + f.embedding + " by " +
                  kernel.nodes[static_cast<std::size_t>(slot.node)] +
