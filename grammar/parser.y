@@ -118,6 +118,8 @@ ExprPtr call(std::string name, std::vector<ExprPtr> args, const rift::diag::Loca
        AND "and" OR "or" NOT "not" TAGGED "tagged" SCRIPT "script" SET "set" FOR "for"
        EACH "each" IN "in" OF "of" WHERE "where"
 %token JACOBIAN "jacobian" BY "by"
+/* functions */
+%token DEF "def" RETURN "return" ARROW "->"
 
 %token SEMI ";" COLON ":" COMMA "," DOT "." AT_SIGN "@" ASSIGN "=" LBRACE "{" RBRACE "}"
        LPAREN "(" RPAREN ")" LBRACKET "[" RBRACKET "]" LT "<" GT ">" LE "<=" GE ">="
@@ -146,6 +148,7 @@ ExprPtr call(std::string name, std::vector<ExprPtr> args, const rift::diag::Loca
 %type <std::vector<rift::ast::ExprPtr>> dart_list
 %type <rift::ast::ExprPtr> opt_default
 %type <std::optional<rift::ast::Ident>> opt_merge
+%type <std::vector<rift::ast::Param>> function_params
 
 %precedence ELSE
 %left OR
@@ -203,6 +206,7 @@ item
   | interaction
   | criterion
   | script
+  | function
   | error SEMI
   | error RBRACE
   ;
@@ -626,6 +630,38 @@ opt_each
 opt_where
   : %empty { }
   | WHERE expr { $$ = $2; }
+  ;
+
+/* ---- functions ---------------------------------------------------------------- */
+/* def NAME(p : T, ...) -> T { let x = e; ... return e; }   or   def NAME(...) -> T = e; */
+function
+  : DEF ident function_params ARROW type {
+      ctx.function = rift::ast::Function{};
+      ctx.function.name = $2;
+      ctx.function.params = $3;
+      ctx.function.result = $5;
+      ctx.function.result_loc = @5;
+    }
+    function_body {
+      ctx.file.functions.push_back(std::move(ctx.function));
+    }
+  ;
+
+function_params
+  : LPAREN RPAREN { }
+  | LPAREN params1 RPAREN { $$ = $2; }
+  ;
+
+function_body
+  : ASSIGN expr SEMI { ctx.function.value = $2; }
+  | LBRACE function_lets RETURN expr SEMI RBRACE { ctx.function.value = $4; }
+  ;
+
+function_lets
+  : %empty
+  | function_lets LET ident ASSIGN expr SEMI {
+      ctx.function.lets.push_back(rift::ast::Let{$3, $5});
+    }
   ;
 
 /* ---- expressions ----------------------------------------------------------------- */

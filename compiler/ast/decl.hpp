@@ -184,6 +184,19 @@ struct Script {
   std::vector<ScriptStmt> stmts;
 };
 
+/// `def NAME(PARAMS) -> TYPE { let ...; return VALUE; }`: a pure function of
+/// its parameters (and the pack's `param`s), which reads no embedding and no
+/// dart. Calls are inlined by lower/ (expr_lower.cpp), so every pass after it
+/// sees the function's expressions as if written at the call.
+struct Function {
+  Ident name;
+  std::vector<Param> params;
+  Type result = Type::Error;
+  Location result_loc;
+  std::vector<Let> lets;  // in source order; each sees the ones before it
+  ExprPtr value;          // what `return` gives
+};
+
 struct Embedding {
   Ident name;
   Type type = Type::Error;
@@ -208,6 +221,7 @@ struct Include {
 /// One parsed file.
 struct File {
   int file_id = -1;
+  bool included = false;  // read through an `include`, not named to riftc
   bool has_header = false;
   Ident pack;
   std::string description;  // the `///` comment above the header
@@ -219,6 +233,7 @@ struct File {
   std::vector<Init> inits;
   std::vector<Rule> rules;
   std::vector<Script> scripts;
+  std::vector<Function> functions;
   std::vector<Interaction> interactions;
   std::vector<Criterion> criteria;
 };

@@ -64,7 +64,7 @@ void run_checks(const ast::Program& program, diag::Diagnostics& diags, Checked& 
   check::check_jacobian_blocks(program, diags);
   check::check_generated_names(program, out.symbols, diags);
   check::check_embeddings(out.rules, out.symbols, diags);
-  check::check_unused(program, diags);
+  check::check_unused(program, out.symbols, diags);
 }
 
 /// Writes `text` unless the file already holds it, so that an unchanged

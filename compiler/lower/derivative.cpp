@@ -267,6 +267,7 @@ class Tangents {
         if (ta == kNoExpr) return kNoExpr;
         Node t = n;
         t.a = ta;
+        t.value_name.clear();  // names the value, not its tangent
         return g_.add(std::move(t));
       }
       case Op::Call:
