@@ -122,7 +122,6 @@ Parser::symbol_type Lexer::next() {
       "energy"      { return Parser::make_ENERGY(RIFT_TOKEN()); }
       "semidefinite" { return Parser::make_SEMIDEFINITE(RIFT_TOKEN()); }
       "jacobian"    { return Parser::make_JACOBIAN(RIFT_TOKEN()); }
-      "by"          { return Parser::make_BY(RIFT_TOKEN()); }
       "criterion"   { return Parser::make_CRITERION(RIFT_TOKEN()); }
       "measure"     { return Parser::make_MEASURE(RIFT_TOKEN()); }
       "apply"       { return Parser::make_APPLY(RIFT_TOKEN()); }
