@@ -78,6 +78,8 @@ void check_kernels(const ast::Program& program, const resolve::Symbols& symbols,
         kc.expr(*w);
       for (const auto& f : inter.forces)
         kc.expr(*f.value);
+      for (const auto& j : inter.jacobians)
+        kc.expr(*j.value);
       if (inter.energy) kc.expr(*inter.energy);
     }
   }

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "check/embeddings.hpp"
+#include "check/jacobian_blocks.hpp"
 #include "check/kernels.hpp"
 #include "check/topology.hpp"
 #include "check/types.hpp"
@@ -61,9 +62,10 @@ void run_checks(const ast::Program& program, diag::Diagnostics& diags, Checked& 
   out.interactions = check::check_interactions(program, out.symbols, diags);
   check::check_applies(program, out.rules, diags);
   check::check_kernels(program, out.symbols, diags);
+  check::check_jacobian_blocks(program, diags);
   check::check_generated_names(program, out.symbols, diags);
   check::check_embeddings(out.rules, out.symbols, diags);
-  check::check_unused(program, diags);
+  check::check_unused(program, out.symbols, diags);
 }
 
 /// Writes `text` unless the file already holds it, so that an unchanged

@@ -20,9 +20,10 @@ class Loader {
         program_(program),
         include_dirs_(std::move(include_dirs)) {}
 
-  void read(int file_id) {
+  void read(int file_id, bool included = false) {
     in_progress_.push_back(file_id);
     ast::File file;
+    file.included = included;
     parse_file(sources_, file_id, diags_, file);
     check_dimension(file);
     const std::string base = fs::path(sources_.file(file_id).path).parent_path().string();
@@ -61,7 +62,7 @@ class Loader {
       diags_.error(inc.loc, "cannot read included file '" + path + "'");
       return;
     }
-    read(id);
+    read(id, true);
   }
 
  private:

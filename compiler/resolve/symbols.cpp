@@ -133,6 +133,9 @@ const ast::Rule* Symbols::rule(std::string_view name) const {
 const ast::Script* Symbols::script(std::string_view name) const {
   return lookup(scripts, name);
 }
+const ast::Function* Symbols::function(std::string_view name) const {
+  return lookup(functions, name);
+}
 const std::vector<ast::Param>* Symbols::callee_params(std::string_view name) const {
   if (const ast::Rule* r = rule(name)) return &r->params;
   if (const ast::Script* s = script(name)) return &s->params;
@@ -167,6 +170,8 @@ Symbols collect_symbols(const ast::Program& program, diag::Diagnostics& diags) {
       collector.add(symbols.rules, r, "rule");
     for (const auto& s : file.scripts)
       collector.add(symbols.scripts, s, "script");
+    for (const auto& f : file.functions)
+      collector.add(symbols.functions, f, "function");
     for (const auto& i : file.interactions)
       collector.add(symbols.interactions, i, "interaction");
     for (const auto& c : file.criteria)
