@@ -1,6 +1,9 @@
 #include "parse/state_embeddings.hpp"
 
 #include <sstream>
+#include <vector>
+
+#include "ast/orbit_text.hpp"
 
 #include "parse/parse_file.hpp"
 #include "rift/core/state_embeddings.hpp"
@@ -23,21 +26,14 @@ const char* type_text(state::Kind kind) {
   return "real";
 }
 
+/// The table's orbit as dimensions, written as riftc writes every orbit.
 std::string orbit_text(state::Where where, int dimension) {
-  int first = 1;
-  int last = dimension;
-  if (where == state::Where::kCorner) last = dimension - 1;
-  if (where == state::Where::kElement) {
-    first = 0;
-    last = dimension - 1;
-  }
-  std::string text = "<";
-  for (int i = first; i <= last; ++i) {
-    if (i != first) text += ',';
-    text += std::to_string(i);
-  }
-  text += '>';
-  return text;
+  const int first = where == state::Where::kElement ? 0 : 1;
+  const int last = where == state::Where::kVertex ? dimension : dimension - 1;
+  std::vector<int> dims;
+  for (int i = first; i <= last; ++i)
+    dims.push_back(i);
+  return ast::orbit_text(dims);
 }
 
 std::string default_text(const state::Declaration& d) {

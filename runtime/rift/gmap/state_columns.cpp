@@ -33,20 +33,6 @@ T fill_value(const state::Declaration& d) {
   }
 }
 
-const char* policy_name(MergePolicy p) {
-  switch (p) {
-    case MergePolicy::kKeepFirst:
-      return "keep";
-    case MergePolicy::kSum:
-      return "sum";
-    case MergePolicy::kMean:
-      return "mean";
-    case MergePolicy::kRefuse:
-      return "refuse";
-  }
-  return "?";
-}
-
 }  // namespace
 
 Orbit state_orbit(const state::Declaration& declaration, int dimension) {
@@ -89,8 +75,8 @@ Embedding<T> state_embedding(GMap& map, std::string_view name) {
                                   orbit.str() + " as the simulator's does");
     }
     if (column->policy() != policy) {
-      throw std::invalid_argument(what + " merges by '" + policy_name(column->policy()) +
-                                  "', not by '" + policy_name(policy) +
+      throw std::invalid_argument(what + " merges by '" + std::string(to_string(column->policy())) +
+                                  "', not by '" + std::string(to_string(policy)) +
                                   "' as the simulator's does");
     }
     return e;
