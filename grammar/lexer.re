@@ -121,6 +121,7 @@ Parser::symbol_type Lexer::next() {
       "force"       { return Parser::make_FORCE(RIFT_TOKEN()); }
       "energy"      { return Parser::make_ENERGY(RIFT_TOKEN()); }
       "semidefinite" { return Parser::make_SEMIDEFINITE(RIFT_TOKEN()); }
+      "jacobian"    { return Parser::make_JACOBIAN(RIFT_TOKEN()); }
       "criterion"   { return Parser::make_CRITERION(RIFT_TOKEN()); }
       "measure"     { return Parser::make_MEASURE(RIFT_TOKEN()); }
       "apply"       { return Parser::make_APPLY(RIFT_TOKEN()); }

@@ -117,6 +117,7 @@ ExprPtr call(std::string name, std::vector<ExprPtr> args, const rift::diag::Loca
        MAX "max" T_REAL "real" T_INT "int" T_BOOL "bool" T_VEC3 "vec3" T_MAT3 "mat3"
        AND "and" OR "or" NOT "not" TAGGED "tagged" SCRIPT "script" SET "set" FOR "for"
        EACH "each" IN "in" OF "of" WHERE "where"
+%token JACOBIAN "jacobian"
 /* functions */
 %token DEF "def" RETURN "return" ARROW "->"
 
@@ -418,6 +419,14 @@ interaction_stmt
   | ENERGY expr SEMI {
       if (ctx.interaction.energy) ctx.diags.error(@1, "the interaction already has an energy");
       ctx.interaction.energy = $2;
+    }
+  /* `by` is a word of this statement only, not a keyword: names may be `by`. */
+  | JACOBIAN ident DOT ident ident ident DOT ident ASSIGN expr SEMI {
+      if ($5.text != "by") {
+        ctx.diags.error(@5, "expected 'by' in 'jacobian " + $2.text + "." + $4.text +
+                                " by NODE.position = ...;', not '" + $5.text + "'");
+      }
+      ctx.interaction.jacobians.push_back(rift::ast::JacobianBlock{$2, $4, $6, $8, $10, @$});
     }
   | SEMIDEFINITE SEMI {
       if (ctx.interaction.semidefinite) {

@@ -92,6 +92,19 @@ struct Init {
   Location loc;
 };
 
+/// `jacobian a.f by b.position = value;` (or `by b.velocity`): the rule gives
+/// the 3×3 block ∂(force f at node a)/∂(position or velocity of node b)
+/// itself; riftc uses it in place of deriving that block (docs/language.md,
+/// "Derivatives").
+struct JacobianBlock {
+  Ident force_node;
+  Ident force;
+  Ident by_node;
+  Ident by_state;  // "position" or "velocity"
+  ExprPtr value;   // a mat3
+  Location loc;
+};
+
 struct Interaction {
   Ident name;
   std::string description;  // the `///` comment above it
@@ -105,6 +118,7 @@ struct Interaction {
   std::vector<ExprPtr> whens;
   std::vector<BodyStmt> body;  // lets and whens in source order
   std::vector<Assign> forces;
+  std::vector<JacobianBlock> jacobians;  // blocks the rule gives explicitly
   ExprPtr energy;
   /// `semidefinite;`: the rule's author states that -∂f/∂x and -∂f/∂v of
   /// every match are positive semidefinite at every state (with the
@@ -207,6 +221,9 @@ struct Include {
 /// One parsed file.
 struct File {
   int file_id = -1;
+  /// The simulator's state embeddings, which rift declares in every pack
+  /// (parse/state_embeddings.hpp); the pack's own files are not builtin.
+  bool builtin = false;
   bool included = false;  // read through an `include`, not named to riftc
   bool has_header = false;
   Ident pack;

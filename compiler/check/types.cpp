@@ -257,6 +257,7 @@ class TypeChecker {
   /// type (an int is promoted to real); the call has the declared result type.
   Type function_call(const Expr& e, const ast::Function& f, const std::vector<Type>& args) {
     std::vector<Type> params;
+    params.reserve(f.params.size());
     for (const ast::Param& p : f.params)
       params.push_back(p.type);
     if (args.size() != params.size()) {
@@ -293,8 +294,11 @@ void check_embedding(const ast::Embedding& e, int dimension, TypeChecker& tc,
     if (!kPolicies.count(e.merge->text)) {
       diags.error(e.merge->loc, "unknown merge policy '" + e.merge->text +
                                     "'; expected keep, sum, mean or refuse");
-    } else if ((e.merge->text == "sum" || e.merge->text == "mean") && e.type == Type::Bool) {
-      diags.error(e.merge->loc, "merge policy '" + e.merge->text + "' needs numbers, not bool");
+    } else if (e.merge->text == "mean" && e.type == Type::Bool) {
+      // `sum` of bools is their logical or (a vertex merged with a pinned
+      // one is pinned); a mean of truth values has no such reading.
+      diags.error(e.merge->loc,
+                  "merge policy 'mean' needs numbers, not bool; 'sum' merges bools by 'or'");
     }
   }
 }
@@ -472,6 +476,8 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols, E
               .notes.push_back({target->name.loc, "declared here"});
         }
       }
+      for (const auto& j : inter.jacobians)
+        tc.expect(*j.value, Type::Mat3, "a Jacobian block");
       if (inter.energy) tc.expect(*inter.energy, Type::Real, "the energy");
     }
     for (const auto& crit : file.criteria) {

@@ -127,6 +127,7 @@ void lets_used(const ir::Body& b, ir::ExprId root, std::vector<bool>& used) {
 /// The values of the lets and the conditions of the whens, in source order.
 std::vector<ir::ExprId> statement_roots(const ir::Body& b) {
   std::vector<ir::ExprId> roots;
+  roots.reserve(b.stmts.size());
   for (const ir::Stmt& s : b.stmts)
     roots.push_back(s.kind == ir::Stmt::Kind::When ? s.cond
                                                    : b.lets[static_cast<std::size_t>(s.let)].value);
@@ -560,7 +561,8 @@ void write_jacobian_product(Writer& w, const Kernel& k) {
   w.open("[[gnu::flatten]] void " + k.cls +
          "::jacobian_product([[maybe_unused]] const Match& m, [[maybe_unused]] const "
          "rift::ForceInput& in, [[maybe_unused]] const rift::Vec3* px, [[maybe_unused]] const "
-         "rift::Vec3* pv, rift::Vec3* out) {");
+         "rift::Vec3* pv, " +
+         std::string(b.forces.empty() ? "[[maybe_unused]] " : "") + "rift::Vec3* out) {");
   write_primal(w, k, b, values, "return;");
   std::string tx = "[[maybe_unused]] const rift::Vec3 tx[" + std::to_string(n) + "] = {";
   std::string tv = "[[maybe_unused]] const rift::Vec3 tv[" + std::to_string(n) + "] = {";

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "parse/parse_file.hpp"
+#include "parse/state_embeddings.hpp"
 
 namespace rift::parse {
 
@@ -109,6 +110,7 @@ ast::Program load_program(const std::vector<std::string>& paths, diag::SourceMan
     }
     loader.read(id);
   }
+  add_state_embeddings(program, sources, diags);
   return program;
 }
 
@@ -117,6 +119,7 @@ ast::Program load_text(const std::string& path, const std::string& text,
   ast::Program program;
   Loader loader(sources, diags, program);
   loader.read(sources.add(path, text));
+  add_state_embeddings(program, sources, diags);
   return program;
 }
 

@@ -458,6 +458,8 @@ void resolve_names(const ast::Program& program, Symbols& symbols, diag::Diagnost
         r.node(f.node.text, f.node.loc, s);
         r.expr(*f.value, s);
       }
+      for (const auto& j : inter.jacobians)
+        r.expr(*j.value, s);
       if (inter.energy) r.expr(*inter.energy, s);
     }
     for (const auto& crit : file.criteria) {
