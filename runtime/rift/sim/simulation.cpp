@@ -78,8 +78,10 @@ void Simulation::set_density(Real density) {
 
 void Simulation::initialise() {
   update_all_vertex_masses(map_, corner_mass_, vertex_mass_);
-  for (auto& model : models_)
+  for (auto& model : models_) {
+    model->set_grouping(settings_.group_interactions);
     model->initialise(map_);
+  }
   for (auto& criterion : criteria_)
     criterion->initialise(map_);
   if (Embedding<Vec3> f = map_.embedding<Vec3>(names::kVertexForce)) {
