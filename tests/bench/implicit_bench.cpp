@@ -1,4 +1,4 @@
-// One implicit Euler step of a co-rotational tetrahedral beam of about
+// One implicit Euler (or BDF2) step of a co-rotational tetrahedral beam of about
 // 19 000 tetrahedra (block:tet:8x8x50, issue 10; SOFA reports ~42 ms per
 // step for 18 954 tetrahedra with EulerImplicitSolver + CG, 10 iterations).
 // CG runs exactly 10 iterations (its tolerance is out of reach). Counters:
@@ -18,15 +18,16 @@ namespace {
 using rift::Real;
 using rift::Vec3;
 
-void BM_ImplicitCorotationalBeam(benchmark::State& state, rift::PreconditionerKind p,
-                                 bool project_definite) {
+void BM_ImplicitCorotationalBeam(
+    benchmark::State& state, rift::PreconditionerKind p, bool project_definite,
+    rift::IntegratorKind integrator = rift::IntegratorKind::kImplicitEuler) {
   using namespace rift::physics_test;
   rift::GMap map = rift::load_map("block:tet:8x8x50");
   // 0.16 m x 0.16 m x 1 m, clamped at z = 0, sagging along -y.
   for (Vec3& x : map.embedding<Vec3>("position").values())
     x = Vec3(0.16 * x.x(), 0.16 * x.y(), x.z());
   SimSetup setup;
-  setup.settings.integrator = rift::IntegratorKind::kImplicitEuler;
+  setup.settings.integrator = integrator;
   setup.settings.dt = 0.01;
   setup.settings.gravity = Vec3(0, -9.81, 0);
   setup.settings.implicit.cg_max_iterations = 10;
@@ -40,7 +41,7 @@ void BM_ImplicitCorotationalBeam(benchmark::State& state, rift::PreconditionerKi
   };
   auto sim = simulate(std::move(map), setup);
   for (int s = 0; s < 5; ++s)
-    sim->step();
+    sim->step();  // BDF2's first step is backward Euler: the timed ones are BDF2
   rift::ImplicitEuler& implicit = *sim->implicit();
   implicit.reset_times();
   rift::set_thread_count(static_cast<int>(state.range(0)));
@@ -79,6 +80,16 @@ BENCHMARK_CAPTURE(BM_ImplicitCorotationalBeam, jacobi_unprojected,
     ->UseRealTime();
 BENCHMARK_CAPTURE(BM_ImplicitCorotationalBeam, incomplete_cholesky,
                   rift::PreconditionerKind::kIncompleteCholesky, true)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// BDF2 is backward Euler from an extrapolated state (bdf2.hpp): the same
+// solve, plus two vector combinations per step. Beside implicit Euler's
+// jacobi case above, in the same run.
+BENCHMARK_CAPTURE(BM_ImplicitCorotationalBeam, bdf2_jacobi, rift::PreconditionerKind::kJacobi, true,
+                  rift::IntegratorKind::kBdf2)
     ->Arg(1)
     ->Arg(2)
     ->Unit(benchmark::kMillisecond)

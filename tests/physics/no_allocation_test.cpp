@@ -51,6 +51,19 @@ TEST(NoAllocation, ImplicitEulerStepsOfTheClothAllocateNothing) {
             0);
 }
 
+TEST(NoAllocation, Bdf2StepsOfTheClothAllocateNothing) {
+  // BDF2 keeps the previous state and its extrapolation in buffers of its
+  // own (bdf2.hpp) on top of implicit Euler's; the warm-up's first step is
+  // the backward Euler start, every counted step a BDF2 step.
+  for (GridKind kind : {GridKind::Quad, GridKind::Tri, GridKind::Mix}) {
+    EXPECT_EQ(allocations_during_steps(kind, {}, 20, IntegratorKind::kBdf2), 0)
+        << static_cast<int>(kind);
+  }
+  EXPECT_EQ(allocations_during_steps(GridKind::Mix, {}, 20, IntegratorKind::kBdf2,
+                                     JacobianMode::kMatrixFree),
+            0);
+}
+
 TEST(NoAllocation, EvaluatingACriterionThatDoesNotHoldAllocatesNothing) {
   EXPECT_EQ(allocations_during_steps(GridKind::Quad, {{"global_edge", {{"threshold", 1e3}}}}, 100),
             0);
