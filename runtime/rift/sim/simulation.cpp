@@ -269,7 +269,8 @@ std::size_t Simulation::apply_criteria() {
       }
     }
   }
-  if (applied > 0) {
+  // A script may also have written values in place without a rewrite.
+  if (applied > 0 || !touched_.empty()) {
     on_topology_changed(touched_);
     tears_ += applied;
   }
