@@ -10,6 +10,7 @@
 #include "cli/progress.hpp"
 #include "rift/core/interrupt.hpp"
 #include "rift/core/parallel.hpp"
+#include "rift/core/state_embeddings.hpp"
 #include "rift/output/frame_outputs.hpp"
 #include "rift/output/scenery.hpp"
 #include "rift/scene/scene_setup.hpp"
@@ -85,7 +86,7 @@ int run_run(const RunOptions& options, const PackRegistry& packs) {
   config.png_every = scene.output.png_every > 0 ? scene.output.png_every : 1;
   config.render.width = scene.output.width;
   config.render.height = scene.output.height;
-  config.frame.element_id = "element_index";
+  config.frame.element_id = std::string(state::kElementIndex);
   // Look at the object upright: "up" is against gravity, the eye in front,
   // a little to the right and above.
   // Without gravity, a sheet flat in the x-y plane is seen from above.

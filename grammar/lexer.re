@@ -121,6 +121,7 @@ Parser::symbol_type Lexer::next() {
       "force"       { return Parser::make_FORCE(RIFT_TOKEN()); }
       "energy"      { return Parser::make_ENERGY(RIFT_TOKEN()); }
       "semidefinite" { return Parser::make_SEMIDEFINITE(RIFT_TOKEN()); }
+      "jacobian"    { return Parser::make_JACOBIAN(RIFT_TOKEN()); }
       "criterion"   { return Parser::make_CRITERION(RIFT_TOKEN()); }
       "measure"     { return Parser::make_MEASURE(RIFT_TOKEN()); }
       "apply"       { return Parser::make_APPLY(RIFT_TOKEN()); }
@@ -133,6 +134,10 @@ Parser::symbol_type Lexer::next() {
       "in"          { return Parser::make_IN(RIFT_TOKEN()); }
       "of"          { return Parser::make_OF(RIFT_TOKEN()); }
       "where"       { return Parser::make_WHERE(RIFT_TOKEN()); }
+      // functions (docs/language.md, "Functions")
+      "def"         { return Parser::make_DEF(RIFT_TOKEN()); }
+      "return"      { return Parser::make_RETURN(RIFT_TOKEN()); }
+      "->" { return Parser::make_ARROW(RIFT_TOKEN()); }
       "if"          { return Parser::make_IF(RIFT_TOKEN()); }
       "then"        { return Parser::make_THEN(RIFT_TOKEN()); }
       "else"        { return Parser::make_ELSE(RIFT_TOKEN()); }

@@ -117,6 +117,9 @@ ExprPtr call(std::string name, std::vector<ExprPtr> args, const rift::diag::Loca
        MAX "max" T_REAL "real" T_INT "int" T_BOOL "bool" T_VEC3 "vec3" T_MAT3 "mat3"
        AND "and" OR "or" NOT "not" TAGGED "tagged" SCRIPT "script" SET "set" FOR "for"
        EACH "each" IN "in" OF "of" WHERE "where"
+%token JACOBIAN "jacobian"
+/* functions */
+%token DEF "def" RETURN "return" ARROW "->"
 
 %token SEMI ";" COLON ":" COMMA "," DOT "." AT_SIGN "@" ASSIGN "=" LBRACE "{" RBRACE "}"
        LPAREN "(" RPAREN ")" LBRACKET "[" RBRACKET "]" LT "<" GT ">" LE "<=" GE ">="
@@ -145,6 +148,7 @@ ExprPtr call(std::string name, std::vector<ExprPtr> args, const rift::diag::Loca
 %type <std::vector<rift::ast::ExprPtr>> dart_list
 %type <rift::ast::ExprPtr> opt_default
 %type <std::optional<rift::ast::Ident>> opt_merge
+%type <std::vector<rift::ast::Param>> function_params
 
 %precedence ELSE
 %left OR
@@ -202,6 +206,7 @@ item
   | interaction
   | criterion
   | script
+  | function
   | error SEMI
   | error RBRACE
   ;
@@ -415,6 +420,14 @@ interaction_stmt
       if (ctx.interaction.energy) ctx.diags.error(@1, "the interaction already has an energy");
       ctx.interaction.energy = $2;
     }
+  /* `by` is a word of this statement only, not a keyword: names may be `by`. */
+  | JACOBIAN ident DOT ident ident ident DOT ident ASSIGN expr SEMI {
+      if ($5.text != "by") {
+        ctx.diags.error(@5, "expected 'by' in 'jacobian " + $2.text + "." + $4.text +
+                                " by NODE.position = ...;', not '" + $5.text + "'");
+      }
+      ctx.interaction.jacobians.push_back(rift::ast::JacobianBlock{$2, $4, $6, $8, $10, @$});
+    }
   | SEMIDEFINITE SEMI {
       if (ctx.interaction.semidefinite) {
         ctx.diags.error(@1, "the interaction is already declared semidefinite");
@@ -622,6 +635,38 @@ opt_each
 opt_where
   : %empty { }
   | WHERE expr { $$ = $2; }
+  ;
+
+/* ---- functions ---------------------------------------------------------------- */
+/* def NAME(p : T, ...) -> T { let x = e; ... return e; }   or   def NAME(...) -> T = e; */
+function
+  : DEF ident function_params ARROW type {
+      ctx.function = rift::ast::Function{};
+      ctx.function.name = $2;
+      ctx.function.params = $3;
+      ctx.function.result = $5;
+      ctx.function.result_loc = @5;
+    }
+    function_body {
+      ctx.file.functions.push_back(std::move(ctx.function));
+    }
+  ;
+
+function_params
+  : LPAREN RPAREN { }
+  | LPAREN params1 RPAREN { $$ = $2; }
+  ;
+
+function_body
+  : ASSIGN expr SEMI { ctx.function.value = $2; }
+  | LBRACE function_lets RETURN expr SEMI RBRACE { ctx.function.value = $4; }
+  ;
+
+function_lets
+  : %empty
+  | function_lets LET ident ASSIGN expr SEMI {
+      ctx.function.lets.push_back(rift::ast::Let{$3, $5});
+    }
   ;
 
 /* ---- expressions ----------------------------------------------------------------- */

@@ -92,6 +92,19 @@ struct Init {
   Location loc;
 };
 
+/// `jacobian a.f by b.position = value;` (or `by b.velocity`): the rule gives
+/// the 3×3 block ∂(force f at node a)/∂(position or velocity of node b)
+/// itself; riftc uses it in place of deriving that block (docs/language.md,
+/// "Derivatives").
+struct JacobianBlock {
+  Ident force_node;
+  Ident force;
+  Ident by_node;
+  Ident by_state;  // "position" or "velocity"
+  ExprPtr value;   // a mat3
+  Location loc;
+};
+
 struct Interaction {
   Ident name;
   std::string description;  // the `///` comment above it
@@ -105,6 +118,7 @@ struct Interaction {
   std::vector<ExprPtr> whens;
   std::vector<BodyStmt> body;  // lets and whens in source order
   std::vector<Assign> forces;
+  std::vector<JacobianBlock> jacobians;  // blocks the rule gives explicitly
   ExprPtr energy;
   /// `semidefinite;`: the rule's author states that -∂f/∂x and -∂f/∂v of
   /// every match are positive semidefinite at every state (with the
@@ -170,6 +184,19 @@ struct Script {
   std::vector<ScriptStmt> stmts;
 };
 
+/// `def NAME(PARAMS) -> TYPE { let ...; return VALUE; }`: a pure function of
+/// its parameters (and the pack's `param`s), which reads no embedding and no
+/// dart. Calls are inlined by lower/ (expr_lower.cpp), so every pass after it
+/// sees the function's expressions as if written at the call.
+struct Function {
+  Ident name;
+  std::vector<Param> params;
+  Type result = Type::Error;
+  Location result_loc;
+  std::vector<Let> lets;  // in source order; each sees the ones before it
+  ExprPtr value;          // what `return` gives
+};
+
 struct Embedding {
   Ident name;
   Type type = Type::Error;
@@ -194,6 +221,10 @@ struct Include {
 /// One parsed file.
 struct File {
   int file_id = -1;
+  /// The simulator's state embeddings, which rift declares in every pack
+  /// (parse/state_embeddings.hpp); the pack's own files are not builtin.
+  bool builtin = false;
+  bool included = false;  // read through an `include`, not named to riftc
   bool has_header = false;
   Ident pack;
   std::string description;  // the `///` comment above the header
@@ -205,6 +236,7 @@ struct File {
   std::vector<Init> inits;
   std::vector<Rule> rules;
   std::vector<Script> scripts;
+  std::vector<Function> functions;
   std::vector<Interaction> interactions;
   std::vector<Criterion> criteria;
 };

@@ -1,7 +1,8 @@
 // What an interaction's force loop may do: it reads values through slots
-// cached at match time, so it may not traverse the map (no collections), and
-// positions and velocities come from the integrator's stage arrays, indexed
-// by vertex slot, so they must live on the vertex orbit.
+// cached at match time, so it may not traverse the map (no collections).
+// Positions and velocities come from the integrator's stage arrays, indexed
+// by vertex slot: they are state embeddings, always on the vertex orbit
+// (parse/state_embeddings.hpp).
 #pragma once
 
 #include <string>

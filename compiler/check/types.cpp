@@ -237,6 +237,7 @@ class TypeChecker {
       args.push_back(expr(*a));
       bad = bad || args.back() == Type::Error;
     }
+    if (const ast::Function* f = symbols_.binding(e).function) return function_call(e, *f, args);
     const std::vector<Signature>* overloads = builtin(e.name);
     if (!overloads) {
       diags_.error(e.op_loc, "unknown function '" + e.name + "'");
@@ -250,6 +251,31 @@ class TypeChecker {
     }
     diags_.error(e.op_loc, "'" + e.name + "' expects " + expected + ", got " + describe(args));
     return Type::Error;
+  }
+
+  /// A call of a `def`: one argument per parameter, each of the parameter's
+  /// type (an int is promoted to real); the call has the declared result type.
+  Type function_call(const Expr& e, const ast::Function& f, const std::vector<Type>& args) {
+    std::vector<Type> params;
+    for (const ast::Param& p : f.params)
+      params.push_back(p.type);
+    if (args.size() != params.size()) {
+      diags_
+          .error(e.op_loc, "function '" + f.name.text + "' takes " + std::to_string(params.size()) +
+                               (params.size() == 1 ? " argument " : " arguments ") +
+                               describe(params) + ", got " + std::to_string(args.size()))
+          .notes.push_back({f.name.loc, "declared here"});
+      return f.result;
+    }
+    for (std::size_t k = 0; k < args.size(); ++k) {
+      if (args[k] == Type::Error || assignable(args[k], params[k])) continue;
+      diags_
+          .error(e.args[k]->loc, "argument " + std::to_string(k + 1) + " of '" + f.name.text +
+                                     "' ('" + f.params[k].name.text + "') must be " +
+                                     str(params[k]) + ", not " + str(args[k]))
+          .notes.push_back({f.params[k].name.loc, "declared here"});
+    }
+    return f.result;
   }
 
   int dimension_;
@@ -267,8 +293,11 @@ void check_embedding(const ast::Embedding& e, int dimension, TypeChecker& tc,
     if (!kPolicies.count(e.merge->text)) {
       diags.error(e.merge->loc, "unknown merge policy '" + e.merge->text +
                                     "'; expected keep, sum, mean or refuse");
-    } else if ((e.merge->text == "sum" || e.merge->text == "mean") && e.type == Type::Bool) {
-      diags.error(e.merge->loc, "merge policy '" + e.merge->text + "' needs numbers, not bool");
+    } else if (e.merge->text == "mean" && e.type == Type::Bool) {
+      // `sum` of bools is their logical or (a vertex merged with a pinned
+      // one is pinned); a mean of truth values has no such reading.
+      diags.error(e.merge->loc,
+                  "merge policy 'mean' needs numbers, not bool; 'sum' merges bools by 'or'");
     }
   }
 }
@@ -377,6 +406,18 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols, E
                  diag::Diagnostics& diags) {
   TypeChecker tc(program.dimension, symbols, types, diags);
   std::map<std::string, diag::Location> initialised;
+  // Functions first: a let of a caller may be typed by a call, and the types
+  // of a function's lets are read when the call is lowered.
+  for (const ast::File& file : program.files) {
+    for (const ast::Function& f : file.functions) {
+      if (builtin(f.name.text)) {
+        diags.error(f.name.loc, "function '" + f.name.text +
+                                    "' has the name of a built-in function; choose another name");
+      }
+      tc.lets(f.lets);
+      tc.expect(*f.value, f.result, "the result of function '" + f.name.text + "'");
+    }
+  }
   for (const ast::File& file : program.files) {
     for (const auto& e : file.embeddings)
       check_embedding(e, program.dimension, tc, diags);
@@ -434,6 +475,8 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols, E
               .notes.push_back({target->name.loc, "declared here"});
         }
       }
+      for (const auto& j : inter.jacobians)
+        tc.expect(*j.value, Type::Mat3, "a Jacobian block");
       if (inter.energy) tc.expect(*inter.energy, Type::Real, "the energy");
     }
     for (const auto& crit : file.criteria) {

@@ -1,5 +1,7 @@
 #include "check/warnings.hpp"
 
+#include "check/builtins.hpp"
+
 namespace rift::check {
 
 namespace {
@@ -25,8 +27,21 @@ void unused_params(const std::vector<ast::Param>& params, const char* kind,
 
 }  // namespace
 
-void check_unused(const ast::Program& program, diag::Diagnostics& diags) {
+void check_unused(const ast::Program& program, const resolve::Symbols& symbols,
+                  diag::Diagnostics& diags) {
   for (const ast::File& file : program.files) {
+    for (const ast::Function& f : file.functions) {
+      unused_lets(f.lets, diags);
+      unused_params(f.params, "function", f.name.text, diags);
+      // An included pack is a library: its includers need not call all of it.
+      const auto calls = symbols.calls.find(&f);
+      // Not a duplicate or a built-in's name, which are errors already.
+      const bool declared = symbols.function(f.name.text) == &f && !builtin(f.name.text);
+      if (declared && !file.included && (calls == symbols.calls.end() || calls->second == 0)) {
+        diags.warning("unused-function", f.name.loc,
+                      "function '" + f.name.text + "' is never called");
+      }
+    }
     for (const ast::Rule& r : file.rules) {
       unused_lets(r.lets, diags);
       for (const ast::Param& p : r.params) {

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "check/embeddings.hpp"
+#include "check/jacobian_blocks.hpp"
 #include "check/kernels.hpp"
 #include "check/topology.hpp"
 #include "check/types.hpp"
@@ -14,6 +15,7 @@
 #include "lower/interaction_plan.hpp"
 #include "lower/kernel_plan.hpp"
 #include "parse/loader.hpp"
+#include "parse/state_embeddings.hpp"
 #include "resolve/resolve.hpp"
 
 namespace rift::driver {
@@ -60,9 +62,10 @@ void run_checks(const ast::Program& program, diag::Diagnostics& diags, Checked& 
   out.interactions = check::check_interactions(program, out.symbols, diags);
   check::check_applies(program, out.rules, diags);
   check::check_kernels(program, out.symbols, diags);
+  check::check_jacobian_blocks(program, diags);
   check::check_generated_names(program, out.symbols, diags);
   check::check_embeddings(out.rules, out.symbols, diags);
-  check::check_unused(program, diags);
+  check::check_unused(program, out.symbols, diags);
 }
 
 /// Writes `text` unless the file already holds it, so that an unchanged
@@ -95,6 +98,7 @@ std::string depfile_text(const std::filesystem::path& target, const diag::Source
   std::string text = escape(target.string()) + ":";
   for (std::size_t k = 0; k < sources.size(); ++k) {
     const std::string& path = sources.file(static_cast<int>(k)).path;
+    if (path == parse::kStateSource) continue;  // built in, not a file
     std::error_code ec;
     const auto abs = std::filesystem::absolute(path, ec);
     text += ' ';

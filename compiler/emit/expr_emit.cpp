@@ -51,6 +51,7 @@ class Emitter {
         return e.boolean ? "true" : "false";
       case Expr::Kind::Name: {
         const resolve::Binding* b = ctx_.symbols ? &ctx_.symbols->binding(e) : nullptr;
+        if (b && b->function) return local_of(*b->function, e.name);
         if (b && b->let) return let_name(e.name);
         if (b && b->param) return ctx_.args + "." + member_name(e.name);
         return ctx_.params + "." + member_name(e.name);
@@ -174,7 +175,37 @@ class Emitter {
     return cpp_type(type_of(e)) + "(" + lhs + " " + op + " " + rhs + ")";
   }
 
+  /// A parameter or a let of a function, in the lambda a call renders:
+  /// prefixed with the function's name, so that nested calls shadow nothing.
+  static std::string local_of(const ast::Function& f, const std::string& name) {
+    return f.name.text + "_" + name;
+  }
+
+  /// A call of a `def`, as an immediately invoked lambda taking the
+  /// arguments as parameters (the force loops inline calls in the IR
+  /// instead, lower/expr_lower.cpp).
+  std::string function_call(const Expr& e, const ast::Function& f) {
+    std::string out = "[&](";
+    for (std::size_t k = 0; k < f.params.size(); ++k) {
+      const ast::Param& p = f.params[k];
+      out += std::string(k ? ", " : "") + (p.uses == 0 ? "[[maybe_unused]] " : "") + "const " +
+             cpp_type(p.type) + " " + local_of(f, p.name.text);
+    }
+    out += ") -> " + cpp_type(f.result) + " {";
+    for (const ast::Let& let : f.lets) {
+      out += " const " + cpp_type(type_of(*let.value)) + " " + local_of(f, let.name.text) + " = " +
+             expr(*let.value) + ";";
+    }
+    out += " return " + as(*f.value, f.result) + "; }(";
+    for (std::size_t k = 0; k < e.args.size(); ++k)
+      out += std::string(k ? ", " : "") + as(*e.args[k], f.params[k].type);
+    return out + ")";
+  }
+
   std::string call(const Expr& e) {
+    if (ctx_.symbols) {
+      if (const ast::Function* f = ctx_.symbols->binding(e).function) return function_call(e, *f);
+    }
     std::vector<Type> types;
     for (const auto& a : e.args)
       types.push_back(type_of(*a));

@@ -130,10 +130,18 @@ void BodyRenderer::precompute(ExprId id) {
     return;
   const std::string code = expr(id);
   if (known(id, 0)) return;  // a fold computed by a fused walk
-  std::string name = std::string("s") + std::to_string(next_local_++);
+  std::string name = local_name(id);
   locals_.push_back(std::string("const ") + cpp_type(g_[id].type) + " " + name + " = " + code +
                     ";");
   blocks_.back().emplace(id, name);
+}
+
+std::string BodyRenderer::local_name(ExprId id) {
+  const std::string& given = g_[id].value_name;
+  if (given.empty()) return std::string("s") + std::to_string(next_local_++);
+  // A function called twice in one body: its lets' values are numbered.
+  const int n = ++value_names_[given];
+  return n == 1 ? given : given + "_" + std::to_string(n);
 }
 
 void BodyRenderer::open_block() {
@@ -203,7 +211,7 @@ std::string BodyRenderer::value(ExprId id) {
   // variable it does not read (it is then computed once before that fold).
   if (uses_[i] < 2 && level == fold_depth_) return node(id);
   const std::string code = node(id);
-  std::string name = std::string("s") + std::to_string(next_local_++);
+  std::string name = local_name(id);
   std::string local = std::string("const ") + cpp_type(n.type) + " " + name + " = " + code + ";";
   if (level > 0) {
     FoldScope& scope = folds_[static_cast<std::size_t>(level - 1)];

@@ -7,7 +7,8 @@
 //
 // A body that went through lower::share_common_subexpressions is rendered by
 // a BodyRenderer, which computes each value used more than once (or inside a
-// fold that does not change it) into one local `const T sN`, at the level
+// fold that does not change it) into one local `const T sN` (or named after
+// the let of an inlined function it is the value of), at the level
 // where its inputs exist: before the statement that first needs it, or at
 // the top of the fold body whose variable it reads. Folds of the statement
 // level over the same sub-orbits of the same dart (a vertex's faces) are
@@ -85,6 +86,9 @@ class BodyRenderer {
   std::string call(const ir::Node& n);
   bool cheap(const ir::Node& n) const;
   const std::string* known(ir::ExprId id, int level) const;
+  /// The C++ name of a new local computing `id`: `sN`, or the name of the
+  /// function's let it is the value of (ir::Node::value_name).
+  std::string local_name(ir::ExprId id);
 
   const ir::Graph& g_;
   const ir::Sharing& sharing_;
@@ -94,6 +98,7 @@ class BodyRenderer {
   std::vector<std::vector<ir::ExprId>> groups_;    ///< folds walked together, in node order
   int fold_depth_ = 0;                             ///< folds enclosing the node being rendered
   int next_local_ = 0;                             ///< sN: numbered in rendering order
+  std::map<std::string, int> value_names_;         ///< locals named after a function's let
   std::vector<std::map<ir::ExprId, std::string>> blocks_;  ///< statement-level names, per block
   std::vector<std::string> locals_;  ///< statement-level locals not yet written
   std::vector<FoldScope> folds_;     ///< one per enclosing fold

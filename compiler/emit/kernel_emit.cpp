@@ -589,7 +589,8 @@ void write_jacobian_product(Writer& w, const Kernel& k) {
   w.open("[[gnu::flatten]] void " + k.cls +
          "::jacobian_product([[maybe_unused]] const Match& m, [[maybe_unused]] const "
          "rift::ForceInput& in, [[maybe_unused]] const rift::Vec3* px, [[maybe_unused]] const "
-         "rift::Vec3* pv, rift::Vec3* out) {");
+         "rift::Vec3* pv, " +
+         std::string(b.forces.empty() ? "[[maybe_unused]] " : "") + "rift::Vec3* out) {");
   write_primal(w, k, b, values, "return;");
   std::string tx = "[[maybe_unused]] const rift::Vec3 tx[" + std::to_string(n) + "] = {";
   std::string tv = "[[maybe_unused]] const rift::Vec3 tv[" + std::to_string(n) + "] = {";

@@ -58,11 +58,34 @@ void for_each_script(const PackModel& m, F&& f) {
   }
 }
 
+/// Whether any expression, assignment or init of the pack reads or writes `e`.
+bool is_used(const PackModel& m, const ast::Embedding& e) {
+  const resolve::Symbols& s = *m.symbols;
+  for (const auto& [expr, binding] : s.bindings) {
+    if (binding.embedding == &e) return true;
+  }
+  for (const auto& [assign, target] : s.assign_targets) {
+    if (target == &e) return true;
+  }
+  for (const auto& [init, target] : s.init_targets) {
+    if (target == &e) return true;
+  }
+  return false;
+}
+
+/// Calls f on every embedding the pack declares on a map, in source order:
+/// its own (not their restatements of the simulator's state, which resolve
+/// checked against rift's), and those of the state that it reads or writes.
+/// The other state columns are the runtime's to create: a pack that does not
+/// read vertex_force must not make the simulator fill it every step.
 template <class F>
 void for_each_embedding(const PackModel& m, F&& f) {
   for (const ast::File& file : m.program->files) {
-    for (const ast::Embedding& e : file.embeddings)
+    for (const ast::Embedding& e : file.embeddings) {
+      if (m.symbols->embedding(e.name.text) != &e) continue;
+      if (file.builtin && !is_used(m, e)) continue;
       f(e);
+    }
   }
 }
 
@@ -293,25 +316,31 @@ void write_pack_class(Writer& w, const PackModel& m) {
 }
 
 void write_declare(Writer& w, const PackModel& m) {
-  w.open("void declare_embeddings(rift::GMap& g) {");
-  for (const ast::File& f : m.program->files) {
-    for (const ast::Embedding& e : f.embeddings) {
-      const std::string name = quote(e.name.text);
-      const std::string orbit = orbit_code(e.orbit.dims);
-      const std::string def = default_of(e, *m.types);
-      w.open("if (!g.has_embedding(" + name + ")) {");
-      w.line("g.declare_embedding<" + storage_type(e.type) + ">(" + name + ", " + orbit + ", " +
-             policy_of(e) + ", " + storage_type(e.type) + "(" + def + "));");
-      w.middle("} else if (g.find_column(" + name + ")->type() != " + value_type_enum(e.type) +
-               " || !(g.attachment_of(" + name + ")->orbit() == " + orbit + ")) {");
-      w.line("throw std::invalid_argument(" +
-             quote("the map's embedding '" + e.name.text + "' is not the pack's " +
-                   std::string(ast::to_string(e.type)) + std::string(" on ") +
-                   orbit_text(e.orbit.dims)) +
-             ");");
-      w.close();
-    }
-  }
+  bool any = false;
+  for_each_embedding(m, [&](const ast::Embedding&) { any = true; });
+  for (const check::CheckedInteraction& ci : *m.interactions)
+    any = any || ci.interaction->tagged;
+  // A pack may declare nothing: a topology pack that reads no embedding.
+  w.open(any ? "void declare_embeddings(rift::GMap& g) {"
+             : "void declare_embeddings(rift::GMap& /*map*/) {");
+  for_each_embedding(m, [&](const ast::Embedding& e) {
+    const std::string name = quote(e.name.text);
+    const std::string orbit = orbit_code(e.orbit.dims);
+    const std::string def = default_of(e, *m.types);
+    w.open("if (!g.has_embedding(" + name + ")) {");
+    w.line("g.declare_embedding<" + storage_type(e.type) + ">(" + name + ", " + orbit + ", " +
+           policy_of(e) + ", " + storage_type(e.type) + "(" + def + "));");
+    w.middle("} else if (g.find_column(" + name + ")->type() != " + value_type_enum(e.type) +
+             " || !(g.attachment_of(" + name + ")->orbit() == " + orbit + ") || g.find_column(" +
+             name + ")->policy() != " + policy_of(e) + ") {");
+    w.line("throw std::invalid_argument(" +
+           quote("the map's embedding '" + e.name.text + "' is not the pack's " +
+                 std::string(ast::to_string(e.type)) + std::string(" on ") +
+                 orbit_text(e.orbit.dims) + " merged by '" +
+                 (e.merge ? e.merge->text : std::string("keep")) + "'") +
+           ");");
+    w.close();
+  });
   for (const check::CheckedInteraction& ci : *m.interactions) {
     if (!ci.interaction->tagged) continue;
     const std::string name = quote(tag_embedding(ci.interaction->name.text));

@@ -39,6 +39,19 @@ struct Force {
   diag::Location loc;
 };
 
+/// `jacobian a.f by b.position = value`: the block ∂f/∂x_b (∂f/∂v_b for a
+/// velocity) of every force statement storing a.f, given by the rule rather
+/// than derived (lower/derivative.hpp).
+struct JacobianBlock {
+  int node = 0;  // the force's node, index into Body::nodes
+  std::string embedding;
+  int by_node = 0;   // b, index into Body::nodes
+  int by_slot = -1;  // the vertex slot of node b (the slot its `b.position` reads)
+  bool velocity = false;
+  ExprId value = kNoExpr;  // a mat3
+  diag::Location loc;
+};
+
 /// What lets a renderer compute each shared value once (lower/share.hpp),
 /// one entry per node of the graph; empty until the body is shared. (How
 /// often a node is used depends on what one function renders: ir::count_uses.)
@@ -61,8 +74,9 @@ struct Body {
   std::vector<Let> lets;
   std::vector<Stmt> stmts;    // lets and whens, in source order
   std::vector<Force> forces;  // in source order
-  ExprId energy = kNoExpr;    // a real, or kNoExpr when the interaction has none
-  Sharing sharing;            // filled by lower::share_common_subexpressions
+  std::vector<JacobianBlock> jacobians;
+  ExprId energy = kNoExpr;  // a real, or kNoExpr when the interaction has none
+  Sharing sharing;          // filled by lower::share_common_subexpressions
 };
 
 }  // namespace rift::ir

@@ -151,6 +151,11 @@ struct Node {
   std::vector<int> outer;  // Fold
   int var = -1;            // Fold: the node index its dart variable takes
   diag::Location loc;      // where the expression is written
+  /// What the source calls this value, when it is the value of a function's
+  /// let inlined at a call (`spring_force_d`): the renderer names the local
+  /// it computes the value into so. Not part of what the node computes
+  /// (sharing ignores it), and not carried to derived nodes.
+  std::string value_name;
 
   /// Number of operands (0..3 + more.size()).
   std::size_t arity() const;

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <map>
+#include <set>
 #include <utility>
 
 #include "check/kernels.hpp"
@@ -36,14 +38,19 @@ bool reads_state_through_map(const Node& n) {
          (n.embedding == check::kPositionEmbedding || n.embedding == check::kVelocityEmbedding);
 }
 
-/// Which nodes depend on a position or a velocity, and the first active
+/// The (vertex slot, velocity?) pairs whose blocks the rule gives for one
+/// force: its tangent is not derived along them.
+using Given = std::set<std::pair<int, bool>>;
+
+/// Whether a Position or Velocity read seeds the tangents.
+using Seeded = std::function<bool(const Node&)>;
+
+/// Which nodes depend on a seeded position or velocity, and the first active
 /// subexpression without a derivative.
 class Activity {
  public:
-  Activity(const ir::Body& body, DerivativePlan& out)
-      : body_(body), out_(out), memo_(body.graph.size(), -1), let_(body.lets.size(), false) {}
-
-  void let(std::size_t i) { let_[i] = active(body_.lets[i].value); }
+  Activity(const ir::Body& body, DerivativePlan& out, Seeded seeded)
+      : body_(body), out_(out), seeded_(std::move(seeded)), memo_(body.graph.size(), -1) {}
 
   bool active(ExprId id) {
     auto& m = memo_[static_cast<std::size_t>(id)];
@@ -57,12 +64,12 @@ class Activity {
     switch (n.op) {
       case Op::Position:
         out_.depends_on_x = true;
-        return true;
+        return seeded_(n);
       case Op::Velocity:
         out_.depends_on_v = true;
-        return true;
+        return seeded_(n);
       case Op::Let:
-        return let_[static_cast<std::size_t>(n.index)];
+        return active(body_.lets[static_cast<std::size_t>(n.index)].value);
       case Op::Call:
         if (n.fn == Builtin::StopGradient) {
           flags_only(n.a);  // constant for differentiation, whatever it holds
@@ -100,6 +107,7 @@ class Activity {
     ir::visit(body_.graph, id, [this](const Node& n) {
       if (n.op == Op::Position) out_.depends_on_x = true;
       if (n.op == Op::Velocity) out_.depends_on_v = true;
+      if (n.op == Op::Let) flags_only(body_.lets[static_cast<std::size_t>(n.index)].value);
     });
   }
 
@@ -111,15 +119,36 @@ class Activity {
 
   const ir::Body& body_;
   DerivativePlan& out_;
+  Seeded seeded_;
   std::vector<std::int8_t> memo_;  // per node: -1 not yet known, 0, 1
-  std::vector<bool> let_;
 };
+
+/// The blocks the rule gives for force statement `i` (those of its node and
+/// embedding), restricted to the kinds `seed` differentiates by.
+Given given_blocks(const ir::Body& body, std::size_t i, Seed seed = {true, true}) {
+  Given out;
+  const ir::Force& f = body.forces[i];
+  for (const ir::JacobianBlock& j : body.jacobians) {
+    if (j.node == f.node && j.embedding == f.embedding && (j.velocity ? seed.v : seed.x))
+      out.emplace(j.by_slot, j.velocity);
+  }
+  return out;
+}
+
+bool is_given(const Given& given, const Node& n) {
+  return given.count({n.place.slot, n.op == Op::Velocity || n.op == Op::VelocityTangent}) != 0;
+}
 
 /// Builds the tangent nodes of one pass into `g` (the body's graph, extended).
 class Tangents {
  public:
-  Tangents(ir::Graph& g, const ir::Body& body, Seed seed)
-      : g_(g), body_(body), seed_(seed), let_(body.lets.size(), kUnknown) {}
+  /// Along the `given` blocks the tangent is not derived (the rule gives them).
+  Tangents(ir::Graph& g, const ir::Body& body, Seed seed, Given given = {})
+      : g_(g),
+        body_(body),
+        seed_(seed),
+        given_(std::move(given)),
+        let_(body.lets.size(), kUnknown) {}
 
   /// The tangent of node `id`, kNoExpr when identically zero.
   ExprId of(ExprId id) {
@@ -209,6 +238,7 @@ class Tangents {
       case Op::Position:
       case Op::Velocity: {
         if (n.op == Op::Position ? !seed_.x : !seed_.v) return kNoExpr;
+        if (is_given(given_, n)) return kNoExpr;
         Node t;
         t.op = n.op == Op::Position ? Op::PositionTangent : Op::VelocityTangent;
         t.type = Type::Vec3;
@@ -237,6 +267,7 @@ class Tangents {
         if (ta == kNoExpr) return kNoExpr;
         Node t = n;
         t.a = ta;
+        t.value_name.clear();  // names the value, not its tangent
         return g_.add(std::move(t));
       }
       case Op::Call:
@@ -354,9 +385,37 @@ class Tangents {
   ir::Graph& g_;
   const ir::Body& body_;
   Seed seed_;
+  Given given_;
   std::vector<ExprId> let_;
   std::map<ExprId, ExprId> memo_;
 };
+
+/// `out` says why force `i` has no derivative: names the first state read
+/// through which it fails (a block the rule could give) in the remedy.
+void name_missing_block(const ir::Body& body, const KernelPlan& kernel, std::size_t i,
+                        const Given& given, DerivativePlan& out) {
+  const ir::Force& f = body.forces[i];
+  for (std::size_t s = 0; s < kernel.slots.size(); ++s) {
+    const SlotUse& slot = kernel.slots[s];
+    if (!slot.vertex || !slot.hops.empty()) continue;
+    for (const bool velocity : {false, true}) {
+      if (given.count({static_cast<int>(s), velocity})) continue;
+      DerivativePlan one;
+      Activity activity(body, one, [&](const Node& n) {
+        return n.place.slot == static_cast<int>(s) && (n.op == Op::Velocity) == velocity;
+      });
+      activity.active(f.value);
+      // Only a built-in without a derivative can be replaced by given blocks
+      // (a fold also reads vertices outside the match).
+      if (one.why.empty() || one.why.front() != '\'') continue;
+      out.why += ", or give the Jacobian blocks it enters (the first missing: 'jacobian " +
+                 body.nodes[static_cast<std::size_t>(f.node)] + "." + f.embedding + " by " +
+                 kernel.nodes[static_cast<std::size_t>(slot.node)] +
+                 (velocity ? ".velocity" : ".position") + " = <mat3>;')";
+      return;
+    }
+  }
+}
 
 }  // namespace
 
@@ -370,13 +429,28 @@ DerivativePlan plan_derivative(const ir::Body& body, const KernelPlan& kernel,
   DerivativePlan out;
   for (std::size_t s = 0; s < kernel.slots.size(); ++s)
     if (kernel.slots[s].vertex) out.vertex_slots.push_back(static_cast<int>(s));
-  Activity activity(body, out);
-  // Lets in source order: each sees the activity of the earlier ones. Every
-  // let is checked (a force may read any of them), then the forces.
-  for (const ir::Stmt& s : body.stmts)
-    if (s.kind == ir::Stmt::Kind::Let) activity.let(static_cast<std::size_t>(s.let));
-  for (const ir::Force& f : body.forces)
-    activity.active(f.value);
+  {
+    // Whether the body reads positions (velocities) at all: which tangent
+    // passes the Jacobian has. Every let counts, as every force.
+    DerivativePlan flags;
+    Activity activity(body, flags, [](const Node&) { return true; });
+    for (const ir::Let& l : body.lets)
+      activity.active(l.value);
+    for (const ir::Force& f : body.forces)
+      activity.active(f.value);
+    out.depends_on_x = flags.depends_on_x;
+    out.depends_on_v = flags.depends_on_v;
+  }
+  // Per force: is every tangent it needs formed, along every position and
+  // velocity but those of the blocks the rule gives?
+  for (std::size_t i = 0; i < body.forces.size() && out.why.empty(); ++i) {
+    const Given given = given_blocks(body, i);
+    Activity activity(body, out, [&given](const Node& n) { return !is_given(given, n); });
+    activity.active(body.forces[i].value);
+    if (!out.why.empty()) name_missing_block(body, kernel, i, given, out);
+  }
+  for (const ir::JacobianBlock& j : body.jacobians)
+    (j.velocity ? out.depends_on_v : out.depends_on_x) = true;
   out.available = out.why.empty() && !out.vertex_slots.empty();
   if (out.why.empty() && out.vertex_slots.empty()) {
     out.where = declared;
@@ -389,13 +463,37 @@ DifferentiatedBody differentiate(const ir::Body& body, const std::vector<Seed>& 
   DifferentiatedBody out;
   out.body = body;
   for (const Seed& seed : seeds) {
-    Tangents tangents(out.body.graph, body, seed);
+    // One tangent builder per set of given blocks (forces without any share
+    // the first, whose let tangents the renderer names).
+    std::map<Given, Tangents> by_given;
+    by_given.try_emplace(Given{}, out.body.graph, body, seed);
     TangentPass pass;
     pass.seed = seed;
     for (std::size_t i = 0; i < body.lets.size(); ++i)
-      pass.lets.push_back(tangents.of_let(i));
-    for (const ir::Force& f : body.forces)
-      pass.forces.push_back(tangents.of(f.value));
+      pass.lets.push_back(by_given.at(Given{}).of_let(i));
+    std::set<std::pair<int, std::string>> added;  // forces whose given blocks are in
+    for (std::size_t i = 0; i < body.forces.size(); ++i) {
+      const ir::Force& f = body.forces[i];
+      Given given = given_blocks(body, i, seed);
+      auto it = by_given.try_emplace(given, out.body.graph, body, seed, given).first;
+      ExprId t = it->second.of(f.value);
+      // The given blocks times the directions, once per stored force.
+      if (added.emplace(f.node, f.embedding).second) {
+        for (const ir::JacobianBlock& j : body.jacobians) {
+          if (j.node != f.node || j.embedding != f.embedding || (j.velocity ? !seed.v : !seed.x))
+            continue;
+          Node leaf;
+          leaf.op = j.velocity ? Op::VelocityTangent : Op::PositionTangent;
+          leaf.type = Type::Vec3;
+          leaf.place.node = j.by_node;
+          leaf.place.slot = j.by_slot;
+          const ExprId d = out.body.graph.add(std::move(leaf));
+          const ExprId term = out.body.graph.binary(Op::Mul, Type::Vec3, j.value, d);
+          t = t == kNoExpr ? term : out.body.graph.binary(Op::Add, Type::Vec3, t, term);
+        }
+      }
+      pass.forces.push_back(t);
+    }
     out.passes.push_back(std::move(pass));
   }
   // The primal and the tangents as one graph: equal values become one node,

@@ -115,7 +115,30 @@ ExprId ExprLowering::binary(const Expr& e) {
   return g_.binary(op, types_.of(e), x, y);
 }
 
+ExprId ExprLowering::inline_call(const Expr& e, const ast::Function& f) {
+  Frame frame;
+  for (std::size_t k = 0; k < e.args.size(); ++k)
+    frame.params[&f.params[k]] = lower_as(*e.args[k], f.params[k].type);
+  frames_.push_back(std::move(frame));
+  for (const ast::Let& let : f.lets) {
+    const auto before = static_cast<ExprId>(g_.size());
+    ExprId id = lower(*let.value);
+    // A node this let created takes its name (a let that only renames an
+    // argument or an earlier value adds nothing to name).
+    if (id >= before && g_[id].value_name.empty() && g_[id].op != Op::Literal) {
+      ir::Node named = g_[id];
+      named.value_name = f.name.text + "_" + let.name.text;
+      id = g_.add(std::move(named));
+    }
+    frames_.back().lets[&let] = id;
+  }
+  const ExprId result = lower_as(*f.value, f.result);
+  frames_.pop_back();
+  return result;
+}
+
 ExprId ExprLowering::call(const Expr& e) {
+  if (const ast::Function* f = symbols_.binding(e).function) return inline_call(e, *f);
   std::vector<Type> types;
   for (const auto& a : e.args)
     types.push_back(types_.of(*a));
@@ -163,10 +186,14 @@ ExprId ExprLowering::lower(const Expr& e) {
       id = g_.boolean(e.boolean);
       break;
     case Expr::Kind::Name: {
+      const resolve::Binding& b = symbols_.binding(e);
+      if (b.function) {  // a parameter or a let of the function being inlined
+        const Frame& frame = frames_.back();
+        return b.let ? frame.lets.at(b.let) : frame.params.at(b.param);
+      }
       ir::Node n;
       n.type = types_.of(e);
       n.name = e.name;
-      const resolve::Binding& b = symbols_.binding(e);
       if (b.let) {
         n.op = Op::Let;
         const auto it = lets_.find(b.let);

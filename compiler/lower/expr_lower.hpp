@@ -3,6 +3,12 @@
 // for each built-in and every int-to-real promotion become explicit, and in a
 // force loop, reads become slot reads with positions and velocities as
 // Position / Velocity nodes (the integrator's stage arrays).
+//
+// A call of a `def` is inlined: its parameters stand for the nodes of the
+// arguments and its lets for the nodes of their values, so that every pass
+// after lowering (sharing, derivatives, rendering) sees plain expressions.
+// The node a function's let computes carries its name (`spring_force_d`),
+// which the renderer gives the value when it computes it into a local.
 #pragma once
 
 #include <map>
@@ -38,6 +44,7 @@ class ExprLowering {
   ir::ExprId binary(const ast::Expr& e);
   ir::ExprId call(const ast::Expr& e);
   ir::ExprId fold(const ast::Expr& e);
+  ir::ExprId inline_call(const ast::Expr& e, const ast::Function& f);
   int node_index(const std::string& name) const;
   ir::Place place(const ast::Expr& e) const;
 
@@ -47,6 +54,13 @@ class ExprLowering {
   const resolve::Symbols& symbols_;
   const check::ExprTypes& types_;
   std::map<const ast::Let*, int> lets_;
+  /// One per function being inlined, innermost last: what its parameters and
+  /// lets stand for. A function's body reads only its own frame.
+  struct Frame {
+    std::map<const ast::Param*, ir::ExprId> params;
+    std::map<const ast::Let*, ir::ExprId> lets;
+  };
+  std::vector<Frame> frames_;
 };
 
 }  // namespace rift::lower

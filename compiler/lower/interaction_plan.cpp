@@ -1,5 +1,8 @@
 #include "lower/interaction_plan.hpp"
 
+#include <algorithm>
+
+#include "check/kernels.hpp"
 #include "lower/expr_lower.hpp"
 #include "lower/share.hpp"
 
@@ -57,6 +60,20 @@ InteractionPlan plan_interaction(const check::CheckedInteraction& ci,
     body.forces.push_back(f);
   }
   if (inter.energy) body.energy = loop.lower_as(*inter.energy, ir::Type::Real);
+  for (const ast::JacobianBlock& a : inter.jacobians) {
+    ir::JacobianBlock j;
+    for (std::size_t v = 0; v < body.nodes.size(); ++v) {
+      if (body.nodes[v] == a.force_node.text) j.node = static_cast<int>(v);
+    }
+    j.embedding = a.force.text;
+    j.by_node = static_cast<int>(std::find(body.nodes.begin(), body.nodes.end(), a.by_node.text) -
+                                 body.nodes.begin());
+    j.by_slot = plan.kernel.find(j.by_node, {}, vertex_orbit(ci.graph.dimension));
+    j.velocity = a.by_state.text == check::kVelocityEmbedding;
+    j.value = loop.lower_as(*a.value, ir::Type::Mat3);
+    j.loc = a.loc;
+    body.jacobians.push_back(j);
+  }
 
   // Inits run on the initial map, reading through it rather than through slots.
   ExprLowering at_init(body.graph, body.nodes, nullptr, symbols, types);
@@ -92,6 +109,8 @@ InteractionPlan plan_interaction(const check::CheckedInteraction& ci,
     loop_reads(s.cond);
   for (const ir::Force& f : body.forces)
     loop_reads(f.value);
+  for (const ir::JacobianBlock& j : body.jacobians)
+    loop_reads(j.value);
   loop_reads(body.energy);
   plan.embeddings.erase("");
   return plan;

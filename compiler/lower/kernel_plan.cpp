@@ -104,6 +104,11 @@ KernelPlan plan_kernel(const check::CheckedInteraction& ci, const resolve::Symbo
     plan.forces.push_back(store);
   }
   if (inter.energy) collect.reads(*inter.energy);
+  // A block by b is of b's vertex, read or not; its value is a force-loop value.
+  for (const ast::JacobianBlock& j : inter.jacobians) {
+    collect.reads(*j.value);
+    collect.add(g.left.find(j.by_node.text), {}, vertex_orbit(g.dimension), "");
+  }
   return plan;
 }
 

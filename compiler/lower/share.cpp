@@ -164,6 +164,8 @@ void share_common_subexpressions(ir::Body& body, const std::vector<ir::ExprId*>&
   for (ir::Force& f : body.forces)
     roots.push_back(&f.value);
   roots.push_back(&body.energy);
+  for (ir::JacobianBlock& j : body.jacobians)
+    roots.push_back(&j.value);
   roots.insert(roots.end(), extra_roots.begin(), extra_roots.end());
 
   Sharer sharer(body.graph, body.nodes);

@@ -28,6 +28,7 @@ struct ParseContext {
   std::vector<ast::ExprPtr>* whens = nullptr;
   std::vector<ast::BodyStmt>* body = nullptr;  // the source order of both
   bool reported_depth = false;                 // "nested too deeply" is said once per file
+  ast::Function function{};                    // the `def` being read
 };
 
 /// Deepest expression tree the parser builds: every later pass recurses over

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "parse/parse_file.hpp"
+#include "parse/state_embeddings.hpp"
 
 namespace rift::parse {
 
@@ -19,9 +20,10 @@ class Loader {
         program_(program),
         include_dirs_(std::move(include_dirs)) {}
 
-  void read(int file_id) {
+  void read(int file_id, bool included = false) {
     in_progress_.push_back(file_id);
     ast::File file;
+    file.included = included;
     parse_file(sources_, file_id, diags_, file);
     check_dimension(file);
     const std::string base = fs::path(sources_.file(file_id).path).parent_path().string();
@@ -60,7 +62,7 @@ class Loader {
       diags_.error(inc.loc, "cannot read included file '" + path + "'");
       return;
     }
-    read(id);
+    read(id, true);
   }
 
  private:
@@ -105,6 +107,7 @@ ast::Program load_program(const std::vector<std::string>& paths, diag::SourceMan
     }
     loader.read(id);
   }
+  add_state_embeddings(program, sources, diags);
   return program;
 }
 
@@ -113,6 +116,7 @@ ast::Program load_text(const std::string& path, const std::string& text,
   ast::Program program;
   Loader loader(sources, diags, program);
   loader.read(sources.add(path, text));
+  add_state_embeddings(program, sources, diags);
   return program;
 }
 

@@ -24,7 +24,12 @@ struct Scope {
   bool constant = false;  // embedding defaults and pack parameters: no names at all
   const std::vector<ast::Let>* match_lets = nullptr;  // lets that exist but may not be read
   std::string match_lets_reason;
+  const ast::Function* function = nullptr;  // the body of this `def`: no darts, no embeddings
 };
+
+/// Calls between functions, for the recursion check: caller -> (callee, call site).
+using FunctionCalls =
+    std::map<const ast::Function*, std::vector<std::pair<const ast::Function*, diag::Location>>>;
 
 class Resolver {
  public:
@@ -35,8 +40,19 @@ class Resolver {
       case Expr::Kind::Name:
         name(e, scope);
         break;
+      case Expr::Kind::Call:
+        call(e, scope);
+        break;
       case Expr::Kind::Read:
       case Expr::Kind::Collect:
+      case Expr::Kind::Fold:
+        if (scope.function) {
+          diags_.error(e.loc, "function '" + scope.function->name.text +
+                                  "' cannot read the map (embeddings, darts); pass the values "
+                                  "it needs as parameters");
+          return;
+        }
+        if (e.kind == Expr::Kind::Fold) break;
         if (scope.constant) {
           diags_.error(e.loc, "a constant expression cannot read embeddings");
           return;
@@ -44,25 +60,27 @@ class Resolver {
         node(e.node, e.node_loc, scope);
         symbols_.bindings[&e].embedding = embedding(e.name, e.loc);
         break;
-      case Expr::Kind::Fold: {
-        if (scope.constant) {
-          diags_.error(e.loc, "a constant expression cannot traverse the map");
-          return;
-        }
-        node(e.node, e.node_loc, scope);
-        Scope inner = scope;
-        inner.nodes.insert(e.var);
-        inner.hidden_nodes.erase(e.var);
-        for (const auto& a : e.args)
-          expr(*a, inner);
-        return;
-      }
       default:
         break;
+    }
+    if (e.kind == Expr::Kind::Fold) {
+      if (scope.constant) {
+        diags_.error(e.loc, "a constant expression cannot traverse the map");
+        return;
+      }
+      node(e.node, e.node_loc, scope);
+      Scope inner = scope;
+      inner.nodes.insert(e.var);
+      inner.hidden_nodes.erase(e.var);
+      for (const auto& a : e.args)
+        expr(*a, inner);
+      return;
     }
     for (const auto& a : e.args)
       expr(*a, scope);
   }
+
+  const FunctionCalls& function_calls() const { return function_calls_; }
 
   const ast::Embedding* embedding(const std::string& name, const diag::Location& loc) {
     const ast::Embedding* emb = symbols_.embedding(name);
@@ -115,6 +133,20 @@ class Resolver {
   }
 
  private:
+  /// A call of a `def` is bound to it (a built-in's name binds nothing:
+  /// check/ knows the built-ins and reports unknown functions).
+  void call(const Expr& e, const Scope& scope) {
+    const ast::Function* f = symbols_.function(e.name);
+    if (!f) return;
+    if (scope.constant) {
+      diags_.error(e.op_loc, "a constant expression cannot call function '" + e.name + "'");
+      return;
+    }
+    symbols_.bindings[&e].function = f;
+    ++symbols_.calls[f];
+    if (scope.function) function_calls_[scope.function].emplace_back(f, e.op_loc);
+  }
+
   /// Binds a bare name (Symbols::binding) or reports why it cannot be read.
   void name(const Expr& e, const Scope& scope) {
     if (scope.lets) {
@@ -123,6 +155,7 @@ class Resolver {
         const ast::Let& let = (*scope.lets)[k];
         if (let.name.text == e.name) {
           symbols_.bindings[&e].let = &let;
+          symbols_.bindings[&e].function = scope.function;
           ++let.uses;
           return;
         }
@@ -132,6 +165,7 @@ class Resolver {
       for (const ast::Param& p : *scope.params) {
         if (p.name.text == e.name) {
           symbols_.bindings[&e].param = &p;
+          symbols_.bindings[&e].function = scope.function;
           ++p.uses;
           return;
         }
@@ -174,6 +208,7 @@ class Resolver {
 
   Symbols& symbols_;
   diag::Diagnostics& diags_;
+  FunctionCalls function_calls_;
 };
 
 std::set<std::string> node_names(const ast::Pattern& p) {
@@ -310,6 +345,66 @@ void check_recursion(const CallGraph& calls, diag::Diagnostics& diags) {
   }
 }
 
+/// A function's body sees its parameters, its lets written before, and the
+/// pack's `param`s; its parameters have distinct names.
+void resolve_function(const ast::Function& f, Resolver& r) {
+  for (std::size_t k = 0; k < f.params.size(); ++k) {
+    for (std::size_t j = 0; j < k; ++j) {
+      if (f.params[j].name.text != f.params[k].name.text) continue;
+      ++f.params[k].uses;  // reported here; no second report as unused
+      r.diags()
+          .error(f.params[k].name.loc, "parameter '" + f.params[k].name.text + "' of function '" +
+                                           f.name.text + "' is declared twice")
+          .notes.push_back({f.params[j].name.loc, "first declared here"});
+      break;
+    }
+  }
+  Scope s;
+  s.function = &f;
+  s.params = &f.params;
+  r.lets(f.lets, s);
+  s.lets = &f.lets;
+  s.visible_lets = f.lets.size();
+  r.expr(*f.value, s);
+}
+
+/// A function may not call itself, directly or through others: its calls are
+/// inlined. Each call that closes a cycle is reported with the cycle.
+void check_function_recursion(const ast::Program& program, const FunctionCalls& calls,
+                              diag::Diagnostics& diags) {
+  std::map<const ast::Function*, int> state;  // 0 unvisited, 1 on the path, 2 done
+  std::vector<const ast::Function*> path;
+  std::function<void(const ast::Function*)> visit = [&](const ast::Function* f) {
+    state[f] = 1;
+    path.push_back(f);
+    auto it = calls.find(f);
+    if (it != calls.end()) {
+      for (const auto& [callee, loc] : it->second) {
+        if (state[callee] == 1) {
+          std::string cycle;
+          for (auto p = std::find(path.begin(), path.end(), callee); p != path.end(); ++p)
+            cycle += "'" + (*p)->name.text + "' -> ";
+          const std::string what = callee == f
+                                       ? "calls itself"
+                                       : "calls '" + callee->name.text + "', which calls it again";
+          diags.error(loc, "function '" + f->name.text + "' " + what + " (" + cycle + "'" +
+                               callee->name.text + "'); functions cannot recurse");
+        } else if (state[callee] == 0) {
+          visit(callee);
+        }
+      }
+    }
+    path.pop_back();
+    state[f] = 2;
+  };
+  // In declaration order, so that the same call is reported on every run.
+  for (const ast::File& file : program.files) {
+    for (const ast::Function& f : file.functions) {
+      if (state[&f] == 0) visit(&f);
+    }
+  }
+}
+
 }  // namespace
 
 void resolve_names(const ast::Program& program, Symbols& symbols, diag::Diagnostics& diags) {
@@ -318,6 +413,8 @@ void resolve_names(const ast::Program& program, Symbols& symbols, diag::Diagnost
   constant.constant = true;
   CallGraph script_calls;
   for (const ast::File& file : program.files) {
+    for (const auto& f : file.functions)
+      resolve_function(f, r);
     for (const auto& e : file.embeddings) {
       if (e.default_value) r.expr(*e.default_value, constant);
     }
@@ -361,6 +458,8 @@ void resolve_names(const ast::Program& program, Symbols& symbols, diag::Diagnost
         r.node(f.node.text, f.node.loc, s);
         r.expr(*f.value, s);
       }
+      for (const auto& j : inter.jacobians)
+        r.expr(*j.value, s);
       if (inter.energy) r.expr(*inter.energy, s);
     }
     for (const auto& crit : file.criteria) {
@@ -381,6 +480,7 @@ void resolve_names(const ast::Program& program, Symbols& symbols, diag::Diagnost
     }
   }
   check_recursion(script_calls, diags);
+  check_function_recursion(program, r.function_calls(), diags);
 }
 
 }  // namespace rift::resolve

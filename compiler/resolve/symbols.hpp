@@ -12,12 +12,16 @@
 namespace rift::resolve {
 
 /// What a bare name (one of let, param, pack_param) or an embedding read or
-/// collection (embedding) of an expression refers to.
+/// collection (embedding) of an expression refers to, and the function a call
+/// of a `def` calls (function).
 struct Binding {
   const ast::Let* let = nullptr;
   const ast::Param* param = nullptr;
   const ast::PackParam* pack_param = nullptr;
   const ast::Embedding* embedding = nullptr;
+  /// A Call: the `def` it calls (nullptr for a built-in). A Name: the
+  /// function whose parameter or let it is (nullptr outside functions).
+  const ast::Function* function = nullptr;
 };
 
 struct Symbols {
@@ -27,11 +31,13 @@ struct Symbols {
   std::map<std::string, const ast::Interaction*, std::less<>> interactions;
   std::map<std::string, const ast::Criterion*, std::less<>> criteria;
   std::map<std::string, const ast::Script*, std::less<>> scripts;
+  std::map<std::string, const ast::Function*, std::less<>> functions;
 
   const ast::Embedding* embedding(std::string_view name) const;
   const ast::PackParam* param(std::string_view name) const;
   const ast::Rule* rule(std::string_view name) const;
   const ast::Script* script(std::string_view name) const;
+  const ast::Function* function(std::string_view name) const;
   /// The parameters of the rule or script `name`, or nullptr when there is none.
   const std::vector<ast::Param>* callee_params(std::string_view name) const;
 
@@ -48,6 +54,9 @@ struct Symbols {
   /// resolve_names bound it (all null when it did not resolve).
   const Binding& binding(const ast::Expr& e) const;
   std::unordered_map<const ast::Expr*, Binding> bindings;
+
+  /// How many calls name each function (for -Wunused-function).
+  std::unordered_map<const ast::Function*, int> calls;
 };
 
 /// Collects every declaration; a name declared twice is an error with a note

@@ -12,6 +12,8 @@
 #include "../physics/physics_setup.hpp"
 #include "rift/core/parallel.hpp"
 #include "rift/mesh/load_map.hpp"
+#include "rift/sim/element_matrix.hpp"
+#include "rift/sim/preconditioner.hpp"
 
 namespace {
 
@@ -94,5 +96,49 @@ BENCHMARK_CAPTURE(BM_ImplicitCorotationalBeam, bdf2_jacobi, rift::Preconditioner
     ->Arg(2)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+// What a tear costs the incomplete-Cholesky preconditioner (issue 10): its
+// update on the beam's element blocks with the global pattern rebuilt
+// (arg 1: the symbolic part, as after a tear) and without (arg 0: the
+// numeric factorisation every step redoes). Compare with the step above.
+void BM_IncompleteCholeskyUpdate(benchmark::State& state) {
+  using namespace rift::physics_test;
+  rift::GMap map = rift::load_map("block:tet:8x8x50");
+  for (Vec3& x : map.embedding<Vec3>("position").values())
+    x = Vec3(0.16 * x.x(), 0.16 * x.y(), x.z());
+  SimSetup setup;
+  setup.settings.dt = 0.01;
+  setup.interactions = {{"corotational", {{"young", 1e6}, {"poisson", 0.3}}}};
+  setup.prepare = [](rift::Simulation& sim) {
+    sim.set_density(1000);
+    sim.pin_where([](const Vec3& x) { return x.z() < 1e-9; });
+  };
+  auto sim = simulate(std::move(map), setup);
+  // A bent state, so the blocks are those of a deformed beam.
+  std::vector<Vec3> x = sim->position().values();
+  for (Vec3& p : x)
+    p.y() -= 0.05 * p.z() * p.z();
+  const std::vector<Vec3> v(x.size(), Vec3::Zero());
+  std::vector<rift::ForceModel*> models;
+  for (const auto& m : sim->force_models())
+    models.push_back(m.get());
+  rift::ElementMatrix blocks;
+  blocks.set_models(models);
+  std::vector<Vec3> kxv;
+  blocks.assemble(rift::ForceInput{x.data(), v.data()}, 0.01, x.size(), kxv);
+  const std::vector<Real>& mass = sim->vertex_mass().values();
+  std::vector<char> is_free(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i)
+    is_free[i] = sim->position().attachment().slot_alive(static_cast<rift::Slot>(i)) &&
+                 sim->inverse_masses()[i] > 0;
+  rift::Preconditioner ic(rift::PreconditionerKind::kIncompleteCholesky);
+  ic.update(&blocks, mass, is_free, true);
+  const bool rebuild = state.range(0) != 0;
+  for (auto _ : state)
+    ic.update(&blocks, mass, is_free, rebuild);
+  state.counters["pattern_rebuilt"] = static_cast<double>(rebuild);
+}
+
+BENCHMARK(BM_IncompleteCholeskyUpdate)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace

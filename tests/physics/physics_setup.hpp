@@ -56,11 +56,14 @@ struct SimSetup {
   std::vector<Use> criteria;
   /// Masses (default: total 1 kg by area/volume) and pins, before initialise().
   std::function<void(Simulation&)> prepare;
+  /// Where the components are looked up (null: the standard packs, packs()).
+  const PackRegistry* registry = nullptr;
 };
 
 /// Declares and initialises the packs the setup uses, then builds the simulation.
 inline std::unique_ptr<Simulation> simulate(GMap map, const SimSetup& setup) {
   const int n = map.dimension();
+  const PackRegistry& registry = setup.registry ? *setup.registry : packs();
   std::vector<const Pack*> used;
   auto use = [&](const Pack* p) {
     if (!p) throw std::invalid_argument("no pack offers a component of this setup");
@@ -70,9 +73,9 @@ inline std::unique_ptr<Simulation> simulate(GMap map, const SimSetup& setup) {
     used.push_back(p);
   };
   for (const Use& u : setup.interactions)
-    use(packs().pack_of_interaction(u.name, n));
+    use(registry.pack_of_interaction(u.name, n));
   for (const Use& u : setup.criteria)
-    use(packs().pack_of_criterion(u.name, n));
+    use(registry.pack_of_criterion(u.name, n));
   for (const Pack* p : used) {
     declare_embeddings(map, p->embeddings());
     p->initialise(map);
@@ -84,9 +87,9 @@ inline std::unique_ptr<Simulation> simulate(GMap map, const SimSetup& setup) {
     sim->set_total_mass(1.0);
   }
   for (const Use& u : setup.interactions)
-    sim->add_force_model(packs().pack_of_interaction(u.name, n)->make_interaction(u.component()));
+    sim->add_force_model(registry.pack_of_interaction(u.name, n)->make_interaction(u.component()));
   for (const Use& u : setup.criteria)
-    sim->add_criterion(packs().pack_of_criterion(u.name, n)->make_criterion(u.component()));
+    sim->add_criterion(registry.pack_of_criterion(u.name, n)->make_criterion(u.component()));
   sim->initialise();
   return sim;
 }

@@ -11,6 +11,7 @@
 
 #include <unistd.h>
 
+#include "rift/core/state_embeddings.hpp"
 #include "rift/scene/scene.hpp"
 #include "rift/scene/scene_setup.hpp"
 
@@ -108,7 +109,7 @@ void store_forces(Simulation& sim) {
     model->add_forces(in, f.data(), true);
   // The total internal force per vertex, where a pack declares it (as the
   // simulation stores it: same orbit as position, so the same slots).
-  if (Embedding<Vec3> total = sim.map().embedding<Vec3>(embedding_names::kVertexForce)) {
+  if (Embedding<Vec3> total = sim.map().embedding<Vec3>(state::kVertexForce)) {
     std::vector<Vec3>& out = total.values();
     std::copy(f.begin(), f.begin() + static_cast<std::ptrdiff_t>(std::min(f.size(), out.size())),
               out.begin());

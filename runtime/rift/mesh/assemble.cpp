@@ -5,6 +5,7 @@
 #include <span>
 #include <string>
 
+#include "rift/gmap/state_columns.hpp"
 #include "rift/mesh/element_faces.hpp"
 #include "rift/mesh/mesh_error.hpp"
 
@@ -414,12 +415,9 @@ GMap assemble_gmap(const MeshData& mesh, AssemblyReport* report) {
   // embeddings allocate their slot arrays, to keep the peak memory low.
   std::vector<Side>().swap(sides);
 
-  Embedding<Vec3> position =
-      map.add_embedding<Vec3>("position", vertex_orbit(n), MergePolicy::kMean, Vec3::Zero());
-  Embedding<std::int64_t> point_index =
-      map.add_embedding<std::int64_t>("point_index", vertex_orbit(n), MergePolicy::kKeepFirst, -1);
-  Embedding<std::int64_t> element_index = map.add_embedding<std::int64_t>(
-      "element_index", Orbit::all(n - 1), MergePolicy::kKeepFirst, -1);
+  Embedding<Vec3> position = state_embedding<Vec3>(map, state::kPosition);
+  Embedding<std::int64_t> point_index = state_embedding<std::int64_t>(map, state::kPointIndex);
+  Embedding<std::int64_t> element_index = state_embedding<std::int64_t>(map, state::kElementIndex);
   // Physical groups, when the file gave one per element (scene selections).
   Embedding<std::int64_t> element_tag;
   if (!mesh.element_tags.empty() && mesh.element_tags.size() == mesh.elements.size()) {

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <set>
 
+#include "rift/core/state_embeddings.hpp"
+
 namespace rift {
 
 namespace {
 
-bool contains(const std::vector<std::string>& list, const std::string& name) {
+bool contains(const std::vector<std::string>& list, std::string_view name) {
   return std::find(list.begin(), list.end(), name) != list.end();
 }
 
@@ -53,10 +55,10 @@ std::vector<std::string> inert_component_warnings(const Scene& scene, const Pack
         if (contains(i.stores, read) && !contains(forces, read)) forces.push_back(read);
       }
     }
-    const bool reads_vertex_force = contains(spec->reads, embedding_names::kVertexForce);
+    const bool reads_vertex_force = contains(spec->reads, state::kVertexForce);
     if (reads_vertex_force && !any_force) {
       warnings.push_back("criterion '" + use.name + "' cannot fire on " + mesh + ": it reads " +
-                         embedding_names::kVertexForce +
+                         std::string(state::kVertexForce) +
                          ", the sum of the interactions' forces, and no interaction of the "
                          "scene acts on this mesh");
       continue;

@@ -4,6 +4,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "rift/core/state_embeddings.hpp"
+
 namespace rift {
 
 namespace {
@@ -93,7 +95,7 @@ std::vector<Dart> select_vertices(const GMap& map, const Selection& sel, const V
       take_where([&](Dart d) { return (position[d] - sel.centre).norm() <= sel.radius; });
       break;
     case Selection::Kind::kVertices: {
-      const Embedding<std::int64_t> point = map.embedding<std::int64_t>("point_index");
+      const Embedding<std::int64_t> point = map.embedding<std::int64_t>(state::kPointIndex);
       if (!point) throw std::invalid_argument("the mesh has no point numbers to select from");
       std::set<std::int64_t> wanted(sel.vertices.begin(), sel.vertices.end());
       std::set<std::int64_t> seen;

@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "rift/core/state_embeddings.hpp"
 #include "rift/sim/simulation.hpp"
 
 namespace rift {
@@ -17,8 +18,8 @@ namespace {
 /// it (point_index, element_index), else the slot and a dart.
 std::string describe_vertex(const Simulation& sim, Slot s) {
   const GMap& map = sim.map();
-  const Embedding<std::int64_t> element = map.embedding<std::int64_t>("element_index");
-  const Embedding<std::int64_t> point = map.embedding<std::int64_t>("point_index");
+  const Embedding<std::int64_t> element = map.embedding<std::int64_t>(state::kElementIndex);
+  const Embedding<std::int64_t> point = map.embedding<std::int64_t>(state::kPointIndex);
   const std::size_t n = map.capacity();
   for (std::size_t k = 0; k < n; ++k) {
     const Dart d = static_cast<Dart>(k);

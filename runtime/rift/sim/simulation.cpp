@@ -5,41 +5,24 @@
 
 #include "rift/core/interrupt.hpp"
 #include "rift/core/parallel.hpp"
+#include "rift/gmap/state_columns.hpp"
 #include "rift/sim/mass_model.hpp"
 
 namespace rift {
 
-namespace names = embedding_names;
-
-namespace {
-
-template <class T>
-Embedding<T> find_or_add(GMap& map, const char* name, Orbit orbit, MergePolicy policy,
-                         T default_value) {
-  if (Embedding<T> e = map.embedding<T>(name)) {
-    if (e.orbit() != orbit) {
-      throw std::invalid_argument(std::string("embedding '") + name + "' must live on " +
-                                  orbit.str() + ", not " + e.orbit().str());
-    }
-    return e;
-  }
-  return map.add_embedding<T>(name, orbit, policy, default_value);
-}
-
-}  // namespace
-
 Simulation::Simulation(GMap map, const SimulationSettings& settings)
     : map_(std::move(map)), settings_(settings), integrator_(settings.integrator) {
   if (!(settings_.dt > 0)) throw std::invalid_argument("the time step dt must be positive");
-  const int n = map_.dimension();
-  const Orbit vertex = Orbit::cell(0, n);
-  position_ = map_.embedding<Vec3>(names::kPosition);
-  if (!position_) throw std::invalid_argument("the map has no 'position' embedding");
-  velocity_ = find_or_add<Vec3>(map_, names::kVelocity, vertex, MergePolicy::kMean, Vec3::Zero());
-  vertex_mass_ = find_or_add<Real>(map_, names::kVertexMass, vertex, MergePolicy::kSum, 0.0);
-  corner_mass_ =
-      find_or_add<Real>(map_, names::kCornerMass, corner_orbit(n), MergePolicy::kKeepFirst, 0.0);
-  pinned_ = find_or_add<Bool>(map_, names::kPinned, vertex, MergePolicy::kSum, Bool(false));
+  if (!map_.has_embedding(state::kPosition)) {
+    throw std::invalid_argument("the map has no 'position' embedding");
+  }
+  // The state's columns, with the orbits and merge policies of the one table
+  // riftc declares them from (rift/core/state_embeddings.hpp).
+  position_ = state_embedding<Vec3>(map_, state::kPosition);
+  velocity_ = state_embedding<Vec3>(map_, state::kVelocity);
+  vertex_mass_ = state_embedding<Real>(map_, state::kVertexMass);
+  corner_mass_ = state_embedding<Real>(map_, state::kCornerMass);
+  pinned_ = state_embedding<Bool>(map_, state::kPinned);
 }
 
 void Simulation::add_force_model(std::unique_ptr<ForceModel> model) {
@@ -84,7 +67,7 @@ void Simulation::initialise() {
   }
   for (auto& criterion : criteria_)
     criterion->initialise(map_);
-  if (Embedding<Vec3> f = map_.embedding<Vec3>(names::kVertexForce)) {
+  if (Embedding<Vec3> f = map_.embedding<Vec3>(state::kVertexForce)) {
     if (f.orbit() == Orbit::cell(0, map_.dimension())) vertex_force_ = f;
   }
   refresh_inverse_masses();

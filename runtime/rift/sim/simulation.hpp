@@ -48,20 +48,6 @@ class SimulationError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Names of the embeddings the loop itself uses. `position` comes from the
-/// mesh; the others are declared by the simulation when the map lacks them.
-namespace embedding_names {
-inline constexpr const char* kPosition = "position";
-inline constexpr const char* kVelocity = "velocity";
-inline constexpr const char* kVertexMass = "vertex_mass";
-inline constexpr const char* kCornerMass = "corner_mass";
-inline constexpr const char* kPinned = "pinned";
-/// Optional: when a pack declares it (vec3 on the vertex orbit), the simulator
-/// stores there the total internal force on each vertex at the start of each
-/// step, so that criteria read it without gathering every force embedding.
-inline constexpr const char* kVertexForce = "vertex_force";
-}  // namespace embedding_names
-
 class Simulation {
  public:
   Simulation(GMap map, const SimulationSettings& settings);
@@ -174,7 +160,7 @@ class Simulation {
   Embedding<Vec3> position_, velocity_;
   Embedding<Real> vertex_mass_, corner_mass_;
   Embedding<Bool> pinned_;
-  Embedding<Vec3> vertex_force_;  // optional, see kVertexForce
+  Embedding<Vec3> vertex_force_;  // optional: only when a pack reads state::kVertexForce
   std::vector<Vec3> forces_, start_forces_, a0_;
   std::vector<Real> inverse_mass_;  // 0 for pinned and held vertices and free slots
   std::unique_ptr<Handles> handles_;

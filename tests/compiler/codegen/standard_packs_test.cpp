@@ -9,6 +9,7 @@
 
 #include "criteria2d.hpp"
 #include "mass_spring2d.hpp"
+#include "rift/gmap/state_columns.hpp"
 #include "rift/mesh/load_map.hpp"
 #include "rift/mesh/map_statistics.hpp"
 #include "rift/sim/mass_model.hpp"
@@ -25,9 +26,11 @@ void initialise(rift::GMap& g, std::vector<std::unique_ptr<rift::ForceModel>>& m
   pack.initialise(g);
   const rift::packs::mass_spring2d::Pack springs;
   springs.initialise(g);
-  auto corner = g.embedding<rift::Real>("corner_mass");
+  // The masses are the runtime's state: it creates their columns, whether a
+  // pack reads them or not.
+  auto corner = rift::state_embedding<rift::Real>(g, rift::state::kCornerMass);
   rift::assign_corner_masses_by_density(g, 1.0, corner, g.embedding<rift::Vec3>("position"));
-  auto vertex = g.embedding<rift::Real>("vertex_mass");
+  auto vertex = rift::state_embedding<rift::Real>(g, rift::state::kVertexMass);
   rift::update_all_vertex_masses(g, corner, vertex);
   for (const char* name : {"stretch", "shear"}) {
     rift::ComponentUse use;
@@ -89,9 +92,14 @@ TEST(StandardPacks, StretchedClothTearsAndStaysValid) {
   EXPECT_EQ(after.darts, before.darts);
   EXPECT_GT(after.boundary, before.boundary);
   EXPECT_GT(after.vertices, before.vertices);
-  // Split vertices recomputed their mass from the corners they kept (§4.1).
+  // The runtime recomputes the mass of every vertex a rewrite touched, as
+  // Simulation::on_topology_changed does: the darts the rules report must
+  // reach every split vertex, which then weighs the corners it kept (§4.1).
   auto vertex = g.embedding<rift::Real>("vertex_mass");
   auto corner = g.embedding<rift::Real>("corner_mass");
+  for (rift::Dart d : touched) {
+    if (g.is_alive(d)) rift::update_vertex_mass(g, d, corner, vertex);
+  }
   g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart v) {
     rift::Real sum = 0;
     std::vector<rift::Slot> seen;  // each corner once

@@ -21,7 +21,7 @@ const char* kPack = R"(pack sharing dimension 2;
 embedding position : vec3 on <1,2>;
 embedding velocity : vec3 on <1,2>;
 embedding vertex_force : vec3 on <1,2>;
-embedding corner_mass : real on <0,1> = 0.0;
+embedding face_weight : real on <0,1> = 0.0;
 embedding rest_length : real on <0> = 0.0;
 embedding f_spring : vec3 on <> = vec3(0, 0, 0);
 
@@ -43,9 +43,9 @@ rule mark {
 criterion heavy on <1,2>(v) (threshold : real > 0 = 1.0) {
   let area = sum of (if norm(cross(f@0.position - f.position, f@1@0.position - f.position)) > 0.0
                      then norm(cross(f@0.position - f.position, f@1@0.position - f.position))
-                          * (sum of c.corner_mass for each <1>(c) in <0,1>(f))
-                          * (sum of c.corner_mass for each <1>(c) in <0,1>(f))
-                          * (sum of c.corner_mass for each <1>(c) in <0,1>(f))
+                          * (sum of c.face_weight for each <1>(c) in <0,1>(f))
+                          * (sum of c.face_weight for each <1>(c) in <0,1>(f))
+                          * (sum of c.face_weight for each <1>(c) in <0,1>(f))
                           * (threshold * threshold)
                      else 0.0)
              for each <0,1>(f) in <1,2>(v);

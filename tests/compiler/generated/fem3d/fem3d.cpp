@@ -40,63 +40,53 @@ namespace {
 void declare_embeddings(rift::GMap& g) {
   if (!g.has_embedding("fem_b")) {
     g.declare_embedding<rift::Mat3>("fem_b", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Mat3(rift::Mat3(rift::Mat3::Identity())));
-  } else if (g.find_column("fem_b")->type() != rift::ValueType::kMat3 || !(g.attachment_of("fem_b")->orbit() == rift::Orbit{0, 1, 2})) {
-    throw std::invalid_argument("the map's embedding 'fem_b' is not the pack's mat3 on <0,1,2>");
+  } else if (g.find_column("fem_b")->type() != rift::ValueType::kMat3 || !(g.attachment_of("fem_b")->orbit() == rift::Orbit{0, 1, 2}) || g.find_column("fem_b")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'fem_b' is not the pack's mat3 on <0,1,2> merged by 'keep'");
   }
   if (!g.has_embedding("fem_volume")) {
     g.declare_embedding<rift::Real>("fem_volume", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("fem_volume")->type() != rift::ValueType::kReal || !(g.attachment_of("fem_volume")->orbit() == rift::Orbit{0, 1, 2})) {
-    throw std::invalid_argument("the map's embedding 'fem_volume' is not the pack's real on <0,1,2>");
+  } else if (g.find_column("fem_volume")->type() != rift::ValueType::kReal || !(g.attachment_of("fem_volume")->orbit() == rift::Orbit{0, 1, 2}) || g.find_column("fem_volume")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'fem_volume' is not the pack's real on <0,1,2> merged by 'keep'");
   }
   if (!g.has_embedding("fem_mu")) {
     g.declare_embedding<rift::Real>("fem_mu", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("fem_mu")->type() != rift::ValueType::kReal || !(g.attachment_of("fem_mu")->orbit() == rift::Orbit{0, 1, 2})) {
-    throw std::invalid_argument("the map's embedding 'fem_mu' is not the pack's real on <0,1,2>");
+  } else if (g.find_column("fem_mu")->type() != rift::ValueType::kReal || !(g.attachment_of("fem_mu")->orbit() == rift::Orbit{0, 1, 2}) || g.find_column("fem_mu")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'fem_mu' is not the pack's real on <0,1,2> merged by 'keep'");
   }
   if (!g.has_embedding("fem_lambda")) {
     g.declare_embedding<rift::Real>("fem_lambda", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("fem_lambda")->type() != rift::ValueType::kReal || !(g.attachment_of("fem_lambda")->orbit() == rift::Orbit{0, 1, 2})) {
-    throw std::invalid_argument("the map's embedding 'fem_lambda' is not the pack's real on <0,1,2>");
-  }
-  if (!g.has_embedding("position")) {
-    g.declare_embedding<rift::Vec3>("position", rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3::Zero()));
-  } else if (g.find_column("position")->type() != rift::ValueType::kVec3 || !(g.attachment_of("position")->orbit() == rift::Orbit{1, 2, 3})) {
-    throw std::invalid_argument("the map's embedding 'position' is not the pack's vec3 on <1,2,3>");
-  }
-  if (!g.has_embedding("velocity")) {
-    g.declare_embedding<rift::Vec3>("velocity", rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
-  } else if (g.find_column("velocity")->type() != rift::ValueType::kVec3 || !(g.attachment_of("velocity")->orbit() == rift::Orbit{1, 2, 3})) {
-    throw std::invalid_argument("the map's embedding 'velocity' is not the pack's vec3 on <1,2,3>");
-  }
-  if (!g.has_embedding("corner_mass")) {
-    g.declare_embedding<rift::Real>("corner_mass", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("corner_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("corner_mass")->orbit() == rift::Orbit{1, 2})) {
-    throw std::invalid_argument("the map's embedding 'corner_mass' is not the pack's real on <1,2>");
-  }
-  if (!g.has_embedding("vertex_mass")) {
-    g.declare_embedding<rift::Real>("vertex_mass", rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("vertex_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("vertex_mass")->orbit() == rift::Orbit{1, 2, 3})) {
-    throw std::invalid_argument("the map's embedding 'vertex_mass' is not the pack's real on <1,2,3>");
+  } else if (g.find_column("fem_lambda")->type() != rift::ValueType::kReal || !(g.attachment_of("fem_lambda")->orbit() == rift::Orbit{0, 1, 2}) || g.find_column("fem_lambda")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'fem_lambda' is not the pack's real on <0,1,2> merged by 'keep'");
   }
   if (!g.has_embedding("f_stretch")) {
     g.declare_embedding<rift::Vec3>("f_stretch", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
-  } else if (g.find_column("f_stretch")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_stretch")->orbit() == rift::Orbit{})) {
-    throw std::invalid_argument("the map's embedding 'f_stretch' is not the pack's vec3 on <>");
+  } else if (g.find_column("f_stretch")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_stretch")->orbit() == rift::Orbit{}) || g.find_column("f_stretch")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'f_stretch' is not the pack's vec3 on <> merged by 'keep'");
   }
   if (!g.has_embedding("f_shear")) {
     g.declare_embedding<rift::Vec3>("f_shear", rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
-  } else if (g.find_column("f_shear")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_shear")->orbit() == rift::Orbit{1})) {
-    throw std::invalid_argument("the map's embedding 'f_shear' is not the pack's vec3 on <1>");
+  } else if (g.find_column("f_shear")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_shear")->orbit() == rift::Orbit{1}) || g.find_column("f_shear")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'f_shear' is not the pack's vec3 on <1> merged by 'keep'");
   }
   if (!g.has_embedding("f_volume_shear")) {
     g.declare_embedding<rift::Vec3>("f_volume_shear", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
-  } else if (g.find_column("f_volume_shear")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_volume_shear")->orbit() == rift::Orbit{1, 2})) {
-    throw std::invalid_argument("the map's embedding 'f_volume_shear' is not the pack's vec3 on <1,2>");
+  } else if (g.find_column("f_volume_shear")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_volume_shear")->orbit() == rift::Orbit{1, 2}) || g.find_column("f_volume_shear")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'f_volume_shear' is not the pack's vec3 on <1,2> merged by 'keep'");
   }
   if (!g.has_embedding("f_fem")) {
     g.declare_embedding<rift::Vec3>("f_fem", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
-  } else if (g.find_column("f_fem")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_fem")->orbit() == rift::Orbit{1, 2})) {
-    throw std::invalid_argument("the map's embedding 'f_fem' is not the pack's vec3 on <1,2>");
+  } else if (g.find_column("f_fem")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_fem")->orbit() == rift::Orbit{1, 2}) || g.find_column("f_fem")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'f_fem' is not the pack's vec3 on <1,2> merged by 'keep'");
+  }
+  if (!g.has_embedding("position")) {
+    g.declare_embedding<rift::Vec3>("position", rift::Orbit{1, 2, 3}, rift::MergePolicy::kMean, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+  } else if (g.find_column("position")->type() != rift::ValueType::kVec3 || !(g.attachment_of("position")->orbit() == rift::Orbit{1, 2, 3}) || g.find_column("position")->policy() != rift::MergePolicy::kMean) {
+    throw std::invalid_argument("the map's embedding 'position' is not the pack's vec3 on <1,2,3> merged by 'mean'");
+  }
+  if (!g.has_embedding("velocity")) {
+    g.declare_embedding<rift::Vec3>("velocity", rift::Orbit{1, 2, 3}, rift::MergePolicy::kMean, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+  } else if (g.find_column("velocity")->type() != rift::ValueType::kVec3 || !(g.attachment_of("velocity")->orbit() == rift::Orbit{1, 2, 3}) || g.find_column("velocity")->policy() != rift::MergePolicy::kMean) {
+    throw std::invalid_argument("the map's embedding 'velocity' is not the pack's vec3 on <1,2,3> merged by 'mean'");
   }
   if (!g.has_embedding("corotational_first_dart")) {
     g.declare_embedding<rift::Bool>("corotational_first_dart", rift::Orbit(), rift::MergePolicy::kKeepFirst, rift::Bool(false));
@@ -608,14 +598,12 @@ Pack::Pack(const Params& params) : params_(params), description_("Co-rotational 
   embeddings_.push_back({"fem_volume", rift::ValueType::kReal, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"fem_mu", rift::ValueType::kReal, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"fem_lambda", rift::ValueType::kReal, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
-  embeddings_.push_back({"position", rift::ValueType::kVec3, rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3::Zero()))});
-  embeddings_.push_back({"velocity", rift::ValueType::kVec3, rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
-  embeddings_.push_back({"corner_mass", rift::ValueType::kReal, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
-  embeddings_.push_back({"vertex_mass", rift::ValueType::kReal, rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"f_stretch", rift::ValueType::kVec3, rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_shear", rift::ValueType::kVec3, rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_volume_shear", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_fem", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
+  embeddings_.push_back({"position", rift::ValueType::kVec3, rift::Orbit{1, 2, 3}, rift::MergePolicy::kMean, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
+  embeddings_.push_back({"velocity", rift::ValueType::kVec3, rift::Orbit{1, 2, 3}, rift::MergePolicy::kMean, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"corotational_first_dart", rift::ValueType::kBool, rift::Orbit(), rift::MergePolicy::kKeepFirst, rift::Value(rift::Bool(false))});
   catalog_.interactions.push_back({"corotational", "Co-rotational linear tetrahedron (Müller and Gross 2004): Young's modulus, Poisson ratio, damping. (support <0,1,2>; forces stored in f_fem)", {
     {"young", rift::ValueType::kReal, rift::Value(rift::Real(100000.0)), "Pa", true, false},

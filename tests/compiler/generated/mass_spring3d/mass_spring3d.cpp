@@ -62,93 +62,83 @@ namespace {
 void declare_embeddings(rift::GMap& g) {
   if (!g.has_embedding("stretch_k")) {
     g.declare_embedding<rift::Real>("stretch_k", rift::Orbit{0}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("stretch_k")->type() != rift::ValueType::kReal || !(g.attachment_of("stretch_k")->orbit() == rift::Orbit{0})) {
-    throw std::invalid_argument("the map's embedding 'stretch_k' is not the pack's real on <0>");
+  } else if (g.find_column("stretch_k")->type() != rift::ValueType::kReal || !(g.attachment_of("stretch_k")->orbit() == rift::Orbit{0}) || g.find_column("stretch_k")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'stretch_k' is not the pack's real on <0> merged by 'keep'");
   }
   if (!g.has_embedding("stretch_rest")) {
     g.declare_embedding<rift::Real>("stretch_rest", rift::Orbit{0}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("stretch_rest")->type() != rift::ValueType::kReal || !(g.attachment_of("stretch_rest")->orbit() == rift::Orbit{0})) {
-    throw std::invalid_argument("the map's embedding 'stretch_rest' is not the pack's real on <0>");
+  } else if (g.find_column("stretch_rest")->type() != rift::ValueType::kReal || !(g.attachment_of("stretch_rest")->orbit() == rift::Orbit{0}) || g.find_column("stretch_rest")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'stretch_rest' is not the pack's real on <0> merged by 'keep'");
   }
   if (!g.has_embedding("shear_k")) {
     g.declare_embedding<rift::Real>("shear_k", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("shear_k")->type() != rift::ValueType::kReal || !(g.attachment_of("shear_k")->orbit() == rift::Orbit{0, 1})) {
-    throw std::invalid_argument("the map's embedding 'shear_k' is not the pack's real on <0,1>");
+  } else if (g.find_column("shear_k")->type() != rift::ValueType::kReal || !(g.attachment_of("shear_k")->orbit() == rift::Orbit{0, 1}) || g.find_column("shear_k")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'shear_k' is not the pack's real on <0,1> merged by 'keep'");
   }
   if (!g.has_embedding("shear_rest02")) {
     g.declare_embedding<rift::Real>("shear_rest02", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("shear_rest02")->type() != rift::ValueType::kReal || !(g.attachment_of("shear_rest02")->orbit() == rift::Orbit{0, 1})) {
-    throw std::invalid_argument("the map's embedding 'shear_rest02' is not the pack's real on <0,1>");
+  } else if (g.find_column("shear_rest02")->type() != rift::ValueType::kReal || !(g.attachment_of("shear_rest02")->orbit() == rift::Orbit{0, 1}) || g.find_column("shear_rest02")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'shear_rest02' is not the pack's real on <0,1> merged by 'keep'");
   }
   if (!g.has_embedding("shear_rest13")) {
     g.declare_embedding<rift::Real>("shear_rest13", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("shear_rest13")->type() != rift::ValueType::kReal || !(g.attachment_of("shear_rest13")->orbit() == rift::Orbit{0, 1})) {
-    throw std::invalid_argument("the map's embedding 'shear_rest13' is not the pack's real on <0,1>");
+  } else if (g.find_column("shear_rest13")->type() != rift::ValueType::kReal || !(g.attachment_of("shear_rest13")->orbit() == rift::Orbit{0, 1}) || g.find_column("shear_rest13")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'shear_rest13' is not the pack's real on <0,1> merged by 'keep'");
   }
   if (!g.has_embedding("vshear_k")) {
     g.declare_embedding<rift::Real>("vshear_k", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("vshear_k")->type() != rift::ValueType::kReal || !(g.attachment_of("vshear_k")->orbit() == rift::Orbit{0, 1, 2})) {
-    throw std::invalid_argument("the map's embedding 'vshear_k' is not the pack's real on <0,1,2>");
+  } else if (g.find_column("vshear_k")->type() != rift::ValueType::kReal || !(g.attachment_of("vshear_k")->orbit() == rift::Orbit{0, 1, 2}) || g.find_column("vshear_k")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'vshear_k' is not the pack's real on <0,1,2> merged by 'keep'");
   }
   if (!g.has_embedding("vshear_rest0")) {
     g.declare_embedding<rift::Real>("vshear_rest0", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("vshear_rest0")->type() != rift::ValueType::kReal || !(g.attachment_of("vshear_rest0")->orbit() == rift::Orbit{0, 1, 2})) {
-    throw std::invalid_argument("the map's embedding 'vshear_rest0' is not the pack's real on <0,1,2>");
+  } else if (g.find_column("vshear_rest0")->type() != rift::ValueType::kReal || !(g.attachment_of("vshear_rest0")->orbit() == rift::Orbit{0, 1, 2}) || g.find_column("vshear_rest0")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'vshear_rest0' is not the pack's real on <0,1,2> merged by 'keep'");
   }
   if (!g.has_embedding("vshear_rest1")) {
     g.declare_embedding<rift::Real>("vshear_rest1", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("vshear_rest1")->type() != rift::ValueType::kReal || !(g.attachment_of("vshear_rest1")->orbit() == rift::Orbit{0, 1, 2})) {
-    throw std::invalid_argument("the map's embedding 'vshear_rest1' is not the pack's real on <0,1,2>");
+  } else if (g.find_column("vshear_rest1")->type() != rift::ValueType::kReal || !(g.attachment_of("vshear_rest1")->orbit() == rift::Orbit{0, 1, 2}) || g.find_column("vshear_rest1")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'vshear_rest1' is not the pack's real on <0,1,2> merged by 'keep'");
   }
   if (!g.has_embedding("vshear_rest2")) {
     g.declare_embedding<rift::Real>("vshear_rest2", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("vshear_rest2")->type() != rift::ValueType::kReal || !(g.attachment_of("vshear_rest2")->orbit() == rift::Orbit{0, 1, 2})) {
-    throw std::invalid_argument("the map's embedding 'vshear_rest2' is not the pack's real on <0,1,2>");
+  } else if (g.find_column("vshear_rest2")->type() != rift::ValueType::kReal || !(g.attachment_of("vshear_rest2")->orbit() == rift::Orbit{0, 1, 2}) || g.find_column("vshear_rest2")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'vshear_rest2' is not the pack's real on <0,1,2> merged by 'keep'");
   }
   if (!g.has_embedding("vshear_rest3")) {
     g.declare_embedding<rift::Real>("vshear_rest3", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("vshear_rest3")->type() != rift::ValueType::kReal || !(g.attachment_of("vshear_rest3")->orbit() == rift::Orbit{0, 1, 2})) {
-    throw std::invalid_argument("the map's embedding 'vshear_rest3' is not the pack's real on <0,1,2>");
-  }
-  if (!g.has_embedding("position")) {
-    g.declare_embedding<rift::Vec3>("position", rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3::Zero()));
-  } else if (g.find_column("position")->type() != rift::ValueType::kVec3 || !(g.attachment_of("position")->orbit() == rift::Orbit{1, 2, 3})) {
-    throw std::invalid_argument("the map's embedding 'position' is not the pack's vec3 on <1,2,3>");
-  }
-  if (!g.has_embedding("velocity")) {
-    g.declare_embedding<rift::Vec3>("velocity", rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
-  } else if (g.find_column("velocity")->type() != rift::ValueType::kVec3 || !(g.attachment_of("velocity")->orbit() == rift::Orbit{1, 2, 3})) {
-    throw std::invalid_argument("the map's embedding 'velocity' is not the pack's vec3 on <1,2,3>");
-  }
-  if (!g.has_embedding("corner_mass")) {
-    g.declare_embedding<rift::Real>("corner_mass", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("corner_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("corner_mass")->orbit() == rift::Orbit{1, 2})) {
-    throw std::invalid_argument("the map's embedding 'corner_mass' is not the pack's real on <1,2>");
-  }
-  if (!g.has_embedding("vertex_mass")) {
-    g.declare_embedding<rift::Real>("vertex_mass", rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("vertex_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("vertex_mass")->orbit() == rift::Orbit{1, 2, 3})) {
-    throw std::invalid_argument("the map's embedding 'vertex_mass' is not the pack's real on <1,2,3>");
+  } else if (g.find_column("vshear_rest3")->type() != rift::ValueType::kReal || !(g.attachment_of("vshear_rest3")->orbit() == rift::Orbit{0, 1, 2}) || g.find_column("vshear_rest3")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'vshear_rest3' is not the pack's real on <0,1,2> merged by 'keep'");
   }
   if (!g.has_embedding("f_stretch")) {
     g.declare_embedding<rift::Vec3>("f_stretch", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
-  } else if (g.find_column("f_stretch")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_stretch")->orbit() == rift::Orbit{})) {
-    throw std::invalid_argument("the map's embedding 'f_stretch' is not the pack's vec3 on <>");
+  } else if (g.find_column("f_stretch")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_stretch")->orbit() == rift::Orbit{}) || g.find_column("f_stretch")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'f_stretch' is not the pack's vec3 on <> merged by 'keep'");
   }
   if (!g.has_embedding("f_shear")) {
     g.declare_embedding<rift::Vec3>("f_shear", rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
-  } else if (g.find_column("f_shear")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_shear")->orbit() == rift::Orbit{1})) {
-    throw std::invalid_argument("the map's embedding 'f_shear' is not the pack's vec3 on <1>");
+  } else if (g.find_column("f_shear")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_shear")->orbit() == rift::Orbit{1}) || g.find_column("f_shear")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'f_shear' is not the pack's vec3 on <1> merged by 'keep'");
   }
   if (!g.has_embedding("f_volume_shear")) {
     g.declare_embedding<rift::Vec3>("f_volume_shear", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
-  } else if (g.find_column("f_volume_shear")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_volume_shear")->orbit() == rift::Orbit{1, 2})) {
-    throw std::invalid_argument("the map's embedding 'f_volume_shear' is not the pack's vec3 on <1,2>");
+  } else if (g.find_column("f_volume_shear")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_volume_shear")->orbit() == rift::Orbit{1, 2}) || g.find_column("f_volume_shear")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'f_volume_shear' is not the pack's vec3 on <1,2> merged by 'keep'");
   }
   if (!g.has_embedding("f_fem")) {
     g.declare_embedding<rift::Vec3>("f_fem", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
-  } else if (g.find_column("f_fem")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_fem")->orbit() == rift::Orbit{1, 2})) {
-    throw std::invalid_argument("the map's embedding 'f_fem' is not the pack's vec3 on <1,2>");
+  } else if (g.find_column("f_fem")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_fem")->orbit() == rift::Orbit{1, 2}) || g.find_column("f_fem")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'f_fem' is not the pack's vec3 on <1,2> merged by 'keep'");
+  }
+  if (!g.has_embedding("position")) {
+    g.declare_embedding<rift::Vec3>("position", rift::Orbit{1, 2, 3}, rift::MergePolicy::kMean, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+  } else if (g.find_column("position")->type() != rift::ValueType::kVec3 || !(g.attachment_of("position")->orbit() == rift::Orbit{1, 2, 3}) || g.find_column("position")->policy() != rift::MergePolicy::kMean) {
+    throw std::invalid_argument("the map's embedding 'position' is not the pack's vec3 on <1,2,3> merged by 'mean'");
+  }
+  if (!g.has_embedding("velocity")) {
+    g.declare_embedding<rift::Vec3>("velocity", rift::Orbit{1, 2, 3}, rift::MergePolicy::kMean, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+  } else if (g.find_column("velocity")->type() != rift::ValueType::kVec3 || !(g.attachment_of("velocity")->orbit() == rift::Orbit{1, 2, 3}) || g.find_column("velocity")->policy() != rift::MergePolicy::kMean) {
+    throw std::invalid_argument("the map's embedding 'velocity' is not the pack's vec3 on <1,2,3> merged by 'mean'");
   }
   if (!g.has_embedding("shear_first_dart")) {
     g.declare_embedding<rift::Bool>("shear_first_dart", rift::Orbit(), rift::MergePolicy::kKeepFirst, rift::Bool(false));
@@ -2413,14 +2403,12 @@ Pack::Pack(const Params& params) : params_(params), description_("Mass-spring in
   embeddings_.push_back({"vshear_rest1", rift::ValueType::kReal, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"vshear_rest2", rift::ValueType::kReal, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"vshear_rest3", rift::ValueType::kReal, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
-  embeddings_.push_back({"position", rift::ValueType::kVec3, rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3::Zero()))});
-  embeddings_.push_back({"velocity", rift::ValueType::kVec3, rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
-  embeddings_.push_back({"corner_mass", rift::ValueType::kReal, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
-  embeddings_.push_back({"vertex_mass", rift::ValueType::kReal, rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"f_stretch", rift::ValueType::kVec3, rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_shear", rift::ValueType::kVec3, rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_volume_shear", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_fem", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
+  embeddings_.push_back({"position", rift::ValueType::kVec3, rift::Orbit{1, 2, 3}, rift::MergePolicy::kMean, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
+  embeddings_.push_back({"velocity", rift::ValueType::kVec3, rift::Orbit{1, 2, 3}, rift::MergePolicy::kMean, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"shear_first_dart", rift::ValueType::kBool, rift::Orbit(), rift::MergePolicy::kKeepFirst, rift::Value(rift::Bool(false))});
   embeddings_.push_back({"volume_shear_first_dart", rift::ValueType::kBool, rift::Orbit(), rift::MergePolicy::kKeepFirst, rift::Value(rift::Bool(false))});
   catalog_.interactions.push_back({"stretch", "Damped stretching spring on every half-edge <0> (atomic: one per face of each volume); forces on darts. (support <0>; forces stored in f_stretch)", {

@@ -23,68 +23,53 @@ namespace {
 void declare_embeddings(rift::GMap& g) {
   if (!g.has_embedding("side")) {
     g.declare_embedding<rift::Bool>("side", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Bool(false));
-  } else if (g.find_column("side")->type() != rift::ValueType::kBool || !(g.attachment_of("side")->orbit() == rift::Orbit{0, 1})) {
-    throw std::invalid_argument("the map's embedding 'side' is not the pack's bool on <0,1>");
-  }
-  if (!g.has_embedding("position")) {
-    g.declare_embedding<rift::Vec3>("position", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3::Zero()));
-  } else if (g.find_column("position")->type() != rift::ValueType::kVec3 || !(g.attachment_of("position")->orbit() == rift::Orbit{1, 2})) {
-    throw std::invalid_argument("the map's embedding 'position' is not the pack's vec3 on <1,2>");
-  }
-  if (!g.has_embedding("velocity")) {
-    g.declare_embedding<rift::Vec3>("velocity", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
-  } else if (g.find_column("velocity")->type() != rift::ValueType::kVec3 || !(g.attachment_of("velocity")->orbit() == rift::Orbit{1, 2})) {
-    throw std::invalid_argument("the map's embedding 'velocity' is not the pack's vec3 on <1,2>");
-  }
-  if (!g.has_embedding("corner_mass")) {
-    g.declare_embedding<rift::Real>("corner_mass", rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("corner_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("corner_mass")->orbit() == rift::Orbit{1})) {
-    throw std::invalid_argument("the map's embedding 'corner_mass' is not the pack's real on <1>");
-  }
-  if (!g.has_embedding("vertex_mass")) {
-    g.declare_embedding<rift::Real>("vertex_mass", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("vertex_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("vertex_mass")->orbit() == rift::Orbit{1, 2})) {
-    throw std::invalid_argument("the map's embedding 'vertex_mass' is not the pack's real on <1,2>");
+  } else if (g.find_column("side")->type() != rift::ValueType::kBool || !(g.attachment_of("side")->orbit() == rift::Orbit{0, 1}) || g.find_column("side")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'side' is not the pack's bool on <0,1> merged by 'keep'");
   }
   if (!g.has_embedding("f_stretch")) {
     g.declare_embedding<rift::Vec3>("f_stretch", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
-  } else if (g.find_column("f_stretch")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_stretch")->orbit() == rift::Orbit{})) {
-    throw std::invalid_argument("the map's embedding 'f_stretch' is not the pack's vec3 on <>");
+  } else if (g.find_column("f_stretch")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_stretch")->orbit() == rift::Orbit{}) || g.find_column("f_stretch")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'f_stretch' is not the pack's vec3 on <> merged by 'keep'");
   }
   if (!g.has_embedding("f_shear")) {
     g.declare_embedding<rift::Vec3>("f_shear", rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
-  } else if (g.find_column("f_shear")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_shear")->orbit() == rift::Orbit{1})) {
-    throw std::invalid_argument("the map's embedding 'f_shear' is not the pack's vec3 on <1>");
+  } else if (g.find_column("f_shear")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_shear")->orbit() == rift::Orbit{1}) || g.find_column("f_shear")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'f_shear' is not the pack's vec3 on <1> merged by 'keep'");
   }
   if (!g.has_embedding("f_bend")) {
     g.declare_embedding<rift::Vec3>("f_bend", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
-  } else if (g.find_column("f_bend")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_bend")->orbit() == rift::Orbit{})) {
-    throw std::invalid_argument("the map's embedding 'f_bend' is not the pack's vec3 on <>");
+  } else if (g.find_column("f_bend")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_bend")->orbit() == rift::Orbit{}) || g.find_column("f_bend")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'f_bend' is not the pack's vec3 on <> merged by 'keep'");
   }
   if (!g.has_embedding("f_ashear")) {
     g.declare_embedding<rift::Vec3>("f_ashear", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
-  } else if (g.find_column("f_ashear")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_ashear")->orbit() == rift::Orbit{})) {
-    throw std::invalid_argument("the map's embedding 'f_ashear' is not the pack's vec3 on <>");
+  } else if (g.find_column("f_ashear")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_ashear")->orbit() == rift::Orbit{}) || g.find_column("f_ashear")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'f_ashear' is not the pack's vec3 on <> merged by 'keep'");
   }
   if (!g.has_embedding("f_ashear_end")) {
     g.declare_embedding<rift::Vec3>("f_ashear_end", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
-  } else if (g.find_column("f_ashear_end")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_ashear_end")->orbit() == rift::Orbit{})) {
-    throw std::invalid_argument("the map's embedding 'f_ashear_end' is not the pack's vec3 on <>");
+  } else if (g.find_column("f_ashear_end")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_ashear_end")->orbit() == rift::Orbit{}) || g.find_column("f_ashear_end")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'f_ashear_end' is not the pack's vec3 on <> merged by 'keep'");
   }
   if (!g.has_embedding("f_abend")) {
     g.declare_embedding<rift::Vec3>("f_abend", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
-  } else if (g.find_column("f_abend")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_abend")->orbit() == rift::Orbit{})) {
-    throw std::invalid_argument("the map's embedding 'f_abend' is not the pack's vec3 on <>");
+  } else if (g.find_column("f_abend")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_abend")->orbit() == rift::Orbit{}) || g.find_column("f_abend")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'f_abend' is not the pack's vec3 on <> merged by 'keep'");
   }
   if (!g.has_embedding("f_abend_wing")) {
     g.declare_embedding<rift::Vec3>("f_abend_wing", rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
-  } else if (g.find_column("f_abend_wing")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_abend_wing")->orbit() == rift::Orbit{})) {
-    throw std::invalid_argument("the map's embedding 'f_abend_wing' is not the pack's vec3 on <>");
+  } else if (g.find_column("f_abend_wing")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_abend_wing")->orbit() == rift::Orbit{}) || g.find_column("f_abend_wing")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'f_abend_wing' is not the pack's vec3 on <> merged by 'keep'");
   }
   if (!g.has_embedding("f_membrane")) {
     g.declare_embedding<rift::Vec3>("f_membrane", rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
-  } else if (g.find_column("f_membrane")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_membrane")->orbit() == rift::Orbit{1})) {
-    throw std::invalid_argument("the map's embedding 'f_membrane' is not the pack's vec3 on <1>");
+  } else if (g.find_column("f_membrane")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_membrane")->orbit() == rift::Orbit{1}) || g.find_column("f_membrane")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'f_membrane' is not the pack's vec3 on <1> merged by 'keep'");
+  }
+  if (!g.has_embedding("position")) {
+    g.declare_embedding<rift::Vec3>("position", rift::Orbit{1, 2}, rift::MergePolicy::kMean, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
+  } else if (g.find_column("position")->type() != rift::ValueType::kVec3 || !(g.attachment_of("position")->orbit() == rift::Orbit{1, 2}) || g.find_column("position")->policy() != rift::MergePolicy::kMean) {
+    throw std::invalid_argument("the map's embedding 'position' is not the pack's vec3 on <1,2> merged by 'mean'");
   }
 }
 
@@ -107,8 +92,6 @@ bool apply_separate_faces(rift::GMap& g, std::span<const rift::Dart> hooks, cons
   std::size_t rows = 1;
   if (!build_rows(g, hooks.data(), hooks.size(), hook_dims, 1, s, rows)) return false;
   [[maybe_unused]] const std::size_t label = 1;
-  auto e_corner_mass = require_embedding<rift::Real>(g, "corner_mass", "rule 'separate_faces'");
-  auto e_vertex_mass = require_embedding<rift::Real>(g, "vertex_mass", "rule 'separate_faces'");
   s.left.resize(2 * rows);
   [[maybe_unused]] rift::Dart* const left_0 = s.left.data() + 0 * rows;  // a
   [[maybe_unused]] rift::Dart* const left_1 = s.left.data() + 1 * rows;  // b
@@ -151,12 +134,6 @@ bool apply_separate_faces(rift::GMap& g, std::span<const rift::Dart> hooks, cons
     if (x != y && g.is_free(x, 0) && g.is_free(y, 0)) g.link(x, y, 0);
   }
   update_embedding_slots(g, s.right.data(), s.right.size(), s, touched);
-  for (std::size_t r = 0; r < rows; ++r) {
-    [[maybe_unused]] const rift::Dart d_a = right_0[r];
-    [[maybe_unused]] const rift::Dart d_b = right_1[r];
-    e_vertex_mass[d_a] = collect_sum(g, e_corner_mass, d_a, rift::Orbit{1, 2});
-    e_vertex_mass[d_b] = collect_sum(g, e_corner_mass, d_b, rift::Orbit{1, 2});
-  }
   g.check_after_rewrite("rule 'separate_faces'");
   return true;
 }
@@ -421,10 +398,6 @@ bool SplitEndsRule::apply(rift::GMap& g, std::span<const rift::Dart> hooks, std:
 
 Pack::Pack(const Params& params) : params_(params), description_("Tearing rewrites of 2D meshes: face separation, element removal, vertex split, edge removal (§4).") {
   embeddings_.push_back({"side", rift::ValueType::kBool, rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Bool(false))});
-  embeddings_.push_back({"position", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3::Zero()))});
-  embeddings_.push_back({"velocity", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
-  embeddings_.push_back({"corner_mass", rift::ValueType::kReal, rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
-  embeddings_.push_back({"vertex_mass", rift::ValueType::kReal, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"f_stretch", rift::ValueType::kVec3, rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_shear", rift::ValueType::kVec3, rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_bend", rift::ValueType::kVec3, rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
@@ -433,6 +406,7 @@ Pack::Pack(const Params& params) : params_(params), description_("Tearing rewrit
   embeddings_.push_back({"f_abend", rift::ValueType::kVec3, rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_abend_wing", rift::ValueType::kVec3, rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_membrane", rift::ValueType::kVec3, rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
+  embeddings_.push_back({"position", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kMean, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
 }
 
 std::vector<std::string> Pack::rule_names() const {
