@@ -124,6 +124,21 @@ int group_key_words(const Kernel& k, const PackModel& model) {
   return words;
 }
 
+/// The match's vertex slots (Match fields), in the Match's order.
+std::vector<std::string> vertex_fields(const Kernel& k) {
+  std::vector<std::string> out;
+  const lower::KernelPlan& plan = k.plan->kernel;
+  for (std::size_t s = 0; s < plan.slots.size(); ++s)
+    if (plan.slots[s].vertex) out.push_back(k.slots[s]);
+  return out;
+}
+
+/// An untagged kernel with forces chooses the dart its support orbit is
+/// matched from by its vertices (rift::generated::smallest_support_dart).
+bool chooses_support_dart(const Kernel& k) {
+  return !k.inter->tagged && !k.plan->body.forces.empty() && !vertex_fields(k).empty();
+}
+
 /// Render context of the force loop: stage arrays and column pointers, by slot.
 RenderContext loop_context(const Kernel& k) {
   RenderContext ctx;
@@ -231,7 +246,12 @@ void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
     });
     w.line("// init " + init.embedding + "(" + b.nodes[static_cast<std::size_t>(init.node)] +
            "), once per match");
-    w.open("g.for_each_cell(kSupport, [&](rift::Dart support) {");
+    if (chooses_support_dart(k)) {
+      w.open("g.for_each_cell(kSupport, [&](rift::Dart cell) {");
+      w.line("const rift::Dart support = support_dart(g, cell);");
+    } else {
+      w.open("g.for_each_cell(kSupport, [&](rift::Dart support) {");
+    }
     w.line("rift::Dart darts[" + n + "];");
     w.line("if (!find(g, support, darts)) return;");
     for (std::size_t v = 0; v < used.size(); ++v) {
@@ -263,6 +283,23 @@ void write_match(Writer& w, const Kernel& k) {
     w.line("m." + k.slots[s] + " = " + embedding_var(u.via) + ".slot(" + d + ");");
   }
   w.line("return true;");
+  w.close();
+  w.line();
+}
+
+// The dart a support orbit is matched from, the same for the inits and the
+// simulator's match cache: the one binding the smallest vertex slots first.
+void write_support_dart(Writer& w, const Kernel& k) {
+  const std::vector<std::string> fields = vertex_fields(k);
+  w.open("rift::Dart " + k.cls + "::support_dart(const rift::GMap& g, rift::Dart d) const {");
+  w.open("return smallest_support_dart<" + std::to_string(fields.size()) +
+         ">(g, d, kSupport, [&](rift::Dart x, rift::Slot* key) {");
+  w.line("Match m{};");
+  w.line("if (!match(g, x, m)) return false;");
+  for (std::size_t i = 0; i < fields.size(); ++i)
+    w.line("key[" + std::to_string(i) + "] = m." + fields[i] + ";");
+  w.line("return true;");
+  w.close("});");
   w.close();
   w.line();
 }
@@ -746,6 +783,11 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
          " and runs the interaction's inits.");
   w.line("void initialise(rift::GMap& g);");
   w.line("bool match(const rift::GMap& g, rift::Dart support, Match& m) const;");
+  if (chooses_support_dart(k)) {
+    w.line("/// The dart of d's support orbit to match from: the one binding the smallest vertex");
+    w.line("/// slots first (the inits use it, and so does the simulator for a new orbit).");
+    w.line("rift::Dart support_dart(const rift::GMap& g, rift::Dart d) const;");
+  }
   w.line("/// The force pass over every match: adds each force to f (and stores it when `store`).");
   w.line(
       "void add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, "
@@ -848,6 +890,7 @@ void emit_kernel(Writer& w, const InteractionPlan& plan, const PackModel& model)
   write_find(w, k);
   write_initialise(w, k, model);
   write_match(w, k);
+  if (chooses_support_dart(k)) write_support_dart(w, k);
   write_columns(w, k);
   write_evaluate(w, k);
   write_add_forces_all(w, k);

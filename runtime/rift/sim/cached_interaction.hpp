@@ -49,12 +49,13 @@
 // coloured scatter then runs over groups instead of matches, and a pass that
 // stores writes each member's stored forces with the values it would have
 // computed itself. Keys compare vertices in order; for two half-edges of one
-// edge to give the same order, an untagged interaction is matched from the
-// dart of its support orbit whose key is smallest. That choice is the
-// language's own freedom, not an assumption added here: an untagged
-// interaction is matched "from one of the darts" of its support orbit, any
-// of them (docs/language.md; `tagged` exists for rules where the dart
-// matters), and the simulator already passes an arbitrary one.
+// edge to give the same order, an untagged kernel's support orbit is matched
+// from the dart that binds the smallest vertex slots first (the kernel's
+// support_dart), grouped or not. The language lets an untagged interaction
+// be matched "from one of the darts" of its support orbit, any of them
+// (docs/language.md); the kernel's inits use that same dart, and the orbit
+// keeps it for good (MatchCache keeps owners), so a match and its stored
+// forces never move to another dart because slots were renumbered.
 // (`SimulationSettings::group_interactions` turns grouping off, to compare.)
 #pragma once
 
@@ -86,9 +87,12 @@ class CachedInteraction final : public ForceModel {
     if constexpr (kGroupable) {
       grouped_ = group_requested_ && Kernel::kGroupKey <= MatchGroups<Match>::kMaxKey;
     }
-    cache_.build(map, Kernel::kSupport, [&](const GMap& m, Dart d, typename Kernel::Match& out) {
-      return match_one(m, d, out);
-    });
+    cache_.build(
+        map, Kernel::kSupport,
+        [&](const GMap& m, Dart d, typename Kernel::Match& out) {
+          return kernel_.match(m, d, out);
+        },
+        support_chooser());
     if constexpr (kGroupable) {
       if (grouped_) {
         typename MatchGroups<Match>::NoObserver none;
@@ -114,7 +118,7 @@ class CachedInteraction final : public ForceModel {
 
   void rematch(const GMap& map, std::span<const Dart> region) override {
     auto match = [&](const GMap& m, Dart d, typename Kernel::Match& out) {
-      return match_one(m, d, out);
+      return kernel_.match(m, d, out);
     };
     auto lost = [&](const typename Kernel::Match& m, bool alive) {
       if (alive) kernel_.reset_stored(m);
@@ -122,15 +126,19 @@ class CachedInteraction final : public ForceModel {
     if constexpr (kGroupable) {
       if (grouped_) {
         GroupsObserver observer{*this};
-        cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost, observer);
+        cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost, observer,
+                       support_chooser());
         return;
       }
     }
     if constexpr (kColoured) {
       ColouringObserver observer{kernel_, colouring_};
-      cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost, observer);
+      cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost, observer,
+                     support_chooser());
     } else {
-      cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost);
+      typename MatchCache<Match>::NoObserver none;
+      cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost, none,
+                     support_chooser());
     }
   }
 
@@ -270,26 +278,19 @@ class CachedInteraction final : public ForceModel {
     };
   }
 
-  // The kernel's match from dart d; grouped and untagged, the match from the
-  // dart of d's support orbit whose key is smallest (see the header).
-  bool match_one(const GMap& map, Dart d, Match& out) const {
-    if (!kernel_.match(map, d, out)) return false;
-    if constexpr (kGroupable) {
-      if (!grouped_ || Kernel::kTagged) return true;
-      constexpr int n = Kernel::kGroupKey;
-      std::uint64_t best[n], key[n];
-      kernel_.group_key(out, best);
-      map.for_each_in_orbit(d, Kernel::kSupport, [&](Dart x) {
-        Match other{};
-        if (x == d || !kernel_.match(map, x, other)) return;
-        kernel_.group_key(other, key);
-        if (std::lexicographical_compare(key, key + n, best, best + n)) {
-          out = other;
-          std::copy(key, key + n, best);
-        }
-      });
-    }
-    return true;
+  // The dart a support orbit is matched from when it gets its match: the
+  // kernel's choice (riftc's support_dart for an untagged kernel: the dart
+  // binding the smallest vertex slots first, which its inits used too), else
+  // the dart at hand. Grouped or not, the same dart: grouping changes how
+  // matches are evaluated, never which.
+  auto support_chooser() const {
+    return [this](const GMap& map, Dart d) {
+      if constexpr (requires { kernel_.support_dart(map, d); }) {
+        return kernel_.support_dart(map, d);
+      } else {
+        return d;
+      }
+    };
   }
 
   // Follows the match cache's changes in the groups, and the groups' in the colouring.

@@ -171,14 +171,16 @@ void StretchKernel::initialise(rift::GMap& g) {
   e_stretch_k = require_embedding<rift::Real>(g, "stretch_k", "interaction 'stretch'");
   e_stretch_rest = require_embedding<rift::Real>(g, "stretch_rest", "interaction 'stretch'");
   // init stretch_k(a), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
+  g.for_each_cell(kSupport, [&](rift::Dart cell) {
+    const rift::Dart support = support_dart(g, cell);
     rift::Dart darts[2];
     if (!find(g, support, darts)) return;
     const rift::Dart d_a = darts[0];
     e_stretch_k[d_a] = p_.stiffness;
   });
   // init stretch_rest(a), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
+  g.for_each_cell(kSupport, [&](rift::Dart cell) {
+    const rift::Dart support = support_dart(g, cell);
     rift::Dart darts[2];
     if (!find(g, support, darts)) return;
     const rift::Dart d_a = darts[0];
@@ -196,6 +198,16 @@ bool StretchKernel::match(const rift::GMap& g, rift::Dart support, Match& m) con
   m.dart_a = e_f_stretch.slot(darts[0]);
   m.dart_b = e_f_stretch.slot(darts[1]);
   return true;
+}
+
+rift::Dart StretchKernel::support_dart(const rift::GMap& g, rift::Dart d) const {
+  return smallest_support_dart<2>(g, d, kSupport, [&](rift::Dart x, rift::Slot* key) {
+    Match m{};
+    if (!match(g, x, m)) return false;
+    key[0] = m.vertex_b;
+    key[1] = m.vertex_a;
+    return true;
+  });
 }
 
 StretchKernel::Columns StretchKernel::columns() const {

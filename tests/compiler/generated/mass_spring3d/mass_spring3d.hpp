@@ -57,6 +57,9 @@ class StretchKernel {
   /// Declares the pack's embeddings the map lacks, binds them and runs the interaction's inits.
   void initialise(rift::GMap& g);
   bool match(const rift::GMap& g, rift::Dart support, Match& m) const;
+  /// The dart of d's support orbit to match from: the one binding the smallest vertex
+  /// slots first (the inits use it, and so does the simulator for a new orbit).
+  rift::Dart support_dart(const rift::GMap& g, rift::Dart d) const;
   /// The force pass over every match: adds each force to f (and stores it when `store`).
   void add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store);
   /// The vertex slots of a match's kForceTerms forces, in the order add_forces_all adds
