@@ -403,6 +403,7 @@ void BodyRenderer::fused(const std::vector<ExprId>& group) {
   const Node& first = g_[group[0]];
   const std::string start = place(first.place);
   std::vector<std::string> names;
+  names.reserve(group.size());
   for (std::size_t k = 0; k < group.size(); ++k)
     names.push_back(std::string("s") + std::to_string(next_local_++));
   ++fold_depth_;
@@ -456,6 +457,7 @@ void BodyRenderer::fused(const std::vector<ExprId>& group) {
 
 std::string BodyRenderer::call(const Node& n) {
   std::vector<std::string> x;
+  x.reserve(n.arity());
   for (std::size_t k = 0; k < n.arity(); ++k)
     x.push_back(value(n.operand(k)));
   auto join = [&] {
