@@ -37,6 +37,7 @@ CriterionPlan plan_criterion(const ast::Criterion& crit, const std::vector<ast::
     roots.push_back(&a);
   share_common_subexpressions(body, roots);
   std::vector<ir::ExprId> values;
+  values.reserve(roots.size() + body.lets.size());
   for (const ir::ExprId* r : roots)
     values.push_back(*r);
   for (const ir::Let& l : body.lets)
