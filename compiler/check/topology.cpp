@@ -361,17 +361,20 @@ void check_force_ownership(const ast::Interaction& inter, const RuleGraph& g,
   const PatternSide& side = g.left;
   if (g.hooks.empty()) return;
   // The word of each node from the hook, breadth-first along explicit arcs.
-  std::vector<std::optional<std::vector<int>>> path(side.nodes.size());
+  // path[n]: the alpha word from the hook to node n, where reached[n].
+  std::vector<std::vector<int>> path(side.nodes.size());
+  std::vector<bool> reached(side.nodes.size(), false);
   std::vector<int> queue = {g.hooks[0]};
-  path[static_cast<std::size_t>(g.hooks[0])] = std::vector<int>{};
+  reached[static_cast<std::size_t>(g.hooks[0])] = true;
   for (std::size_t q = 0; q < queue.size(); ++q) {
     const int v = queue[q];
     for (const GraphArc& arc : side.arcs) {
       const int other = arc.a == v ? arc.b : arc.b == v ? arc.a : -1;
-      if (other < 0 || path[static_cast<std::size_t>(other)]) continue;
-      std::vector<int> w = *path[static_cast<std::size_t>(v)];
+      if (other < 0 || reached[static_cast<std::size_t>(other)]) continue;
+      std::vector<int> w = path[static_cast<std::size_t>(v)];
       w.push_back(arc.dim);
       path[static_cast<std::size_t>(other)] = w;
+      reached[static_cast<std::size_t>(other)] = true;
       queue.push_back(other);
     }
   }
@@ -381,8 +384,8 @@ void check_force_ownership(const ast::Interaction& inter, const RuleGraph& g,
     const ast::Embedding* target = symbols.target(f);
     if (!target) continue;
     const int node = side.find(f.node.text);
-    if (node < 0 || !path[static_cast<std::size_t>(node)]) continue;
-    const std::vector<int> word = reduced(*path[static_cast<std::size_t>(node)]);
+    if (node < 0 || !reached[static_cast<std::size_t>(node)]) continue;
+    const std::vector<int> word = reduced(path[static_cast<std::size_t>(node)]);
     if (target->orbit.dims.empty()) {
       darts.push_back(&f);
       continue;
@@ -403,8 +406,8 @@ void check_force_ownership(const ast::Interaction& inter, const RuleGraph& g,
       const ast::Assign& b = *darts[i];
       if (a.embedding.text != b.embedding.text || a.node.text == b.node.text) continue;
       // c' with c'.w_b == c.w_a: c' = c.w_a.reverse(w_b).
-      std::vector<int> w = *path[static_cast<std::size_t>(side.find(a.node.text))];
-      const std::vector<int>& pb = *path[static_cast<std::size_t>(side.find(b.node.text))];
+      std::vector<int> w = path[static_cast<std::size_t>(side.find(a.node.text))];
+      const std::vector<int>& pb = path[static_cast<std::size_t>(side.find(b.node.text))];
       w.insert(w.end(), pb.rbegin(), pb.rend());
       const std::vector<int> between = reduced(w);
       if (within(between, support)) continue;

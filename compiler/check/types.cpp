@@ -257,6 +257,7 @@ class TypeChecker {
   /// type (an int is promoted to real); the call has the declared result type.
   Type function_call(const Expr& e, const ast::Function& f, const std::vector<Type>& args) {
     std::vector<Type> params;
+    params.reserve(f.params.size());
     for (const ast::Param& p : f.params)
       params.push_back(p.type);
     if (args.size() != params.size()) {

@@ -1,6 +1,7 @@
 #include "diag/diagnostics.hpp"
 
 #include <algorithm>
+#include <functional>
 
 namespace rift::diag {
 
@@ -84,11 +85,15 @@ void Diagnostics::render_one(std::string& out, Severity sev, const Location& loc
 
 std::string Diagnostics::render() const {
   std::vector<const Diagnostic*> sorted;
+  sorted.reserve(list_.size());
   for (const Diagnostic& d : list_)
     sorted.push_back(&d);
-  std::stable_sort(sorted.begin(), sorted.end(), [](const Diagnostic* a, const Diagnostic* b) {
+  // Stable by construction: diagnostics at the same place keep the order they
+  // were reported in, which is their order in list_ (the pointers ascend).
+  std::sort(sorted.begin(), sorted.end(), [](const Diagnostic* a, const Diagnostic* b) {
     if (a->loc.file != b->loc.file) return a->loc.file < b->loc.file;
-    return a->loc.begin < b->loc.begin;
+    if (!(a->loc.begin == b->loc.begin)) return a->loc.begin < b->loc.begin;
+    return std::less<const Diagnostic*>()(a, b);
   });
   std::string out;
   for (const Diagnostic* d : sorted) {

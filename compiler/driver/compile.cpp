@@ -121,6 +121,7 @@ void generate(const ast::Program& program, const Checked& checked,
   model.interactions = &checked.interactions;
   // lower: every interaction to its kernel and its body in the IR.
   std::vector<lower::InteractionPlan> interaction_plans;
+  interaction_plans.reserve(checked.interactions.size());
   for (const check::CheckedInteraction& ci : checked.interactions)
     interaction_plans.push_back(lower::plan_interaction(ci, checked.symbols, checked.types));
   model.interaction_plans = &interaction_plans;

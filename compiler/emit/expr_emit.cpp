@@ -207,10 +207,12 @@ class Emitter {
       if (const ast::Function* f = ctx_.symbols->binding(e).function) return function_call(e, *f);
     }
     std::vector<Type> types;
+    types.reserve(e.args.size());
     for (const auto& a : e.args)
       types.push_back(type_of(*a));
     const check::Signature* sig = check::select_overload(*check::builtin(e.name), types);
     std::vector<std::string> x;
+    x.reserve(e.args.size());
     for (std::size_t k = 0; k < e.args.size(); ++k)
       x.push_back(as(*e.args[k], sig->params[k]));
     const std::string& f = e.name;

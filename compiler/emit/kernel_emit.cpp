@@ -171,6 +171,7 @@ void lets_used(const ir::Body& b, ir::ExprId root, std::vector<bool>& used) {
 /// The values of the lets and the conditions of the whens, in source order.
 std::vector<ir::ExprId> statement_roots(const ir::Body& b) {
   std::vector<ir::ExprId> roots;
+  roots.reserve(b.stmts.size());
   for (const ir::Stmt& s : b.stmts)
     roots.push_back(s.kind == ir::Stmt::Kind::When ? s.cond
                                                    : b.lets[static_cast<std::size_t>(s.let)].value);

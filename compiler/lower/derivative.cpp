@@ -296,6 +296,7 @@ class Tangents {
       case Builtin::Vec3:
       case Builtin::Mat3: {
         std::vector<ExprId> args;
+        args.reserve(t.size());
         for (std::size_t k = 0; k < t.size(); ++k)
           args.push_back(tz(k));
         return g_.call(n.fn, r, std::move(args));

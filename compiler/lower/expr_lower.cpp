@@ -140,10 +140,12 @@ ExprId ExprLowering::inline_call(const Expr& e, const ast::Function& f) {
 ExprId ExprLowering::call(const Expr& e) {
   if (const ast::Function* f = symbols_.binding(e).function) return inline_call(e, *f);
   std::vector<Type> types;
+  types.reserve(e.args.size());
   for (const auto& a : e.args)
     types.push_back(types_.of(*a));
   const check::Signature* sig = check::select_overload(*check::builtin(e.name), types);
   std::vector<ExprId> args;
+  args.reserve(e.args.size());
   for (std::size_t k = 0; k < e.args.size(); ++k)
     args.push_back(lower_as(*e.args[k], sig->params[k]));
   ir::Builtin fn{};

@@ -92,6 +92,7 @@ InteractionPlan plan_interaction(const check::CheckedInteraction& ci,
   }
 
   std::vector<ir::ExprId*> init_roots;
+  init_roots.reserve(plan.inits.size());
   for (InitPlan& p : plan.inits)
     init_roots.push_back(&p.value);
   share_common_subexpressions(body, init_roots);

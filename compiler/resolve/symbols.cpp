@@ -96,6 +96,7 @@ std::optional<std::vector<double>> literal_components(const ast::Expr& e) {
 /// the simulator does with the column.
 void check_restated(const ast::Embedding& restated, const ast::Embedding& state,
                     diag::Diagnostics& diags) {
+  if (!state.merge) return;  // never: the state table gives each embedding its policy
   const std::string what = "'" + state.name.text + "' is a state embedding of the simulator (" +
                            std::string(ast::to_string(state.type)) + " on " +
                            ast::orbit_text(state.orbit.dims) + ", merge " + state.merge->text +

@@ -30,7 +30,7 @@ const FrameMesh& FrameOutputs::write_frame(const GMap& map, double time, const F
   }
   const FrameMesh& frame = extractor_.extract(map);
   const std::size_t index = frames_;
-  if (config_.vtu) {
+  if (pvd_) {  // exists exactly when config_.vtu
     const std::string file = frame_file_name("frame_", index, "vtu");
     vtu_.write(frame, config_.directory / file, time);
     pvd_->add(time, file);

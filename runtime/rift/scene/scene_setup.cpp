@@ -168,6 +168,7 @@ void add_loads(const Scene& scene, Simulation& sim) {
   }
   if (!scene.obstacles.empty()) {
     std::vector<Obstacle> obstacles;
+    obstacles.reserve(scene.obstacles.size());
     for (const SceneObstacle& o : scene.obstacles)
       obstacles.push_back(o.obstacle);
     sim.set_contact(std::make_unique<Contact>(std::move(obstacles)));

@@ -25,7 +25,7 @@ Real polygon_area(const GMap& map, Dart face, const Embedding<Vec3>& position) {
   // Vector area: half the norm of the sum of p_i x p_{i+1}, valid for any
   // planar polygon placed anywhere in space.
   Vec3 twice_area = Vec3::Zero();
-  Vec3 first = position[face];
+  const Vec3& first = position[face];
   Vec3 prev = first;
   bool started = false;
   for_each_face_vertex(map, face, [&](Dart x) {

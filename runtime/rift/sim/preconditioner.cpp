@@ -96,6 +96,7 @@ void Preconditioner::build_pattern(const ElementMatrix& blocks, std::size_t n) {
   // follow the match cache without one).
   using Triplet = Eigen::Triplet<Real>;
   std::vector<Triplet> triplets;
+  triplets.reserve(3 * n);
   for (std::size_t i = 0; i < 3 * n; ++i)
     triplets.emplace_back(static_cast<int>(i), static_cast<int>(i), 0.0);
   for (const ElementBlocks& e : blocks.elements()) {

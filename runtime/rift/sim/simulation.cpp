@@ -74,6 +74,7 @@ void Simulation::initialise() {
   if (is_implicit(settings_.integrator)) {
     implicit_ = std::make_unique<ImplicitEuler>(settings_.implicit);
     std::vector<ForceModel*> models;
+    models.reserve(models_.size());
     for (auto& model : models_)
       models.push_back(model.get());
     implicit_->set_models(models);
