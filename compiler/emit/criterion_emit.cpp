@@ -126,7 +126,7 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
   w.open("void " + cls +
          "::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {");
   for (std::size_t m = 0; m < plan.memos.size(); ++m)
-    w.line(memo_var(m) + ".begin(g);");
+    w.line(memo_var(m) + ".begin(g, " + orbit_code(plan.memos[m].orbit) + ");");
   w.open("g.for_each_cell(" + orbit_code(crit.orbit.dims) + ", [&](rift::Dart " + d + ") {");
   // One relaxed load per cell: Ctrl-C is seen inside a long pass (a cell's
   // measure may traverse a large face).

@@ -92,7 +92,7 @@ TEST(OrbitMemo, AFaceValueOfAVertexCriterionIsReadThroughTheMemo) {
   const std::string code = generated("memos.cpp");
   const std::string collect = function(code, "SharedCriterion::collect(");
   ASSERT_FALSE(collect.empty()) << code;
-  EXPECT_NE(collect.find("memo0_.begin(g);"), std::string::npos) << collect;
+  EXPECT_NE(collect.find("memo0_.begin(g, rift::Orbit{0, 1});"), std::string::npos) << collect;
   // One entry per face visit, both face values read through it (the inner
   // fold reads a parameter: constant in a collection).
   EXPECT_NE(collect.find("memo0_.entry(g, d_f, rift::Orbit{0, 1})"), std::string::npos) << collect;

@@ -689,7 +689,7 @@ void VertexStressCriterion::initialise(rift::GMap& g) {
 }
 
 void VertexStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  memo0_.begin(g);
+  memo0_.begin(g, rift::Orbit{0, 1});
   g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart d_v) {
     rift::throw_if_interrupted();
     const rift::Mat3 s5 = (rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished();
@@ -733,7 +733,7 @@ void VertexEnergyCriterion::initialise(rift::GMap& g) {
 }
 
 void VertexEnergyCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  memo0_.begin(g);
+  memo0_.begin(g, rift::Orbit{0, 1});
   g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart d_v) {
     rift::throw_if_interrupted();
     rift::Real s0 = rift::Real(0);
