@@ -105,7 +105,9 @@ class MatchGroups {
     keys_.clear();
     group_of_.assign(matches.size(), kNone);
     next_.assign(matches.size(), kNone);
-    table_.assign(table_size_for(matches.size()), kNone);
+    // Sized for the groups as they come (add grows it), not for the
+    // matches: half as many groups as matches is the usual case.
+    table_.assign(table_size_for(0), kNone);
     for (std::uint32_t e = 0; e < matches.size(); ++e)
       add(e, matches[e], key, observer);
   }
