@@ -569,8 +569,13 @@ formats = ["vtu", "csv"]
           static_cast<char*>(nullptr));
     _exit(127);
   }
-  // The first frame is written just before the first step starts.
-  for (int k = 0; k < 1200 && !fs::exists(dir_ / "o" / "polygon.pvd"); ++k)
+  // The first frame is written just before the first step starts (its files
+  // appear by rename once complete; a frame of 300,000 vertices takes a while).
+  const auto first_frame_written = [&] {
+    return fs::exists(dir_ / "o" / "polygon.pvd") && fs::exists(dir_ / "o" / "polygon.csv") &&
+           fs::exists(dir_ / "o" / "frame_000000.vtu");
+  };
+  for (int k = 0; k < 1200 && !first_frame_written(); ++k)
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   std::this_thread::sleep_for(std::chrono::seconds(1));
   const auto sent = std::chrono::steady_clock::now();
