@@ -372,9 +372,9 @@ std::string BodyRenderer::fold(const Node& n) {
   if (mean) step += std::string(" ++") + cnt + ";";
   std::string out = std::string("[&]() { ") + t + " " + acc + " = " + init + ";";
   if (mean) out += std::string(" std::int64_t ") + cnt + " = 0;";
-  out += std::string(" ") + ctx_.map + ".for_each_sub_orbit(" + start + ", " + orbit_code(n.outer) +
-         ", " + orbit_code(n.orbit) + ", [&](rift::Dart " + dart_parameter(n.var, {n.a}) + ") { " +
-         step + " });";
+  out += std::string(" for_each_sub_orbit(") + ctx_.map + ", " + start + ", " +
+         orbit_code(n.outer) + ", " + orbit_code(n.orbit) + ", [&](rift::Dart " +
+         dart_parameter(n.var, {n.a}) + ") { " + step + " });";
   if (mean) {
     out += std::string(" return ") + cnt + " > 0 ? " + t + "(" + acc +
            " / static_cast<rift::Real>(" + cnt + ")) : " + t + "(" + zero_of(n.type) + ");";
@@ -447,8 +447,8 @@ void BodyRenderer::fused(const std::vector<ExprId>& group) {
     }
   }
   step.pop_back();
-  locals_.push_back(ctx_.map + ".for_each_sub_orbit(" + start + ", " + orbit_code(first.outer) +
-                    ", " + orbit_code(first.orbit) + ", [&](rift::Dart " +
+  locals_.push_back("for_each_sub_orbit(" + ctx_.map + ", " + start + ", " +
+                    orbit_code(first.outer) + ", " + orbit_code(first.orbit) + ", [&](rift::Dart " +
                     dart_parameter(first.var, bodies_of(group)) + ") { " + step + " });");
   locals_.insert(locals_.end(), after.begin(), after.end());
   for (std::size_t k = 0; k < group.size(); ++k)

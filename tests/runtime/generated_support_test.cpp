@@ -216,6 +216,47 @@ TEST(OrbitMemo, OneEntryPerOrbitAndValuesForgottenByTheNextCollection) {
   expect_one_entry_per_face_and_collection(true);
 }
 
+/// The darts GMap::for_each_sub_orbit gives, in its order.
+std::vector<Dart> sub_orbits_by_marks(const GMap& g, Dart d, Orbit o, Orbit sub) {
+  std::vector<Dart> out;
+  g.for_each_sub_orbit(d, o, sub, [&](Dart x) { out.push_back(x); });
+  return out;
+}
+
+TEST(SubOrbits, TheDartsAndOrderOfTheMarkingWalkWithOrWithoutSlots) {
+  // A strip of quads sewn along edges: each vertex is met by several faces.
+  GMap g(2);
+  std::vector<Dart> quads;
+  for (int i = 0; i < 4; ++i)
+    quads.push_back(test::make_polygon(g, 4));
+  for (int i = 0; i + 1 < 4; ++i)
+    ASSERT_TRUE(g.sew(quads[static_cast<std::size_t>(i)] + 2,
+                      quads[static_cast<std::size_t>(i) + 1] + 7, 2));
+  const Orbit vertex{1, 2}, face{0, 1}, corner{1}, all{0, 1, 2};
+  for (int slotted = 0; slotted < 2; ++slotted) {
+    if (slotted) {
+      g.add_embedding<Real>("f", face, MergePolicy::kKeepFirst, 0.0);
+      g.add_embedding<Real>("c", corner, MergePolicy::kKeepFirst, 0.0);
+    }
+    for (Dart d = 0; d < g.capacity(); ++d) {
+      for (const auto& [o, sub] : {std::pair{vertex, face}, std::pair{all, face},
+                                   std::pair{face, corner}, std::pair{all, corner}}) {
+        std::vector<Dart> got;
+        // A nested walk in f (a fold inside a fold) must not disturb the outer one.
+        generated::for_each_sub_orbit(g, d, o, sub, [&](Dart x) {
+          got.push_back(x);
+          std::size_t inner = 0;
+          generated::for_each_sub_orbit(g, x, face, corner, [&](Dart) { ++inner; });
+          EXPECT_EQ(inner, 4u);
+        });
+        EXPECT_EQ(got, sub_orbits_by_marks(g, d, o, sub))
+            << "dart " << d << ", slotted " << slotted;
+      }
+    }
+  }
+  EXPECT_EQ(generated::sub_orbit_buffers().depth, 0u);
+}
+
 TEST(SymmetricEigen, EigenvaluesAndTheLargestEigenvectorOfRandomSpectra) {
   std::mt19937 rng(3);
   std::normal_distribution<Real> n(0, 1);

@@ -571,7 +571,7 @@ void ShearForceCriterion::initialise(rift::GMap& g) {
 void ShearForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{0, 1}, [&](rift::Dart d_f) {
     rift::throw_if_interrupted();
-    const rift::Real measure = [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, (e_f_shear[d_c]).norm()); }); return acc0; }();
+    const rift::Real measure = [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, (e_f_shear[d_c]).norm()); }); return acc0; }();
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
     rift::TearCandidate c;
@@ -630,7 +630,7 @@ void ElementStressCriterion::collect(const rift::GMap& g, std::vector<rift::Tear
   g.for_each_cell(rift::Orbit{0, 1}, [&](rift::Dart d_f) {
     rift::throw_if_interrupted();
     const rift::Real l_area = (0.5 * (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm());
-    const rift::Mat3 l_m = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc0; }();
+    const rift::Mat3 l_m = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc0; }();
     const rift::Real measure = ((l_area > 0.0) ? symmetric_max_eigenvalue((((-0.5) * (l_m + (l_m).transpose())) / l_area)) : 0.0);
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
@@ -661,7 +661,7 @@ void InteractionForceCriterion::initialise(rift::GMap& g) {
 void InteractionForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart d_v) {
     rift::throw_if_interrupted();
-    const rift::Real measure = std::max<rift::Real>([&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, std::max<rift::Real>((e_f_membrane[d_c]).norm(), (e_f_shear[d_c]).norm())); }); return acc0; }(), [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&](rift::Dart d_x) { acc0 = std::max<rift::Real>(acc0, (e_f_stretch[d_x]).norm()); }); return acc0; }());
+    const rift::Real measure = std::max<rift::Real>([&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, std::max<rift::Real>((e_f_membrane[d_c]).norm(), (e_f_shear[d_c]).norm())); }); return acc0; }(), [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&](rift::Dart d_x) { acc0 = std::max<rift::Real>(acc0, (e_f_stretch[d_x]).norm()); }); return acc0; }());
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
     rift::TearCandidate c;
@@ -695,7 +695,7 @@ void VertexStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
     const rift::Mat3 s5 = (rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished();
     rift::Mat3 s0 = rift::Mat3::Zero();
     rift::Real s1 = rift::Real(0);
-    g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s2 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s3 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Real { return collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}); }); const rift::Mat3 s4 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); s0 += ((s2 > 0.0) ? rift::Mat3((((s3 * 2.0) / s2) * s4)) : rift::Mat3(s5)); s1 += s3; });
+    for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s2 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s3 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Real { return collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}); }); const rift::Mat3 s4 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); s0 += ((s2 > 0.0) ? rift::Mat3((((s3 * 2.0) / s2) * s4)) : rift::Mat3(s5)); s1 += s3; });
     const rift::Mat3 l_weighted = s0;
     const rift::Real l_mass = s1;
     const rift::Mat3 l_s = ((l_mass > 0.0) ? rift::Mat3((((-0.5) * (l_weighted + (l_weighted).transpose())) / l_mass)) : rift::Mat3(s5));
@@ -738,7 +738,7 @@ void VertexEnergyCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
     rift::throw_if_interrupted();
     rift::Real s0 = rift::Real(0);
     rift::Real s1 = rift::Real(0);
-    g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s2 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Mat3 s3 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); const rift::Mat3 s4 = (s3 + (s3).transpose()); s0 += (((e_membrane_mu[d_f] > 0.0) && (s2 > 0.0)) ? (((((s4 * s4)).trace() / (16.0 * e_membrane_mu[d_f])) - ((e_membrane_lambda[d_f] * std::pow((2.0 * (s3).trace()), 2.0)) / ((32.0 * e_membrane_mu[d_f]) * (e_membrane_lambda[d_f] + e_membrane_mu[d_f])))) / (1.5 * s2)) : 0.0); s1 += (s2 / 6.0); });
+    for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s2 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Mat3 s3 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); const rift::Mat3 s4 = (s3 + (s3).transpose()); s0 += (((e_membrane_mu[d_f] > 0.0) && (s2 > 0.0)) ? (((((s4 * s4)).trace() / (16.0 * e_membrane_mu[d_f])) - ((e_membrane_lambda[d_f] * std::pow((2.0 * (s3).trace()), 2.0)) / ((32.0 * e_membrane_mu[d_f]) * (e_membrane_lambda[d_f] + e_membrane_mu[d_f])))) / (1.5 * s2)) : 0.0); s1 += (s2 / 6.0); });
     const rift::Real l_stored = s0;
     const rift::Real l_share = s1;
     const rift::Real measure = ((l_share > 0.0) ? (l_stored / std::sqrt(l_share)) : 0.0);
@@ -748,7 +748,7 @@ void VertexEnergyCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
     c.at = d_v;
     c.measure = measure - threshold;
     const rift::Mat3 s8 = (rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished();
-    const rift::Mat3 l_weighted = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s5 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s6 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Real { return collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}); }); const rift::Mat3 s7 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); acc0 += ((s5 > 0.0) ? rift::Mat3((((s6 * 2.0) / s5) * s7)) : rift::Mat3(s8)); }); return acc0; }();
+    const rift::Mat3 l_weighted = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s5 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s6 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Real { return collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}); }); const rift::Mat3 s7 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); acc0 += ((s5 > 0.0) ? rift::Mat3((((s6 * 2.0) / s5) * s7)) : rift::Mat3(s8)); }); return acc0; }();
     c.normal = symmetric_max_eigenvector(((-0.5) * (l_weighted + (l_weighted).transpose())));
     c.point = e_position[d_v];
     out.push_back(c);
