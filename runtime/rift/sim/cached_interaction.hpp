@@ -273,9 +273,11 @@ class CachedInteraction final : public ForceModel {
   };
 
   auto key_fn() const {
-    return [this](const Match& m, std::uint64_t* out) {
-      if constexpr (kGroupable) kernel_.group_key(m, out);
-    };
+    if constexpr (kGroupable) {
+      return [this](const Match& m, std::uint64_t* out) { kernel_.group_key(m, out); };
+    } else {
+      return [](const Match&, std::uint64_t*) {};
+    }
   }
 
   // The dart a support orbit is matched from when it gets its match: the
@@ -284,13 +286,13 @@ class CachedInteraction final : public ForceModel {
   // the dart at hand. Grouped or not, the same dart: grouping changes how
   // matches are evaluated, never which.
   auto support_chooser() const {
-    return [this](const GMap& map, Dart d) {
-      if constexpr (requires { kernel_.support_dart(map, d); }) {
-        return kernel_.support_dart(map, d);
-      } else {
-        return d;
-      }
-    };
+    // Two lambdas, not one with an `if constexpr` inside: the second captures
+    // nothing (clang rejects an unused `this` capture under -Werror).
+    if constexpr (requires(const GMap& map, Dart d) { kernel_.support_dart(map, d); }) {
+      return [this](const GMap& map, Dart d) { return kernel_.support_dart(map, d); };
+    } else {
+      return [](const GMap&, Dart d) { return d; };
+    }
   }
 
   // Follows the match cache's changes in the groups, and the groups' in the colouring.
