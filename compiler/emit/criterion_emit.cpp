@@ -54,6 +54,9 @@ bool carried(const ast::ApplyArg& a, const check::ExprTypes& types) {
 }  // namespace
 
 void declare_criterion(Writer& w, const ast::Criterion& crit, const PackModel& model) {
+  const std::vector<ast::Param>& rule_params = *model.symbols->callee_params(crit.rule.text);
+  const lower::CriterionPlan plan =
+      lower::plan_criterion(crit, rule_params, *model.symbols, *model.types);
   const std::string cls = criterion_class(crit.name.text);
   const std::string params = component_params_struct(crit.name.text);
   declare_component_params(w, params, crit.params, *model.types);
@@ -80,6 +83,17 @@ void declare_criterion(Writer& w, const ast::Criterion& crit, const PackModel& m
     w.line("rift::Embedding<" + storage_type(model.symbols->embedding(name)->type) + "> " +
            embedding_var(name) + ";");
   }
+  for (std::size_t m = 0; m < plan.memos.size(); ++m) {
+    const ir::OrbitMemo& memo = plan.memos[m];
+    // collect() is const to its callers; the memos are its scratch, reset by each call.
+    w.line("/// Values collect() computes once per orbit " + orbit_code(memo.orbit) +
+           " it meets (rift/generated/orbit_memo.hpp).");
+    w.line("mutable rift::generated::OrbitMemo " + memo_var(m) + ";");
+    for (std::size_t k = 0; k < memo.values.size(); ++k) {
+      w.line("mutable rift::generated::OrbitMemoValues<" +
+             cpp_type(plan.body.graph[memo.values[k]].type) + "> " + memo_values_var(m, k) + ";");
+    }
+  }
   w.close("};");
   w.line();
 }
@@ -92,6 +106,8 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
       lower::plan_criterion(crit, rule_params, *model.symbols, *model.types);
   const ir::Body& b = plan.body;
   const RenderContext ctx = criterion_context(b);
+  RenderContext collect_ctx = ctx;
+  collect_ctx.memos = &plan.memos;
   const std::string d = dart_name(crit.dart.text);
   w.line("// ---- criterion '" + crit.name.text + "' on " + orbit_code(crit.orbit.dims));
   w.line();
@@ -109,6 +125,8 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
   // the lets the candidate's payload reads and the payload.
   w.open("void " + cls +
          "::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {");
+  for (std::size_t m = 0; m < plan.memos.size(); ++m)
+    w.line(memo_var(m) + ".begin(g, " + orbit_code(plan.memos[m].orbit) + ");");
   w.open("g.for_each_cell(" + orbit_code(crit.orbit.dims) + ", [&](rift::Dart " + d + ") {");
   // One relaxed load per cell: Ctrl-C is seen inside a long pass (a cell's
   // measure may traverse a large face).
@@ -130,7 +148,7 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
       if (wanted[i]) roots.push_back(b.lets[i].value);
       if (for_payload[i] && !wanted[i]) payload.push_back(b.lets[i].value);
     }
-    BodyRenderer r(b.graph, b.sharing, ctx, roots);
+    BodyRenderer r(b.graph, b.sharing, collect_ctx, roots);
     write_wanted_lets(w, r, b, wanted, written);
     write_rendered(w, r, crit.measure->args[0]->loc, "const rift::Real measure = ", plan.measure,
                    ";");

@@ -69,6 +69,13 @@ BodyRenderer::BodyRenderer(const ir::Graph& g, const ir::Sharing& sharing, const
                            const std::vector<ir::ExprId>& roots)
     : g_(g), sharing_(sharing), ctx_(ctx) {
   blocks_.emplace_back();
+  if (ctx_.memos && !sharing_.fold_vars.empty()) {
+    for (std::size_t m = 0; m < ctx_.memos->size(); ++m) {
+      const std::vector<ExprId>& values = (*ctx_.memos)[m].values;
+      for (std::size_t k = 0; k < values.size(); ++k)
+        memo_of_.emplace(values[k], std::make_pair(m, k));
+    }
+  }
   segment(roots);
 }
 
@@ -203,6 +210,8 @@ std::string BodyRenderer::value(ExprId id) {
   if (i >= uses_.size() || cheap(n) || !sharing_.speculable[i]) return node(id);
   const int level = level_of(sharing_.fold_vars[i]);
   if (const std::string* name = known(id, level)) return *name;
+  if (const auto memo = memo_of_.find(id); memo != memo_of_.end() && level > 0)
+    return memoised(id, level, memo->second.first, memo->second.second);
   if (const std::vector<ExprId>* group = level == 0 ? group_of(id) : nullptr) {
     fused(*group);
     return *known(id, 0);
@@ -221,6 +230,31 @@ std::string BodyRenderer::value(ExprId id) {
     locals_.push_back(std::move(local));
     blocks_.back().emplace(id, name);
   }
+  return name;
+}
+
+std::string BodyRenderer::memoised(ExprId id, int level, std::size_t memo, std::size_t k) {
+  const auto scope = static_cast<std::size_t>(level - 1);
+  // The orbit's entry: found (or numbered) once per iteration of the fold.
+  std::string entry;
+  if (const auto it = folds_[scope].memo_entries.find(memo);
+      it != folds_[scope].memo_entries.end()) {
+    entry = it->second;
+  } else {
+    const ir::OrbitMemo& m = (*ctx_.memos)[memo];
+    entry = memo_entry_name(memo);
+    folds_[scope].locals.push_back("const std::uint32_t " + entry + " = " + memo_var(memo) +
+                                   ".entry(" + ctx_.map + ", " + ctx_.dart(m.var) + ", " +
+                                   orbit_code(m.orbit) + ");");
+    folds_[scope].memo_entries.emplace(memo, entry);
+  }
+  const std::string t = cpp_type(g_[id].type);
+  const std::string code = node(id);  // may open scopes of its own: folds_ is indexed after
+  const std::string name = local_name(id);
+  folds_[scope].locals.push_back(
+      "const " + t + " " + name + " = " + memo_values_var(memo, k) + ".get(" + memo_var(memo) +
+      ", " + entry + ", " + std::to_string(k) + ", [&]() -> " + t + " { return " + code + "; });");
+  folds_[scope].names.emplace(id, name);
   return name;
 }
 
@@ -338,9 +372,9 @@ std::string BodyRenderer::fold(const Node& n) {
   if (mean) step += std::string(" ++") + cnt + ";";
   std::string out = std::string("[&]() { ") + t + " " + acc + " = " + init + ";";
   if (mean) out += std::string(" std::int64_t ") + cnt + " = 0;";
-  out += std::string(" ") + ctx_.map + ".for_each_sub_orbit(" + start + ", " + orbit_code(n.outer) +
-         ", " + orbit_code(n.orbit) + ", [&](rift::Dart " + dart_parameter(n.var, {n.a}) + ") { " +
-         step + " });";
+  out += std::string(" for_each_sub_orbit(") + ctx_.map + ", " + start + ", " +
+         orbit_code(n.outer) + ", " + orbit_code(n.orbit) + ", [&](rift::Dart " +
+         dart_parameter(n.var, {n.a}) + ") { " + step + " });";
   if (mean) {
     out += std::string(" return ") + cnt + " > 0 ? " + t + "(" + acc +
            " / static_cast<rift::Real>(" + cnt + ")) : " + t + "(" + zero_of(n.type) + ");";
@@ -413,8 +447,8 @@ void BodyRenderer::fused(const std::vector<ExprId>& group) {
     }
   }
   step.pop_back();
-  locals_.push_back(ctx_.map + ".for_each_sub_orbit(" + start + ", " + orbit_code(first.outer) +
-                    ", " + orbit_code(first.orbit) + ", [&](rift::Dart " +
+  locals_.push_back("for_each_sub_orbit(" + ctx_.map + ", " + start + ", " +
+                    orbit_code(first.outer) + ", " + orbit_code(first.orbit) + ", [&](rift::Dart " +
                     dart_parameter(first.var, bodies_of(group)) + ") { " + step + " });");
   locals_.insert(locals_.end(), after.begin(), after.end());
   for (std::size_t k = 0; k < group.size(); ++k)

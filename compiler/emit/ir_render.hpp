@@ -13,11 +13,15 @@
 // the top of the fold body whose variable it reads. Folds of the statement
 // level over the same sub-orbits of the same dart (a vertex's faces) are
 // computed by one walk, whose body computes each shared term once (fusion).
+// In a criterion's collect(), a value of one orbit that other cells fold over
+// too is read from the criterion's orbit memo (lower/orbit_memo.hpp).
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ir/body.hpp"
@@ -33,6 +37,10 @@ struct RenderContext {
   std::string args = "args";      // the declaration's parameters
   std::string params = "params";  // the pack's parameters
   std::string map = "g";          // the rift::GMap
+  /// A criterion's collect(): the values it computes once per orbit
+  /// (lower/orbit_memo.hpp), read through the members memo_var() and
+  /// memo_values_var(). Null elsewhere: nothing is memoised.
+  const std::vector<ir::OrbitMemo>* memos = nullptr;
 };
 
 /// The expressions of one body rendered into one C++ function, in the order
@@ -68,6 +76,7 @@ class BodyRenderer {
  private:
   struct FoldScope {
     std::map<ir::ExprId, std::string> names;
+    std::map<std::size_t, std::string> memo_entries;  ///< memo -> local of its orbit's entry
     std::vector<std::string> locals;
   };
 
@@ -76,6 +85,8 @@ class BodyRenderer {
   std::string index(ir::ExprId id);
   std::string place(const ir::Place& p);
   std::string fold(const ir::Node& n);
+  /// A memoised node (`memo`, value `k`), computed into a local of the fold at `level`.
+  std::string memoised(ir::ExprId id, int level, std::size_t memo, std::size_t k);
   /// Computes the folds of `group` (one walk) into statement-level locals.
   void fused(const std::vector<ir::ExprId>& group);
   /// The name of a fold's dart parameter, commented out when no body reads it.
@@ -102,6 +113,7 @@ class BodyRenderer {
   std::vector<std::map<ir::ExprId, std::string>> blocks_;  ///< statement-level names, per block
   std::vector<std::string> locals_;  ///< statement-level locals not yet written
   std::vector<FoldScope> folds_;     ///< one per enclosing fold
+  std::map<ir::ExprId, std::pair<std::size_t, std::size_t>> memo_of_;  ///< node -> (memo, k)
 };
 
 /// One expression of a body without sharing.

@@ -6,6 +6,8 @@
 // evaluate<kForces>(): straight-line code over those slots (no traversal, no
 // allocation, no virtual call) that the force pass and energy() share.
 #include <algorithm>
+#include <set>
+#include <utility>
 
 #include "ast/orbit_text.hpp"
 #include "emit/emit_context.hpp"
@@ -65,9 +67,10 @@ struct Kernel {
   const ast::Interaction* inter = nullptr;
   std::string cls;
   std::vector<std::string> slots;
-  std::set<std::string> columns;     // embeddings the body reads through column pointers
-  bool reads_state = false;          // the body reads ForceInput (positions, velocities)
-  lower::DerivativePlan derivative;  // Jacobians for implicit integrators
+  std::set<std::string> columns;                // embeddings the body reads through column pointers
+  std::set<std::pair<std::string, int>> reads;  // (embedding, slot) the forces depend on
+  bool reads_state = false;                     // the body reads ForceInput (positions, velocities)
+  lower::DerivativePlan derivative;             // Jacobians for implicit integrators
 };
 
 Kernel kernel_of(const InteractionPlan& plan) {
@@ -92,7 +95,48 @@ Kernel kernel_of(const InteractionPlan& plan) {
   for (const ir::Force& f : b.forces)
     scan(f.value);
   scan(b.energy);
+  // What the forces depend on besides the state: every read of the lets,
+  // whens and forces (the energy is never grouped).
+  auto scan_reads = [&](ir::ExprId root) {
+    if (root == ir::kNoExpr) return;
+    ir::visit(b.graph, root, [&](const ir::Node& n) {
+      if (n.op == ir::Op::Read) k.reads.insert({n.embedding, n.place.slot});
+    });
+  };
+  for (const ir::Let& l : b.lets)
+    scan_reads(l.value);
+  for (const ir::Stmt& s : b.stmts)
+    scan_reads(s.cond);
+  for (const ir::Force& f : b.forces)
+    scan_reads(f.value);
   return k;
+}
+
+/// Words of a group key: one per vertex slot, then the values read.
+int group_key_words(const Kernel& k, const PackModel& model) {
+  int words = 0;
+  for (const lower::SlotUse& u : k.plan->kernel.slots)
+    if (u.vertex) ++words;
+  for (const auto& [name, slot] : k.reads) {
+    const ast::Type t = model.symbols->embedding(name)->type;
+    words += t == ast::Type::Vec3 ? 3 : t == ast::Type::Mat3 ? 9 : 1;
+  }
+  return words;
+}
+
+/// The match's vertex slots (Match fields), in the Match's order.
+std::vector<std::string> vertex_fields(const Kernel& k) {
+  std::vector<std::string> out;
+  const lower::KernelPlan& plan = k.plan->kernel;
+  for (std::size_t s = 0; s < plan.slots.size(); ++s)
+    if (plan.slots[s].vertex) out.push_back(k.slots[s]);
+  return out;
+}
+
+/// An untagged kernel with forces chooses the dart its support orbit is
+/// matched from by its vertices (rift::generated::smallest_support_dart).
+bool chooses_support_dart(const Kernel& k) {
+  return !k.inter->tagged && !k.plan->body.forces.empty() && !vertex_fields(k).empty();
 }
 
 /// Render context of the force loop: stage arrays and column pointers, by slot.
@@ -203,7 +247,12 @@ void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
     });
     w.line("// init " + init.embedding + "(" + b.nodes[static_cast<std::size_t>(init.node)] +
            "), once per match");
-    w.open("g.for_each_cell(kSupport, [&](rift::Dart support) {");
+    if (chooses_support_dart(k)) {
+      w.open("g.for_each_cell(kSupport, [&](rift::Dart cell) {");
+      w.line("const rift::Dart support = support_dart(g, cell);");
+    } else {
+      w.open("g.for_each_cell(kSupport, [&](rift::Dart support) {");
+    }
     w.line("rift::Dart darts[" + n + "];");
     w.line("if (!find(g, support, darts)) return;");
     for (std::size_t v = 0; v < used.size(); ++v) {
@@ -235,6 +284,23 @@ void write_match(Writer& w, const Kernel& k) {
     w.line("m." + k.slots[s] + " = " + embedding_var(u.via) + ".slot(" + d + ");");
   }
   w.line("return true;");
+  w.close();
+  w.line();
+}
+
+// The dart a support orbit is matched from, the same for the inits and the
+// simulator's match cache: the one binding the smallest vertex slots first.
+void write_support_dart(Writer& w, const Kernel& k) {
+  const std::vector<std::string> fields = vertex_fields(k);
+  w.open("rift::Dart " + k.cls + "::support_dart(const rift::GMap& g, rift::Dart d) const {");
+  w.open("return smallest_support_dart<" + std::to_string(fields.size()) +
+         ">(g, d, kSupport, [&](rift::Dart x, rift::Slot* key) {");
+  w.line("Match m{};");
+  w.line("if (!match(g, x, m)) return false;");
+  for (std::size_t i = 0; i < fields.size(); ++i)
+    w.line("key[" + std::to_string(i) + "] = m." + fields[i] + ";");
+  w.line("return true;");
+  w.close("});");
   w.close();
   w.line();
 }
@@ -586,6 +652,72 @@ void write_jacobian_product(Writer& w, const Kernel& k) {
   w.line();
 }
 
+// ---- Groups of identical matches (rift/sim/match_groups.hpp): the key, one
+// evaluation's forces as terms, their storage for any member, and the force
+// pass over groups.
+
+// The key: the vertex slots in the Match's order, then the bits of every
+// value the forces read through the match's other slots. Equal keys: the
+// same arithmetic on the same numbers (the interaction's parameters and the
+// pack's are the same for every match), hence the same forces.
+void write_group_key(Writer& w, const Kernel& k) {
+  const lower::KernelPlan& plan = k.plan->kernel;
+  w.open("void " + k.cls + "::group_key(const Match& m, std::uint64_t* out) const {");
+  if (!k.reads.empty()) w.line("const Columns c = columns();");
+  for (std::size_t s = 0; s < plan.slots.size(); ++s)
+    if (plan.slots[s].vertex) w.line("out = rift::key_words(m." + k.slots[s] + ", out);");
+  for (const auto& [name, slot] : k.reads) {
+    w.line("out = rift::key_words(c." + member_name(name) + "[m." +
+           k.slots[static_cast<std::size_t>(slot)] + "], out);");
+  }
+  w.line("(void)out;");
+  w.close();
+  w.line();
+}
+
+void write_group_passes(Writer& w, const Kernel& k) {
+  const ir::Body& b = k.plan->body;
+  const std::string n = std::to_string(b.forces.size());
+  w.open("bool " + k.cls +
+         "::evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const {");
+  w.line("Result r;");
+  w.open("if (!evaluate<true>(m, in, columns(), r)) {");
+  w.line("for (int i = 0; i < " + n + "; ++i) terms[i].setZero();");
+  w.line("return false;");
+  w.close();
+  for (std::size_t i = 0; i < b.forces.size(); ++i)
+    w.line("terms[" + std::to_string(i) + "] = r." + force_field(b, b.forces[i]) + ";");
+  w.line("return true;");
+  w.close();
+  w.line();
+  w.open("void " + k.cls + "::store_terms(const Match& m, const rift::Vec3* terms) {");
+  for (std::size_t i = 0; i < b.forces.size(); ++i) {
+    const ir::Force& f = b.forces[i];
+    w.line(embedding_var(f.embedding) + ".values()[m." +
+           k.slots[static_cast<std::size_t>(f.store_slot)] + "] = terms[" + std::to_string(i) +
+           "];");
+  }
+  w.close();
+  w.line();
+  // As add_forces_all without storing, each force added count times.
+  w.open("void " + k.cls +
+         "::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const "
+         "rift::ForceInput& in, rift::Vec3* f) {");
+  w.line("const Columns c = columns();");
+  w.open("for (std::size_t i = 0; i < reps.size(); ++i) {");
+  w.line("const Match& m = reps[i];");
+  w.line("Result r;");
+  w.line("if (!evaluate<true>(m, in, c, r)) continue;");
+  w.line("const rift::Real count = counts[i];");
+  for (const ir::Force& f : b.forces) {
+    w.line("f[m." + k.slots[static_cast<std::size_t>(f.vertex_slot)] + "] += count * r." +
+           force_field(b, f) + ";");
+  }
+  w.close();
+  w.close();
+  w.line();
+}
+
 void write_reset(Writer& w, const Kernel& k) {
   const ir::Body& b = k.plan->body;
   w.open("void " + k.cls + "::reset_stored(" +
@@ -652,6 +784,11 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
          " and runs the interaction's inits.");
   w.line("void initialise(rift::GMap& g);");
   w.line("bool match(const rift::GMap& g, rift::Dart support, Match& m) const;");
+  if (chooses_support_dart(k)) {
+    w.line("/// The dart of d's support orbit to match from: the one binding the smallest vertex");
+    w.line("/// slots first (the inits use it, and so does the simulator for a new orbit).");
+    w.line("rift::Dart support_dart(const rift::GMap& g, rift::Dart d) const;");
+  }
   w.line("/// The force pass over every match: adds each force to f (and stores it when `store`).");
   w.line(
       "void add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, "
@@ -662,6 +799,20 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
     w.line("/// them (the coloured scatter of several threads groups matches by them).");
     w.line("static constexpr int kForceTerms = " + std::to_string(b.forces.size()) + ";");
     w.line("void force_targets(const Match& m, rift::Slot* out) const;");
+    w.line("/// Matches with equal keys give equal forces and are evaluated once");
+    w.line("/// (rift/sim/match_groups.hpp): the vertex slots, then the bits of the values read.");
+    w.line("static constexpr int kGroupKey = " + std::to_string(group_key_words(k, model)) + ";");
+    w.line("void group_key(const Match& m, std::uint64_t* out) const;");
+    w.line("/// One match's kForceTerms forces (zero where a `when` fails; false then).");
+    w.line(
+        "bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) "
+        "const;");
+    w.line("/// Stores forces computed by evaluate_terms into m's stored-force slots.");
+    w.line("void store_terms(const Match& m, const rift::Vec3* terms);");
+    w.line("/// The force pass over groups: adds counts[i] times the forces of reps[i].");
+    w.line(
+        "void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const "
+        "rift::ForceInput& in, rift::Vec3* f);");
   }
   w.line("void reset_stored(const Match& m);");
   w.line("rift::Real energy(const Match& m, const rift::ForceInput& in) const;");
@@ -740,10 +891,15 @@ void emit_kernel(Writer& w, const InteractionPlan& plan, const PackModel& model)
   write_find(w, k);
   write_initialise(w, k, model);
   write_match(w, k);
+  if (chooses_support_dart(k)) write_support_dart(w, k);
   write_columns(w, k);
   write_evaluate(w, k);
   write_add_forces_all(w, k);
   write_force_targets(w, k);
+  if (!k.plan->body.forces.empty()) {
+    write_group_key(w, k);
+    write_group_passes(w, k);
+  }
   write_reset(w, k);
   write_energy(w, k);
   if (k.derivative.available) {

@@ -93,6 +93,15 @@ std::string dart_name(std::string_view node) {
 std::string embedding_var(std::string_view name) {
   return "e_" + std::string(name);
 }
+std::string memo_var(std::size_t memo) {
+  return "memo" + std::to_string(memo) + "_";
+}
+std::string memo_values_var(std::size_t memo, std::size_t k) {
+  return memo_var(memo) + std::to_string(k) + "_";
+}
+std::string memo_entry_name(std::size_t memo) {
+  return "memo" + std::to_string(memo) + "_entry";
+}
 std::string rule_function(std::string_view rule) {
   return "apply_" + std::string(rule);
 }

@@ -3,6 +3,7 @@
 // or with each other.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,7 +27,12 @@ std::string let_name(std::string_view name);       // l_x
 std::string dart_name(std::string_view node);      // d_a (left/matched), n_a (right)
 std::string embedding_var(std::string_view name);  // e_position
 std::string rule_function(std::string_view rule);  // apply_rule
-std::string member_name(std::string_view name);    // fields of Params and Args structs
+/// An orbit memo of a criterion (ir::OrbitMemo): the member numbering its
+/// orbits, the member holding its value k, the local of a fold's entry.
+std::string memo_var(std::size_t memo);                        // memo0_
+std::string memo_values_var(std::size_t memo, std::size_t k);  // memo0_1_
+std::string memo_entry_name(std::size_t memo);                 // memo0_entry
+std::string member_name(std::string_view name);                // fields of Params and Args structs
 /// A C++ class name from a rule-language name: "global_edge" -> "GlobalEdge".
 std::string camel_name(std::string_view name);
 std::string kernel_class(std::string_view interaction);       // StretchKernel

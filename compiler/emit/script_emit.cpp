@@ -109,6 +109,10 @@ void emit_script(Writer& w, const ast::Script& script, const PackModel& model) {
                           convert(emit_expr(*a.value, ctx), ctx.types->of(*a.value),
                                   model.symbols->target(a)->type) +
                           ";");
+        // A value written in place is announced like a rewrite: interactions
+        // that group identical matches by the values they read
+        // (rift/sim/match_groups.hpp) re-key the matches around it.
+        w.line("if (touched) touched->push_back(" + dart_name(a.node.text) + ");");
         close_each(w, st);
         break;
       }

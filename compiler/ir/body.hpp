@@ -66,6 +66,16 @@ struct Sharing {
   std::vector<bool> speculable;
 };
 
+/// Values of a criterion's collection that depend only on the orbit `orbit`
+/// of the dart of fold variable `var` (lower/orbit_memo.hpp): each is
+/// computed once per collection and orbit, and read back by every cell whose
+/// fold visits that orbit again (rift::generated::OrbitMemo).
+struct OrbitMemo {
+  int var = -1;                // index into Body::nodes: the fold variable whose dart keys the memo
+  std::vector<int> orbit;      // the orbit of that dart the values depend on
+  std::vector<ExprId> values;  // the memoised nodes, at most 64
+};
+
 struct Body {
   Graph graph;
   /// Names of the darts places refer to: the pattern nodes (in pattern

@@ -1,6 +1,7 @@
 #include "lower/criterion_plan.hpp"
 
 #include "lower/expr_lower.hpp"
+#include "lower/orbit_memo.hpp"
 #include "lower/share.hpp"
 
 namespace rift::lower {
@@ -35,6 +36,16 @@ CriterionPlan plan_criterion(const ast::Criterion& crit, const std::vector<ast::
   for (ir::ExprId& a : plan.args)
     roots.push_back(&a);
   share_common_subexpressions(body, roots);
+  std::vector<ir::ExprId> values;
+  values.reserve(roots.size() + body.lets.size());
+  for (const ir::ExprId* r : roots)
+    values.push_back(*r);
+  for (const ir::Let& l : body.lets)
+    values.push_back(l.value);
+  plan.memos = plan_orbit_memos(body, values, crit.orbit.dims, [&symbols](const std::string& name) {
+    const ast::Embedding* e = symbols.embedding(name);
+    return e ? e->orbit.dims : std::vector<int>{};
+  });
   return plan;
 }
 

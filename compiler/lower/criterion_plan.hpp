@@ -2,7 +2,9 @@
 // the arguments of the rule it applies, as one body in the IR, shared
 // (lower/share.hpp) so that a value the criterion writes several times (a
 // triangle's area, an element's stress inside a fold over the faces of a
-// vertex) is computed once per place it can change.
+// vertex) is computed once per place it can change, and a value of one
+// element that several cells fold over is computed once per collection
+// (lower/orbit_memo.hpp).
 #pragma once
 
 #include <vector>
@@ -23,6 +25,8 @@ struct CriterionPlan {
   /// One per apply argument, parallel to Criterion::apply_args, of the type of
   /// the rule parameter it fills (`rule_params`, by name).
   std::vector<ir::ExprId> args;
+  /// What collect() computes once per orbit and collection (lower/orbit_memo.hpp).
+  std::vector<ir::OrbitMemo> memos;
 };
 
 CriterionPlan plan_criterion(const ast::Criterion& crit, const std::vector<ast::Param>& rule_params,

@@ -58,8 +58,8 @@ bool run_steps(benchmark::State& state, Step&& step, const Vec3* watched) {
   return true;
 }
 
-void BM_ScalingClothRift(benchmark::State& state, GridKind kind) {
-  auto sim = rift::bench::paper_cloth_simulation(kind, static_cast<int>(state.range(0)));
+void BM_ScalingClothRift(benchmark::State& state, GridKind kind, bool grouped) {
+  auto sim = rift::bench::paper_cloth_simulation(kind, static_cast<int>(state.range(0)), grouped);
   if (!run_steps(
           state, [&] { sim->step(); }, sim->position().values().data()))
     return;
@@ -84,7 +84,7 @@ void BM_ScalingClothReference(benchmark::State& state, GridKind kind, bool cumul
   report(state, static_cast<double>(cloth.vertex_count()));
 }
 
-void BM_ScalingSolid(benchmark::State& state, rift::BlockKind kind) {
+void BM_ScalingSolid(benchmark::State& state, rift::BlockKind kind, bool grouped) {
   using namespace rift::physics_test;
   const int n = static_cast<int>(state.range(0));
   SimSetup setup;
@@ -92,6 +92,7 @@ void BM_ScalingSolid(benchmark::State& state, rift::BlockKind kind) {
   // The time per step does not depend on dt; a tiny one keeps the finest
   // block, stiffest at its smallest elements, within its stability limit.
   setup.settings.dt = 1e-7;
+  setup.settings.group_interactions = grouped;
   if (kind == rift::BlockKind::Hex) {
     setup.interactions = {{"stretch", {}}, {"shear", {}}, {"volume_shear", {}}};
   } else {
@@ -121,17 +122,23 @@ void solid_sizes(benchmark::internal::Benchmark* b) {
 
 }  // namespace
 
-BENCHMARK_CAPTURE(BM_ScalingClothRift, quads, GridKind::Quad)->Apply(cloth_sizes);
+BENCHMARK_CAPTURE(BM_ScalingClothRift, quads, GridKind::Quad, true)->Apply(cloth_sizes);
+// Every atomic spring evaluated (identical ones not grouped), to compare.
+BENCHMARK_CAPTURE(BM_ScalingClothRift, quads_ungrouped, GridKind::Quad, false)->Apply(cloth_sizes);
 BENCHMARK_CAPTURE(BM_ScalingClothReference, quads_atomic, GridKind::Quad, false)
     ->Apply(cloth_sizes);
 BENCHMARK_CAPTURE(BM_ScalingClothReference, quads_cumulated, GridKind::Quad, true)
     ->Apply(cloth_sizes);
-BENCHMARK_CAPTURE(BM_ScalingClothRift, triangles, GridKind::Tri)->Apply(cloth_sizes);
+BENCHMARK_CAPTURE(BM_ScalingClothRift, triangles, GridKind::Tri, true)->Apply(cloth_sizes);
+BENCHMARK_CAPTURE(BM_ScalingClothRift, triangles_ungrouped, GridKind::Tri, false)
+    ->Apply(cloth_sizes);
 BENCHMARK_CAPTURE(BM_ScalingClothReference, triangles_atomic, GridKind::Tri, false)
     ->Apply(cloth_sizes);
 BENCHMARK_CAPTURE(BM_ScalingClothReference, triangles_cumulated, GridKind::Tri, true)
     ->Apply(cloth_sizes);
-BENCHMARK_CAPTURE(BM_ScalingSolid, hexahedra, rift::BlockKind::Hex)->Apply(solid_sizes);
-BENCHMARK_CAPTURE(BM_ScalingSolid, tetrahedra, rift::BlockKind::Tet)->Apply(solid_sizes);
+BENCHMARK_CAPTURE(BM_ScalingSolid, hexahedra, rift::BlockKind::Hex, true)->Apply(solid_sizes);
+BENCHMARK_CAPTURE(BM_ScalingSolid, hexahedra_ungrouped, rift::BlockKind::Hex, false)
+    ->Apply(solid_sizes);
+BENCHMARK_CAPTURE(BM_ScalingSolid, tetrahedra, rift::BlockKind::Tet, true)->Apply(solid_sizes);
 
 BENCHMARK_MAIN();

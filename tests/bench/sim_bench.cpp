@@ -24,9 +24,9 @@ void report(benchmark::State& state, double springs, double vertices) {
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
-void BM_GeneratedRk4Step(benchmark::State& state, GridKind kind) {
+void BM_GeneratedRk4Step(benchmark::State& state, GridKind kind, bool grouped) {
   const int n = static_cast<int>(state.range(0));
-  auto sim = rift::bench::paper_cloth_simulation(kind, n);
+  auto sim = rift::bench::paper_cloth_simulation(kind, n, grouped);
   for (int s = 0; s < 200; ++s)
     sim->step();
   for (auto _ : state) {
@@ -67,13 +67,18 @@ void BM_ReferenceRk4Step(benchmark::State& state, GridKind kind, bool cumulated)
 
 }  // namespace
 
-BENCHMARK_CAPTURE(BM_GeneratedRk4Step, quads, GridKind::Quad)->Arg(10)->Arg(100);
+BENCHMARK_CAPTURE(BM_GeneratedRk4Step, quads, GridKind::Quad, true)->Arg(10)->Arg(100);
+BENCHMARK_CAPTURE(BM_GeneratedRk4Step, quads_ungrouped, GridKind::Quad, false)->Arg(10)->Arg(100);
 BENCHMARK_CAPTURE(BM_ReferenceRk4Step, quads, GridKind::Quad, false)->Arg(10)->Arg(100);
 BENCHMARK_CAPTURE(BM_ReferenceRk4Step, quads_cumulated, GridKind::Quad, true)->Arg(10)->Arg(100);
-BENCHMARK_CAPTURE(BM_GeneratedRk4Step, triangles, GridKind::Tri)->Arg(10)->Arg(100);
+BENCHMARK_CAPTURE(BM_GeneratedRk4Step, triangles, GridKind::Tri, true)->Arg(10)->Arg(100);
+BENCHMARK_CAPTURE(BM_GeneratedRk4Step, triangles_ungrouped, GridKind::Tri, false)
+    ->Arg(10)
+    ->Arg(100);
 BENCHMARK_CAPTURE(BM_ReferenceRk4Step, triangles, GridKind::Tri, false)->Arg(10)->Arg(100);
 BENCHMARK_CAPTURE(BM_ReferenceRk4Step, triangles_cumulated, GridKind::Tri, true)->Arg(10)->Arg(100);
-BENCHMARK_CAPTURE(BM_GeneratedRk4Step, mixed, GridKind::Mix)->Arg(10)->Arg(100);
+BENCHMARK_CAPTURE(BM_GeneratedRk4Step, mixed, GridKind::Mix, true)->Arg(10)->Arg(100);
+BENCHMARK_CAPTURE(BM_GeneratedRk4Step, mixed_ungrouped, GridKind::Mix, false)->Arg(10)->Arg(100);
 BENCHMARK_CAPTURE(BM_ReferenceRk4Step, mixed, GridKind::Mix, false)->Arg(10)->Arg(100);
 BENCHMARK_CAPTURE(BM_ReferenceRk4Step, mixed_cumulated, GridKind::Mix, true)->Arg(10)->Arg(100);
 

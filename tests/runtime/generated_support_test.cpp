@@ -167,6 +167,96 @@ TEST(OrbitValues, EachEmbeddingOrbitCountsOnce) {
   EXPECT_EQ(generated::collect_sum(g, k, quad + 2, Orbit{1, 2}), 11);
 }
 
+/// Two quads' faces through an OrbitMemo, keyed by darts (`slotted` false)
+/// or by the slots of an embedding on the faces: one entry per face, found
+/// from any of its darts; each value computed once per collection.
+void expect_one_entry_per_face_and_collection(bool slotted) {
+  GMap g(2);
+  const Dart q1 = test::make_polygon(g, 4);
+  const Dart q2 = test::make_polygon(g, 4);
+  const Orbit face{0, 1};
+  if (slotted) g.add_embedding<Real>("w", face, MergePolicy::kKeepFirst, 0.0);
+  generated::OrbitMemo memo;
+  generated::OrbitMemoValues<Real> values;
+  int computed = 0;
+  for (int collection = 0; collection < 3; ++collection) {
+    memo.begin(g, face);
+    // The second quad first: entries are numbered in visiting order.
+    const std::uint32_t e2 = memo.entry(g, q2 + 5, face);
+    const std::uint32_t e1 = memo.entry(g, q1, face);
+    EXPECT_EQ(e2, 0u);
+    EXPECT_EQ(e1, 1u);
+    for (Dart k = 0; k < 8; ++k) {
+      EXPECT_EQ(memo.entry(g, q1 + k, face), e1);
+      EXPECT_EQ(memo.entry(g, q2 + k, face), e2);
+    }
+    EXPECT_EQ(memo.entries(), 2u);
+    // Computed on the first request of each collection, then read back.
+    const Real v = 10.0 * collection;
+    for (int ask = 0; ask < 3; ++ask) {
+      EXPECT_EQ(values.get(memo, e1, 0,
+                           [&] {
+                             ++computed;
+                             return v + 1;
+                           }),
+                v + 1);
+      EXPECT_EQ(values.get(memo, e2, 0,
+                           [&] {
+                             ++computed;
+                             return v + 2;
+                           }),
+                v + 2);
+    }
+  }
+  EXPECT_EQ(computed, 6);
+}
+
+TEST(OrbitMemo, OneEntryPerOrbitAndValuesForgottenByTheNextCollection) {
+  expect_one_entry_per_face_and_collection(false);
+  expect_one_entry_per_face_and_collection(true);
+}
+
+/// The darts GMap::for_each_sub_orbit gives, in its order.
+std::vector<Dart> sub_orbits_by_marks(const GMap& g, Dart d, Orbit o, Orbit sub) {
+  std::vector<Dart> out;
+  g.for_each_sub_orbit(d, o, sub, [&](Dart x) { out.push_back(x); });
+  return out;
+}
+
+TEST(SubOrbits, TheDartsAndOrderOfTheMarkingWalkWithOrWithoutSlots) {
+  // A strip of quads sewn along edges: each vertex is met by several faces.
+  GMap g(2);
+  std::vector<Dart> quads;
+  for (int i = 0; i < 4; ++i)
+    quads.push_back(test::make_polygon(g, 4));
+  for (int i = 0; i + 1 < 4; ++i)
+    ASSERT_TRUE(g.sew(quads[static_cast<std::size_t>(i)] + 2,
+                      quads[static_cast<std::size_t>(i) + 1] + 7, 2));
+  const Orbit vertex{1, 2}, face{0, 1}, corner{1}, all{0, 1, 2};
+  for (int slotted = 0; slotted < 2; ++slotted) {
+    if (slotted) {
+      g.add_embedding<Real>("f", face, MergePolicy::kKeepFirst, 0.0);
+      g.add_embedding<Real>("c", corner, MergePolicy::kKeepFirst, 0.0);
+    }
+    for (Dart d = 0; d < g.capacity(); ++d) {
+      for (const auto& [o, sub] : {std::pair{vertex, face}, std::pair{all, face},
+                                   std::pair{face, corner}, std::pair{all, corner}}) {
+        std::vector<Dart> got;
+        // A nested walk in f (a fold inside a fold) must not disturb the outer one.
+        generated::for_each_sub_orbit(g, d, o, sub, [&](Dart x) {
+          got.push_back(x);
+          std::size_t inner = 0;
+          generated::for_each_sub_orbit(g, x, face, corner, [&](Dart) { ++inner; });
+          EXPECT_EQ(inner, 4u);
+        });
+        EXPECT_EQ(got, sub_orbits_by_marks(g, d, o, sub))
+            << "dart " << d << ", slotted " << slotted;
+      }
+    }
+  }
+  EXPECT_EQ(generated::sub_orbit_buffers().depth, 0u);
+}
+
 TEST(SymmetricEigen, EigenvaluesAndTheLargestEigenvectorOfRandomSpectra) {
   std::mt19937 rng(3);
   std::normal_distribution<Real> n(0, 1);

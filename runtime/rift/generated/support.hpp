@@ -7,6 +7,8 @@
 //   match_rows.hpp     a match's rows: the hook orbit walked breadth-first
 //   slot_upkeep.hpp    embedding slots after a rewrite (merge, split, new)
 //   orbit_values.hpp   aggregates over an orbit (sum, count, mean, min, max)
+//   orbit_memo.hpp     values a criterion computes once per orbit and collection
+//   sub_orbits.hpp     the sub-orbits a fold walks, by slot where it can
 //   pack_values.hpp    parameter values, required embeddings, tagged darts
 //   core/polar.hpp, core/symmetric_eigen.hpp   the matrix built-ins
 #pragma once
@@ -14,7 +16,9 @@
 #include "rift/core/polar.hpp"
 #include "rift/core/symmetric_eigen.hpp"
 #include "rift/generated/match_rows.hpp"
+#include "rift/generated/orbit_memo.hpp"
 #include "rift/generated/orbit_values.hpp"
 #include "rift/generated/pack_values.hpp"
 #include "rift/generated/scratch.hpp"
 #include "rift/generated/slot_upkeep.hpp"
+#include "rift/generated/sub_orbits.hpp"

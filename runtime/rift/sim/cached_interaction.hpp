@@ -35,9 +35,32 @@
 // blocks of matches coloured so that the blocks of one colour share no
 // vertex run in parallel, straight into f, and each vertex receives its
 // terms in the same order on any number of threads (one thread included).
+//
+// A kernel that also gives a group key (riftc emits it for every kernel with forces)
+//
+//   static constexpr int kGroupKey;                          // words per key
+//   void group_key(const Match&, std::uint64_t* out) const;  // vertex slots, then value bits
+//   bool evaluate_terms(const Match&, const ForceInput&, Vec3* terms) const;
+//   void store_terms(const Match&, const Vec3* terms);       // the stored forces
+//   void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts,
+//                           const ForceInput&, Vec3* f);     // f += count × forces
+//
+// evaluates identical matches once (rift/sim/match_groups.hpp): the
+// coloured scatter then runs over groups instead of matches, and a pass that
+// stores writes each member's stored forces with the values it would have
+// computed itself. Keys compare vertices in order; for two half-edges of one
+// edge to give the same order, an untagged kernel's support orbit is matched
+// from the dart that binds the smallest vertex slots first (the kernel's
+// support_dart), grouped or not. The language lets an untagged interaction
+// be matched "from one of the darts" of its support orbit, any of them
+// (docs/language.md); the kernel's inits use that same dart, and the orbit
+// keeps it for good (MatchCache keeps owners), so a match and its stored
+// forces never move to another dart because slots were renumbered.
+// (`SimulationSettings::group_interactions` turns grouping off, to compare.)
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 #include <utility>
 
@@ -45,6 +68,7 @@
 #include "rift/core/parallel.hpp"
 #include "rift/sim/force_model.hpp"
 #include "rift/sim/match_cache.hpp"
+#include "rift/sim/match_groups.hpp"
 #include "rift/sim/scatter_colouring.hpp"
 
 namespace rift {
@@ -60,9 +84,31 @@ class CachedInteraction final : public ForceModel {
 
   void initialise(GMap& map) override {
     kernel_.initialise(map);
-    cache_.build(map, Kernel::kSupport, [&](const GMap& m, Dart d, typename Kernel::Match& out) {
-      return kernel_.match(m, d, out);
-    });
+    if constexpr (kGroupable) {
+      grouped_ = group_requested_ && Kernel::kGroupKey <= MatchGroups<Match>::kMaxKey;
+    }
+    cache_.build(
+        map, Kernel::kSupport,
+        [&](const GMap& m, Dart d, typename Kernel::Match& out) {
+          return kernel_.match(m, d, out);
+        },
+        support_chooser());
+    if constexpr (kGroupable) {
+      if (grouped_) {
+        typename MatchGroups<Match>::NoObserver none;
+        groups_.build(cache_.matches(), Kernel::kGroupKey, key_fn(), none);
+        // Nothing to share (each element once, e.g. finite elements): the
+        // plain pass, without the groups' upkeep.
+        grouped_ = groups_.size() < cache_.size();
+        if (!grouped_) groups_ = {};
+      }
+      if (grouped_) {
+        const auto reps = groups_.representatives();
+        colouring_.build(reps.size(), Kernel::kForceTerms,
+                         [&](std::size_t g, Slot* out) { kernel_.force_targets(reps[g], out); });
+        return;
+      }
+    }
     if constexpr (kColoured) {
       const auto all = cache_.matches();
       colouring_.build(all.size(), Kernel::kForceTerms,
@@ -77,20 +123,55 @@ class CachedInteraction final : public ForceModel {
     auto lost = [&](const typename Kernel::Match& m, bool alive) {
       if (alive) kernel_.reset_stored(m);
     };
+    if constexpr (kGroupable) {
+      if (grouped_) {
+        GroupsObserver observer{*this};
+        cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost, observer,
+                       support_chooser());
+        return;
+      }
+    }
     if constexpr (kColoured) {
       ColouringObserver observer{kernel_, colouring_};
-      cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost, observer);
+      cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost, observer,
+                     support_chooser());
     } else {
-      cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost);
+      typename MatchCache<Match>::NoObserver none;
+      cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost, none,
+                     support_chooser());
     }
   }
 
   void add_forces(const ForceInput& in, Vec3* f, bool store) override {
+    if constexpr (kGroupable) {
+      if (grouped_) {
+        add_forces_grouped(in, f, store);
+        return;
+      }
+    }
     if constexpr (kColoured) {
       add_forces_coloured(in, f, store);
     } else {
       add_forces_in_order(in, f, store);
     }
+  }
+
+  /// Before initialise: evaluate identical matches once (the default) or
+  /// every match on its own.
+  void set_grouping(bool on) override { group_requested_ = on; }
+  /// True when this interaction's force pass runs over groups.
+  bool grouped() const { return grouped_; }
+  /// Groups the force pass evaluates (matches when not grouped).
+  std::size_t evaluated_matches() const override {
+    return grouped_ ? groups_.size() : cache_.size();
+  }
+  const MatchGroups<typename Kernel::Match>& groups() const { return groups_; }
+  /// Checks the groups against the matches (for tests; "" when right).
+  std::string check_groups() const {
+    if constexpr (kGroupable) {
+      if (grouped_) return groups_.check(cache_.matches(), key_fn());
+    }
+    return "";
   }
 
   Real potential_energy(const ForceInput& in) const override {
@@ -172,6 +253,121 @@ class CachedInteraction final : public ForceModel {
     k.add_forces_all(ms, in, f, true);
   };
 
+  static constexpr int terms_per_match() {
+    if constexpr (requires { Kernel::kForceTerms; }) {
+      return Kernel::kForceTerms;
+    } else {
+      return 1;
+    }
+  }
+  static constexpr int kTerms = terms_per_match();
+  static constexpr bool kGroupable =
+      kColoured && requires(const Kernel& k, Kernel& mk, const Match& m, std::uint64_t* key,
+                            const ForceInput& in, Vec3* t, std::span<const Match> ms,
+                            const std::uint32_t* counts) {
+    Kernel::kGroupKey;
+    k.group_key(m, key);
+    k.evaluate_terms(m, in, t);
+    mk.store_terms(m, t);
+    mk.add_forces_grouped(ms, counts, in, t);
+  };
+
+  auto key_fn() const {
+    if constexpr (kGroupable) {
+      return [this](const Match& m, std::uint64_t* out) { kernel_.group_key(m, out); };
+    } else {
+      return [](const Match&, std::uint64_t*) {};
+    }
+  }
+
+  // The dart a support orbit is matched from when it gets its match: the
+  // kernel's choice (riftc's support_dart for an untagged kernel: the dart
+  // binding the smallest vertex slots first, which its inits used too), else
+  // the dart at hand. Grouped or not, the same dart: grouping changes how
+  // matches are evaluated, never which.
+  auto support_chooser() const {
+    // Two lambdas, not one with an `if constexpr` inside: the second captures
+    // nothing (clang rejects an unused `this` capture under -Werror).
+    if constexpr (requires(const GMap& map, Dart d) { kernel_.support_dart(map, d); }) {
+      return [this](const GMap& map, Dart d) { return kernel_.support_dart(map, d); };
+    } else {
+      return [](const GMap&, Dart d) { return d; };
+    }
+  }
+
+  // Follows the match cache's changes in the groups, and the groups' in the colouring.
+  struct GroupsObserver {
+    CachedInteraction& self;
+    struct Colouring {
+      CachedInteraction& self;
+      void erased(std::uint32_t g, std::uint32_t last) { self.colouring_.erase(g, last); }
+      void inserted(std::uint32_t g, const Match& m) {
+        Slot s[kTerms];
+        self.kernel_.force_targets(m, s);
+        self.colouring_.insert(g, s);
+      }
+    };
+    void erased(std::uint32_t e, std::uint32_t last) {
+      Colouring c{self};
+      self.groups_.erased(e, last, self.cache_.matches(), c);
+    }
+    void replaced(std::uint32_t e, const Match& before, const Match& after) {
+      Colouring c{self};
+      self.groups_.replaced(e, before, after, self.cache_.matches(), self.key_fn(), c);
+    }
+    void inserted(std::uint32_t e, const Match& m) {
+      Colouring c{self};
+      self.groups_.inserted(e, m, self.key_fn(), c);
+    }
+  };
+
+  // The coloured scatter over groups: each group's representative is
+  // evaluated once and its forces added count times (count × f: exact for
+  // two members, within rounding of the members' sum otherwise, in an order
+  // that depends on the groups, never on the threads). A storing pass writes
+  // the representative's forces into every member's stored slots: equal
+  // keys, equal arithmetic, so the values each member would have stored.
+  void add_forces_grouped(const ForceInput& in, Vec3* f, bool store) {
+    if constexpr (kGroupable) {
+      const std::span<const Match> reps = groups_.representatives();
+      const std::span<const std::uint32_t> counts = groups_.counts();
+      const std::span<const Match> all = cache_.matches();
+      auto body = [&](const std::uint32_t* entries, std::size_t n, bool consecutive) {
+        if (n == 0) return;
+        if (store) {
+          for (std::size_t i = 0; i < n; ++i) {
+            const std::uint32_t g = entries[i];
+            Vec3 t[kTerms];
+            Slot s[kTerms];
+            kernel_.evaluate_terms(reps[g], in, t);
+            kernel_.force_targets(reps[g], s);
+            const Real w = counts[g];
+            for (int k = 0; k < kTerms; ++k)
+              f[s[k]] += w * t[k];
+            groups_.for_each_member(g, [&](std::uint32_t e) { kernel_.store_terms(all[e], t); });
+          }
+          return;
+        }
+        if (consecutive) {
+          kernel_.add_forces_grouped(reps.subspan(entries[0], n), counts.data() + entries[0], in,
+                                     f);
+          return;
+        }
+        Match buffer[kGather];
+        std::uint32_t weights[kGather];
+        for (std::size_t first = 0; first < n; first += kGather) {
+          const std::size_t count = std::min(kGather, n - first);
+          for (std::size_t i = 0; i < count; ++i) {
+            buffer[i] = reps[entries[first + i]];
+            weights[i] = counts[entries[first + i]];
+          }
+          kernel_.add_forces_grouped(std::span<const Match>(buffer, count), weights, in, f);
+        }
+      };
+      colouring_.run(body);
+    }
+  }
+
   // Follows the match cache's changes in the colouring.
   struct ColouringObserver {
     Kernel& kernel;
@@ -236,7 +432,10 @@ class CachedInteraction final : public ForceModel {
   static constexpr std::size_t kInterruptBlock = 4096;
   Kernel kernel_;
   MatchCache<typename Kernel::Match> cache_;
-  ScatterColouring colouring_;  ///< the order of the force pass, when the kernel gives targets
+  ScatterColouring colouring_;  ///< the order of the force pass (over groups when grouped_)
+  MatchGroups<typename Kernel::Match> groups_;
+  bool group_requested_ = true;
+  bool grouped_ = false;
 };
 
 }  // namespace rift

@@ -47,6 +47,12 @@ class ForceModel {
 
   /// Number of support orbits whose pattern currently matches.
   virtual std::size_t active_matches() const = 0;
+  /// Evaluations per force pass: fewer than active_matches() when identical
+  /// matches are evaluated once (rift/sim/match_groups.hpp).
+  virtual std::size_t evaluated_matches() const { return active_matches(); }
+  /// Before initialise: evaluate identical matches once (true, the default
+  /// of interactions that can) or each on its own (false).
+  virtual void set_grouping(bool /*on*/) {}
 
   // --- Jacobians, for implicit integrators (docs/physics.md, implicit step) ---
   //

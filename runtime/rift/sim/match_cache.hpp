@@ -26,14 +26,28 @@ class MatchCache {
   /// Matches every support orbit of the map. match(map, dart, Match&) -> bool.
   template <class MatchFn>
   void build(const GMap& map, Orbit support, MatchFn&& match) {
+    build(map, support, match, FirstDart{});
+  }
+
+  /// The same, each orbit matched from (and owned by) the dart
+  /// choose(map, d) -> Dart picks in d's support orbit. An orbit keeps its
+  /// owner afterwards: rematch asks choose only for an orbit without one.
+  template <class MatchFn, class ChooseFn>
+  void build(const GMap& map, Orbit support, MatchFn&& match, ChooseFn&& choose) {
     matches_.clear();
     owners_.clear();
     entry_of_dart_.assign(map.capacity(), kNone);
     map.for_each_cell(support, [&](Dart d) {
+      const Dart owner = choose(map, d);
       Match m{};
-      if (match(map, d, m)) insert(d, m);
+      if (match(map, owner, m)) insert(owner, m);
     });
   }
+
+  /// The owner of a support orbit when nothing chooses: the dart at hand.
+  struct FirstDart {
+    Dart operator()(const GMap& /*map*/, Dart d) const { return d; }
+  };
 
   /// What rematch tells an observer of the dense array (the scatter
   /// colouring), in the order it happens. Entries are indices in matches().
@@ -61,6 +75,14 @@ class MatchCache {
   template <class MatchFn, class LostFn, class Observer>
   void rematch(const GMap& map, Orbit support, int radius, std::span<const Dart> region,
                MatchFn&& match, LostFn&& lost, Observer& observer) {
+    rematch(map, support, radius, region, match, lost, observer, FirstDart{});
+  }
+
+  /// The same, a support orbit without an owner (new, or whose owner's match
+  /// was lost) matched from the dart choose(map, d) picks (see build).
+  template <class MatchFn, class LostFn, class Observer, class ChooseFn>
+  void rematch(const GMap& map, Orbit support, int radius, std::span<const Dart> region,
+               MatchFn&& match, LostFn&& lost, Observer& observer, ChooseFn&& choose) {
     if (entry_of_dart_.size() < map.capacity()) entry_of_dart_.resize(map.capacity(), kNone);
     // Deleted owners first: their matches are gone for good.
     for (Dart d : region) {
@@ -109,8 +131,9 @@ class MatchCache {
           erase(e, observer);
         }
       });
+      const Dart from = owner == kNoDart ? choose(map, d) : owner;
       Match m{};
-      const bool matched = match(map, owner == kNoDart ? d : owner, m);
+      const bool matched = match(map, from, m);
       if (owner != kNoDart) {
         const std::uint32_t e = entry_of_dart_[owner];
         if (matched) {
@@ -121,7 +144,7 @@ class MatchCache {
           erase(e, observer);
         }
       } else if (matched) {
-        insert(d, m);
+        insert(from, m);
         observer.inserted(static_cast<std::uint32_t>(matches_.size() - 1), m);
       }
     }

@@ -61,8 +61,10 @@ void Simulation::set_density(Real density) {
 
 void Simulation::initialise() {
   update_all_vertex_masses(map_, corner_mass_, vertex_mass_);
-  for (auto& model : models_)
+  for (auto& model : models_) {
+    model->set_grouping(settings_.group_interactions);
     model->initialise(map_);
+  }
   for (auto& criterion : criteria_)
     criterion->initialise(map_);
   if (Embedding<Vec3> f = map_.embedding<Vec3>(state::kVertexForce)) {
@@ -251,7 +253,8 @@ std::size_t Simulation::apply_criteria() {
       }
     }
   }
-  if (applied > 0) {
+  // A script may also have written values in place without a rewrite.
+  if (applied > 0 || !touched_.empty()) {
     on_topology_changed(touched_);
     tears_ += applied;
   }

@@ -37,6 +37,9 @@ struct SimulationSettings {
   Real divergence_factor = 100;
   /// Solver settings of integrator = implicit_euler (the scene's [implicit]).
   ImplicitSettings implicit = {};
+  /// Evaluate identical matches of an interaction once (same forces to
+  /// rounding, rift/sim/match_groups.hpp); false evaluates each match.
+  bool group_interactions = true;
 };
 
 /// A simulation that cannot go on: exploded state or an invalid map.

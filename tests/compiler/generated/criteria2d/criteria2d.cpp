@@ -379,6 +379,7 @@ bool apply_split_vertex(rift::GMap& g, std::span<const rift::Dart> hooks, const 
     for (const rift::Dart d_f : each) {
       if (!g.is_alive(d_f)) continue;
       e_side[d_f] = ((rift::Vec3(collect_mean(g, e_position, d_f, rift::Orbit{0, 1}) - args.point)).dot(args.normal) >= 0.0);
+      if (touched) touched->push_back(d_f);
     }
   }
   {
@@ -570,7 +571,7 @@ void ShearForceCriterion::initialise(rift::GMap& g) {
 void ShearForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{0, 1}, [&](rift::Dart d_f) {
     rift::throw_if_interrupted();
-    const rift::Real measure = [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, (e_f_shear[d_c]).norm()); }); return acc0; }();
+    const rift::Real measure = [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, (e_f_shear[d_c]).norm()); }); return acc0; }();
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
     rift::TearCandidate c;
@@ -629,8 +630,8 @@ void ElementStressCriterion::collect(const rift::GMap& g, std::vector<rift::Tear
   g.for_each_cell(rift::Orbit{0, 1}, [&](rift::Dart d_f) {
     rift::throw_if_interrupted();
     const rift::Real l_area = (0.5 * (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm());
-    const rift::Mat3 l_m = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc0; }();
-    const rift::Real measure = symmetric_max_eigenvalue(((l_area > 0.0) ? rift::Mat3((((-0.5) / l_area) * (l_m + (l_m).transpose()))) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished())));
+    const rift::Mat3 l_m = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc0; }();
+    const rift::Real measure = ((l_area > 0.0) ? symmetric_max_eigenvalue((((-0.5) * (l_m + (l_m).transpose())) / l_area)) : 0.0);
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
     rift::TearCandidate c;
@@ -660,7 +661,7 @@ void InteractionForceCriterion::initialise(rift::GMap& g) {
 void InteractionForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart d_v) {
     rift::throw_if_interrupted();
-    const rift::Real measure = std::max<rift::Real>([&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, std::max<rift::Real>((e_f_membrane[d_c]).norm(), (e_f_shear[d_c]).norm())); }); return acc0; }(), [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&](rift::Dart d_x) { acc0 = std::max<rift::Real>(acc0, (e_f_stretch[d_x]).norm()); }); return acc0; }());
+    const rift::Real measure = std::max<rift::Real>([&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, std::max<rift::Real>((e_f_membrane[d_c]).norm(), (e_f_shear[d_c]).norm())); }); return acc0; }(), [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&](rift::Dart d_x) { acc0 = std::max<rift::Real>(acc0, (e_f_stretch[d_x]).norm()); }); return acc0; }());
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
     rift::TearCandidate c;
@@ -688,15 +689,16 @@ void VertexStressCriterion::initialise(rift::GMap& g) {
 }
 
 void VertexStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
+  memo0_.begin(g, rift::Orbit{0, 1});
   g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart d_v) {
     rift::throw_if_interrupted();
     const rift::Mat3 s5 = (rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished();
     rift::Mat3 s0 = rift::Mat3::Zero();
     rift::Real s1 = rift::Real(0);
-    g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s2 = collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}); const rift::Real s3 = (0.5 * (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm()); const rift::Mat3 s4 = [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); s0 += (s2 * ((s3 > 0.0) ? rift::Mat3((((-0.5) / s3) * (s4 + (s4).transpose()))) : rift::Mat3(s5))); s1 += s2; });
+    for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s2 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s3 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Real { return collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}); }); const rift::Mat3 s4 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); s0 += ((s2 > 0.0) ? rift::Mat3((((s3 * 2.0) / s2) * s4)) : rift::Mat3(s5)); s1 += s3; });
     const rift::Mat3 l_weighted = s0;
     const rift::Real l_mass = s1;
-    const rift::Mat3 l_s = ((l_mass > 0.0) ? rift::Mat3((l_weighted / l_mass)) : rift::Mat3(s5));
+    const rift::Mat3 l_s = ((l_mass > 0.0) ? rift::Mat3((((-0.5) * (l_weighted + (l_weighted).transpose())) / l_mass)) : rift::Mat3(s5));
     const rift::Real measure = symmetric_max_eigenvalue(l_s);
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
@@ -731,11 +733,12 @@ void VertexEnergyCriterion::initialise(rift::GMap& g) {
 }
 
 void VertexEnergyCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
+  memo0_.begin(g, rift::Orbit{0, 1});
   g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart d_v) {
     rift::throw_if_interrupted();
     rift::Real s0 = rift::Real(0);
     rift::Real s1 = rift::Real(0);
-    g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s2 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); const rift::Mat3 s3 = [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); const rift::Mat3 s4 = (s3 + (s3).transpose()); s0 += (((e_membrane_mu[d_f] > 0.0) && (s2 > 0.0)) ? (((((s4 * s4)).trace() / (16.0 * e_membrane_mu[d_f])) - ((e_membrane_lambda[d_f] * std::pow((2.0 * (s3).trace()), 2.0)) / ((32.0 * e_membrane_mu[d_f]) * (e_membrane_lambda[d_f] + e_membrane_mu[d_f])))) / (1.5 * s2)) : 0.0); s1 += (s2 / 6.0); });
+    for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s2 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Mat3 s3 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); const rift::Mat3 s4 = (s3 + (s3).transpose()); s0 += (((e_membrane_mu[d_f] > 0.0) && (s2 > 0.0)) ? (((((s4 * s4)).trace() / (16.0 * e_membrane_mu[d_f])) - ((e_membrane_lambda[d_f] * std::pow((2.0 * (s3).trace()), 2.0)) / ((32.0 * e_membrane_mu[d_f]) * (e_membrane_lambda[d_f] + e_membrane_mu[d_f])))) / (1.5 * s2)) : 0.0); s1 += (s2 / 6.0); });
     const rift::Real l_stored = s0;
     const rift::Real l_share = s1;
     const rift::Real measure = ((l_share > 0.0) ? (l_stored / std::sqrt(l_share)) : 0.0);
@@ -744,8 +747,8 @@ void VertexEnergyCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
     rift::TearCandidate c;
     c.at = d_v;
     c.measure = measure - threshold;
-    const rift::Mat3 s6 = (rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished();
-    const rift::Mat3 l_weighted = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s5 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); acc0 += ((s5 > 0.0) ? rift::Mat3((((collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}) * 2.0) / s5) * [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }())) : rift::Mat3(s6)); }); return acc0; }();
+    const rift::Mat3 s8 = (rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished();
+    const rift::Mat3 l_weighted = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s5 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s6 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Real { return collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}); }); const rift::Mat3 s7 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); acc0 += ((s5 > 0.0) ? rift::Mat3((((s6 * 2.0) / s5) * s7)) : rift::Mat3(s8)); }); return acc0; }();
     c.normal = symmetric_max_eigenvector(((-0.5) * (l_weighted + (l_weighted).transpose())));
     c.point = e_position[d_v];
     out.push_back(c);
@@ -1008,7 +1011,7 @@ Pack::Pack(const Params& params) : params_(params), description_("2D tearing cri
   }, kDimension, {}, {"f_membrane", "f_shear", "f_stretch"}});
   catalog_.criteria.push_back({"vertex_stress", "The vertex stress tensor (mass-weighted mean of its elements', eq. 1-2) has an eigenvalue past the threshold: split perpendicular to its eigenvector (§5.2). (on <1,2>; applies rule split_vertex)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(100.0)), "N/m", true, false},
-  }, kDimension, {}, {"corner_mass", "f_membrane", "position"}});
+  }, kDimension, {}, {"position", "corner_mass", "f_membrane"}});
   catalog_.criteria.push_back({"vertex_energy", "Griffith at the mesh scale: the strain energy of a vertex's share of its membrane triangles per unit of its size passes the toughness: split perpendicular to the largest principal stress. (on <1,2>; applies rule split_vertex)", {
     {"toughness", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N/m (energy release rate times thickness)", true, false},
   }, kDimension, {}, {"membrane_mu", "position", "f_membrane", "membrane_lambda", "corner_mass"}});

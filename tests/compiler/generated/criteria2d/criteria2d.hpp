@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rift/core/interrupt.hpp"
+#include "rift/generated/orbit_memo.hpp"
 #include "rift/gmap/gmap.hpp"
 #include "rift/pack/pack.hpp"
 #include "rift/sim/cached_interaction.hpp"
@@ -257,6 +258,10 @@ class VertexStressCriterion final : public rift::Criterion {
   rift::Embedding<rift::Real> e_corner_mass;
   rift::Embedding<rift::Vec3> e_f_membrane;
   rift::Embedding<rift::Vec3> e_position;
+  /// Values collect() computes once per orbit rift::Orbit{0, 1} it meets (rift/generated/orbit_memo.hpp).
+  mutable rift::generated::OrbitMemo memo0_;
+  mutable rift::generated::OrbitMemoValues<rift::Real> memo0_0_;
+  mutable rift::generated::OrbitMemoValues<rift::Mat3> memo0_1_;
 };
 
 /// Parameters given by the scene.
@@ -284,6 +289,10 @@ class VertexEnergyCriterion final : public rift::Criterion {
   rift::Embedding<rift::Real> e_membrane_lambda;
   rift::Embedding<rift::Real> e_membrane_mu;
   rift::Embedding<rift::Vec3> e_position;
+  /// Values collect() computes once per orbit rift::Orbit{0, 1} it meets (rift/generated/orbit_memo.hpp).
+  mutable rift::generated::OrbitMemo memo0_;
+  mutable rift::generated::OrbitMemoValues<rift::Mat3> memo0_0_;
+  mutable rift::generated::OrbitMemoValues<rift::Real> memo0_1_;
 };
 
 /// Parameters given by the scene.

@@ -426,6 +426,53 @@ void CorotationalKernel::force_targets(const Match& m, rift::Slot* out) const {
   out[3] = m.vertex_c3;
 }
 
+void CorotationalKernel::group_key(const Match& m, std::uint64_t* out) const {
+  const Columns c = columns();
+  out = rift::key_words(m.vertex_c1, out);
+  out = rift::key_words(m.vertex_c0, out);
+  out = rift::key_words(m.vertex_c2, out);
+  out = rift::key_words(m.vertex_c3, out);
+  out = rift::key_words(c.fem_b[m.orbit012_c0], out);
+  out = rift::key_words(c.fem_lambda[m.orbit012_c0], out);
+  out = rift::key_words(c.fem_mu[m.orbit012_c0], out);
+  out = rift::key_words(c.fem_volume[m.orbit012_c0], out);
+  (void)out;
+}
+
+bool CorotationalKernel::evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const {
+  Result r;
+  if (!evaluate<true>(m, in, columns(), r)) {
+    for (int i = 0; i < 4; ++i) terms[i].setZero();
+    return false;
+  }
+  terms[0] = r.f_fem_c0;
+  terms[1] = r.f_fem_c1;
+  terms[2] = r.f_fem_c2;
+  terms[3] = r.f_fem_c3;
+  return true;
+}
+
+void CorotationalKernel::store_terms(const Match& m, const rift::Vec3* terms) {
+  e_f_fem.values()[m.orbit12_c0] = terms[0];
+  e_f_fem.values()[m.orbit12_c1] = terms[1];
+  e_f_fem.values()[m.orbit12_c2] = terms[2];
+  e_f_fem.values()[m.orbit12_c3] = terms[3];
+}
+
+void CorotationalKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f) {
+  const Columns c = columns();
+  for (std::size_t i = 0; i < reps.size(); ++i) {
+    const Match& m = reps[i];
+    Result r;
+    if (!evaluate<true>(m, in, c, r)) continue;
+    const rift::Real count = counts[i];
+    f[m.vertex_c0] += count * r.f_fem_c0;
+    f[m.vertex_c1] += count * r.f_fem_c1;
+    f[m.vertex_c2] += count * r.f_fem_c2;
+    f[m.vertex_c3] += count * r.f_fem_c3;
+  }
+}
+
 void CorotationalKernel::reset_stored(const Match& m) {
   if (m.orbit12_c0 < e_f_fem.values().size()) e_f_fem.values()[m.orbit12_c0] = rift::Vec3::Zero();
   if (m.orbit12_c1 < e_f_fem.values().size()) e_f_fem.values()[m.orbit12_c1] = rift::Vec3::Zero();

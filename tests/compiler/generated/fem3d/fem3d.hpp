@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rift/core/interrupt.hpp"
+#include "rift/generated/orbit_memo.hpp"
 #include "rift/gmap/gmap.hpp"
 #include "rift/pack/pack.hpp"
 #include "rift/sim/cached_interaction.hpp"
@@ -68,6 +69,16 @@ class CorotationalKernel {
   /// them (the coloured scatter of several threads groups matches by them).
   static constexpr int kForceTerms = 4;
   void force_targets(const Match& m, rift::Slot* out) const;
+  /// Matches with equal keys give equal forces and are evaluated once
+  /// (rift/sim/match_groups.hpp): the vertex slots, then the bits of the values read.
+  static constexpr int kGroupKey = 16;
+  void group_key(const Match& m, std::uint64_t* out) const;
+  /// One match's kForceTerms forces (zero where a `when` fails; false then).
+  bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
+  /// Stores forces computed by evaluate_terms into m's stored-force slots.
+  void store_terms(const Match& m, const rift::Vec3* terms);
+  /// The force pass over groups: adds counts[i] times the forces of reps[i].
+  void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f);
   void reset_stored(const Match& m);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).

@@ -171,14 +171,16 @@ void StretchKernel::initialise(rift::GMap& g) {
   e_stretch_k = require_embedding<rift::Real>(g, "stretch_k", "interaction 'stretch'");
   e_stretch_rest = require_embedding<rift::Real>(g, "stretch_rest", "interaction 'stretch'");
   // init stretch_k(a), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
+  g.for_each_cell(kSupport, [&](rift::Dart cell) {
+    const rift::Dart support = support_dart(g, cell);
     rift::Dart darts[2];
     if (!find(g, support, darts)) return;
     const rift::Dart d_a = darts[0];
     e_stretch_k[d_a] = p_.stiffness;
   });
   // init stretch_rest(a), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
+  g.for_each_cell(kSupport, [&](rift::Dart cell) {
+    const rift::Dart support = support_dart(g, cell);
     rift::Dart darts[2];
     if (!find(g, support, darts)) return;
     const rift::Dart d_a = darts[0];
@@ -196,6 +198,16 @@ bool StretchKernel::match(const rift::GMap& g, rift::Dart support, Match& m) con
   m.dart_a = e_f_stretch.slot(darts[0]);
   m.dart_b = e_f_stretch.slot(darts[1]);
   return true;
+}
+
+rift::Dart StretchKernel::support_dart(const rift::GMap& g, rift::Dart d) const {
+  return smallest_support_dart<2>(g, d, kSupport, [&](rift::Dart x, rift::Slot* key) {
+    Match m{};
+    if (!match(g, x, m)) return false;
+    key[0] = m.vertex_b;
+    key[1] = m.vertex_a;
+    return true;
+  });
 }
 
 StretchKernel::Columns StretchKernel::columns() const {
@@ -240,6 +252,43 @@ void StretchKernel::add_forces_all(std::span<const Match> ms, const rift::ForceI
 void StretchKernel::force_targets(const Match& m, rift::Slot* out) const {
   out[0] = m.vertex_a;
   out[1] = m.vertex_b;
+}
+
+void StretchKernel::group_key(const Match& m, std::uint64_t* out) const {
+  const Columns c = columns();
+  out = rift::key_words(m.vertex_b, out);
+  out = rift::key_words(m.vertex_a, out);
+  out = rift::key_words(c.stretch_k[m.orbit0_a], out);
+  out = rift::key_words(c.stretch_rest[m.orbit0_a], out);
+  (void)out;
+}
+
+bool StretchKernel::evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const {
+  Result r;
+  if (!evaluate<true>(m, in, columns(), r)) {
+    for (int i = 0; i < 2; ++i) terms[i].setZero();
+    return false;
+  }
+  terms[0] = r.f_stretch_a;
+  terms[1] = r.f_stretch_b;
+  return true;
+}
+
+void StretchKernel::store_terms(const Match& m, const rift::Vec3* terms) {
+  e_f_stretch.values()[m.dart_a] = terms[0];
+  e_f_stretch.values()[m.dart_b] = terms[1];
+}
+
+void StretchKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f) {
+  const Columns c = columns();
+  for (std::size_t i = 0; i < reps.size(); ++i) {
+    const Match& m = reps[i];
+    Result r;
+    if (!evaluate<true>(m, in, c, r)) continue;
+    const rift::Real count = counts[i];
+    f[m.vertex_a] += count * r.f_stretch_a;
+    f[m.vertex_b] += count * r.f_stretch_b;
+  }
 }
 
 void StretchKernel::reset_stored(const Match& m) {
@@ -486,6 +535,52 @@ void ShearKernel::force_targets(const Match& m, rift::Slot* out) const {
   out[1] = m.vertex_c2;
   out[2] = m.vertex_c1;
   out[3] = m.vertex_c3;
+}
+
+void ShearKernel::group_key(const Match& m, std::uint64_t* out) const {
+  const Columns c = columns();
+  out = rift::key_words(m.vertex_c2, out);
+  out = rift::key_words(m.vertex_c0, out);
+  out = rift::key_words(m.vertex_c3, out);
+  out = rift::key_words(m.vertex_c1, out);
+  out = rift::key_words(c.shear_k[m.orbit01_c0], out);
+  out = rift::key_words(c.shear_rest02[m.orbit01_c0], out);
+  out = rift::key_words(c.shear_rest13[m.orbit01_c0], out);
+  (void)out;
+}
+
+bool ShearKernel::evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const {
+  Result r;
+  if (!evaluate<true>(m, in, columns(), r)) {
+    for (int i = 0; i < 4; ++i) terms[i].setZero();
+    return false;
+  }
+  terms[0] = r.f_shear_c0;
+  terms[1] = r.f_shear_c2;
+  terms[2] = r.f_shear_c1;
+  terms[3] = r.f_shear_c3;
+  return true;
+}
+
+void ShearKernel::store_terms(const Match& m, const rift::Vec3* terms) {
+  e_f_shear.values()[m.orbit1_c0] = terms[0];
+  e_f_shear.values()[m.orbit1_c2] = terms[1];
+  e_f_shear.values()[m.orbit1_c1] = terms[2];
+  e_f_shear.values()[m.orbit1_c3] = terms[3];
+}
+
+void ShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f) {
+  const Columns c = columns();
+  for (std::size_t i = 0; i < reps.size(); ++i) {
+    const Match& m = reps[i];
+    Result r;
+    if (!evaluate<true>(m, in, c, r)) continue;
+    const rift::Real count = counts[i];
+    f[m.vertex_c0] += count * r.f_shear_c0;
+    f[m.vertex_c2] += count * r.f_shear_c2;
+    f[m.vertex_c1] += count * r.f_shear_c1;
+    f[m.vertex_c3] += count * r.f_shear_c3;
+  }
 }
 
 void ShearKernel::reset_stored(const Match& m) {
@@ -2034,6 +2129,70 @@ void VolumeShearKernel::force_targets(const Match& m, rift::Slot* out) const {
   out[5] = m.vertex_s02;
   out[6] = m.vertex_b6;
   out[7] = m.vertex_s12;
+}
+
+void VolumeShearKernel::group_key(const Match& m, std::uint64_t* out) const {
+  const Columns c = columns();
+  out = rift::key_words(m.vertex_s22, out);
+  out = rift::key_words(m.vertex_b0, out);
+  out = rift::key_words(m.vertex_s32, out);
+  out = rift::key_words(m.vertex_b2, out);
+  out = rift::key_words(m.vertex_s02, out);
+  out = rift::key_words(m.vertex_b4, out);
+  out = rift::key_words(m.vertex_s12, out);
+  out = rift::key_words(m.vertex_b6, out);
+  out = rift::key_words(c.vshear_k[m.orbit012_b0], out);
+  out = rift::key_words(c.vshear_rest0[m.orbit012_b0], out);
+  out = rift::key_words(c.vshear_rest1[m.orbit012_b0], out);
+  out = rift::key_words(c.vshear_rest2[m.orbit012_b0], out);
+  out = rift::key_words(c.vshear_rest3[m.orbit012_b0], out);
+  (void)out;
+}
+
+bool VolumeShearKernel::evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const {
+  Result r;
+  if (!evaluate<true>(m, in, columns(), r)) {
+    for (int i = 0; i < 8; ++i) terms[i].setZero();
+    return false;
+  }
+  terms[0] = r.f_volume_shear_b0;
+  terms[1] = r.f_volume_shear_s22;
+  terms[2] = r.f_volume_shear_b2;
+  terms[3] = r.f_volume_shear_s32;
+  terms[4] = r.f_volume_shear_b4;
+  terms[5] = r.f_volume_shear_s02;
+  terms[6] = r.f_volume_shear_b6;
+  terms[7] = r.f_volume_shear_s12;
+  return true;
+}
+
+void VolumeShearKernel::store_terms(const Match& m, const rift::Vec3* terms) {
+  e_f_volume_shear.values()[m.orbit12_b0] = terms[0];
+  e_f_volume_shear.values()[m.orbit12_s22] = terms[1];
+  e_f_volume_shear.values()[m.orbit12_b2] = terms[2];
+  e_f_volume_shear.values()[m.orbit12_s32] = terms[3];
+  e_f_volume_shear.values()[m.orbit12_b4] = terms[4];
+  e_f_volume_shear.values()[m.orbit12_s02] = terms[5];
+  e_f_volume_shear.values()[m.orbit12_b6] = terms[6];
+  e_f_volume_shear.values()[m.orbit12_s12] = terms[7];
+}
+
+void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f) {
+  const Columns c = columns();
+  for (std::size_t i = 0; i < reps.size(); ++i) {
+    const Match& m = reps[i];
+    Result r;
+    if (!evaluate<true>(m, in, c, r)) continue;
+    const rift::Real count = counts[i];
+    f[m.vertex_b0] += count * r.f_volume_shear_b0;
+    f[m.vertex_s22] += count * r.f_volume_shear_s22;
+    f[m.vertex_b2] += count * r.f_volume_shear_b2;
+    f[m.vertex_s32] += count * r.f_volume_shear_s32;
+    f[m.vertex_b4] += count * r.f_volume_shear_b4;
+    f[m.vertex_s02] += count * r.f_volume_shear_s02;
+    f[m.vertex_b6] += count * r.f_volume_shear_b6;
+    f[m.vertex_s12] += count * r.f_volume_shear_s12;
+  }
 }
 
 void VolumeShearKernel::reset_stored(const Match& m) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rift/core/interrupt.hpp"
+#include "rift/generated/orbit_memo.hpp"
 #include "rift/gmap/gmap.hpp"
 #include "rift/pack/pack.hpp"
 #include "rift/sim/cached_interaction.hpp"
@@ -57,12 +58,25 @@ class StretchKernel {
   /// Declares the pack's embeddings the map lacks, binds them and runs the interaction's inits.
   void initialise(rift::GMap& g);
   bool match(const rift::GMap& g, rift::Dart support, Match& m) const;
+  /// The dart of d's support orbit to match from: the one binding the smallest vertex
+  /// slots first (the inits use it, and so does the simulator for a new orbit).
+  rift::Dart support_dart(const rift::GMap& g, rift::Dart d) const;
   /// The force pass over every match: adds each force to f (and stores it when `store`).
   void add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store);
   /// The vertex slots of a match's kForceTerms forces, in the order add_forces_all adds
   /// them (the coloured scatter of several threads groups matches by them).
   static constexpr int kForceTerms = 2;
   void force_targets(const Match& m, rift::Slot* out) const;
+  /// Matches with equal keys give equal forces and are evaluated once
+  /// (rift/sim/match_groups.hpp): the vertex slots, then the bits of the values read.
+  static constexpr int kGroupKey = 4;
+  void group_key(const Match& m, std::uint64_t* out) const;
+  /// One match's kForceTerms forces (zero where a `when` fails; false then).
+  bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
+  /// Stores forces computed by evaluate_terms into m's stored-force slots.
+  void store_terms(const Match& m, const rift::Vec3* terms);
+  /// The force pass over groups: adds counts[i] times the forces of reps[i].
+  void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f);
   void reset_stored(const Match& m);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).
@@ -140,6 +154,16 @@ class ShearKernel {
   /// them (the coloured scatter of several threads groups matches by them).
   static constexpr int kForceTerms = 4;
   void force_targets(const Match& m, rift::Slot* out) const;
+  /// Matches with equal keys give equal forces and are evaluated once
+  /// (rift/sim/match_groups.hpp): the vertex slots, then the bits of the values read.
+  static constexpr int kGroupKey = 7;
+  void group_key(const Match& m, std::uint64_t* out) const;
+  /// One match's kForceTerms forces (zero where a `when` fails; false then).
+  bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
+  /// Stores forces computed by evaluate_terms into m's stored-force slots.
+  void store_terms(const Match& m, const rift::Vec3* terms);
+  /// The force pass over groups: adds counts[i] times the forces of reps[i].
+  void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f);
   void reset_stored(const Match& m);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).
@@ -230,6 +254,16 @@ class VolumeShearKernel {
   /// them (the coloured scatter of several threads groups matches by them).
   static constexpr int kForceTerms = 8;
   void force_targets(const Match& m, rift::Slot* out) const;
+  /// Matches with equal keys give equal forces and are evaluated once
+  /// (rift/sim/match_groups.hpp): the vertex slots, then the bits of the values read.
+  static constexpr int kGroupKey = 13;
+  void group_key(const Match& m, std::uint64_t* out) const;
+  /// One match's kForceTerms forces (zero where a `when` fails; false then).
+  bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
+  /// Stores forces computed by evaluate_terms into m's stored-force slots.
+  void store_terms(const Match& m, const rift::Vec3* terms);
+  /// The force pass over groups: adds counts[i] times the forces of reps[i].
+  void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f);
   void reset_stored(const Match& m);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).

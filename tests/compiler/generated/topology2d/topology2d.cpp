@@ -214,6 +214,7 @@ bool apply_split_vertex(rift::GMap& g, std::span<const rift::Dart> hooks, const 
     for (const rift::Dart d_f : each) {
       if (!g.is_alive(d_f)) continue;
       e_side[d_f] = ((rift::Vec3(collect_mean(g, e_position, d_f, rift::Orbit{0, 1}) - args.point)).dot(args.normal) >= 0.0);
+      if (touched) touched->push_back(d_f);
     }
   }
   {

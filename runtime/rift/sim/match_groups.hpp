@@ -1,0 +1,342 @@
+// Matches of one interaction that would compute the same forces, grouped so
+// that a force pass evaluates each group once (issue 12, deliverable 2).
+//
+// The paper's springs are atomic: an interior edge of a cloth carries one
+// stretch spring per face (two matches of `stretch` on the same two vertices
+// with the same stiffness and rest length), and the bending springs repeat
+// likewise. A generated kernel gives each match a *key*: the vertex slots
+// its body reads and writes forces to, in the pattern's order, then the bits
+// of every other value it reads (stiffness, rest length, ...), read through
+// the match's own slots. Two matches with equal keys run the same arithmetic
+// on the same numbers, so they give the same forces, bit for bit: the group
+// evaluates one of them (its representative), adds `count` times each force,
+// and stores the same values into every member's stored-force slots, which
+// are exactly what each member would have stored on its own. Keys are
+// compared in order, never up to a permutation of the vertices: that needs
+// no proof of symmetry (see CachedInteraction for how the two half-edges of
+// an edge still get the same order).
+//
+// Groups live in a dense array (the order of the force pass, coloured by
+// ScatterColouring like plain matches), members are linked per group, and an
+// open-addressing table finds a group from a key. After a tear the groups
+// follow the MatchCache's own changes (erased, replaced, inserted), and tell
+// an observer of the groups' dense array in turn. Entries are indices in the
+// MatchCache's dense array.
+#pragma once
+
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "rift/core/types.hpp"
+#include "rift/embed/value.hpp"
+
+namespace rift {
+
+// The words of a key (generated group_key functions write them): a slot as
+// it is, a value by its bits, so equal words mean the very same numbers.
+inline std::uint64_t* key_words(std::uint32_t slot, std::uint64_t* out) {
+  *out = slot;
+  return out + 1;
+}
+inline std::uint64_t* key_words(Real v, std::uint64_t* out) {
+  *out = std::bit_cast<std::uint64_t>(v);
+  return out + 1;
+}
+inline std::uint64_t* key_words(std::int64_t v, std::uint64_t* out) {
+  *out = static_cast<std::uint64_t>(v);
+  return out + 1;
+}
+inline std::uint64_t* key_words(Bool v, std::uint64_t* out) {
+  *out = v.value ? 1 : 0;
+  return out + 1;
+}
+inline std::uint64_t* key_words(const Vec3& v, std::uint64_t* out) {
+  for (int i = 0; i < 3; ++i)
+    out = key_words(v[i], out);
+  return out;
+}
+inline std::uint64_t* key_words(const Mat3& v, std::uint64_t* out) {
+  for (int i = 0; i < 9; ++i)
+    out = key_words(v.data()[i], out);
+  return out;
+}
+
+template <class Match>
+class MatchGroups {
+ public:
+  static constexpr std::uint32_t kNone = ~0u;
+  /// Words per key, at most this many (kernels with longer keys, e.g. a
+  /// hexahedron reading 8 vertices and 48 values, are not grouped).
+  static constexpr int kMaxKey = 64;
+
+  /// What the groups tell an observer (the scatter colouring over groups).
+  struct NoObserver {
+    /// Group g is dropped; the last group `last` then takes index g.
+    void erased(std::uint32_t /*g*/, std::uint32_t /*last*/) {}
+    /// A new group g (the last), whose representative is m.
+    void inserted(std::uint32_t /*g*/, const Match& /*m*/) {}
+  };
+
+  std::size_t size() const { return reps_.size(); }
+  /// One member's match per group (any member: they share their key).
+  std::span<const Match> representatives() const { return reps_; }
+  /// Members per group, parallel to representatives().
+  std::span<const std::uint32_t> counts() const { return count_; }
+  std::uint32_t group_of(std::uint32_t entry) const { return group_of_[entry]; }
+  /// f(entry) for each member of group g.
+  template <class F>
+  void for_each_member(std::uint32_t g, F&& f) const {
+    for (std::uint32_t e = head_[g]; e != kNone; e = next_[e])
+      f(e);
+  }
+
+  /// Groups `matches` (every entry of the cache). key(const Match&,
+  /// std::uint64_t* out) writes `words` words.
+  template <class KeyFn, class Observer>
+  void build(std::span<const Match> matches, int words, KeyFn&& key, Observer& observer) {
+    words_ = words;
+    reps_.clear();
+    count_.clear();
+    head_.clear();
+    keys_.clear();
+    group_of_.assign(matches.size(), kNone);
+    next_.assign(matches.size(), kNone);
+    // Sized for the groups as they come (add grows it), not for the
+    // matches: half as many groups as matches is the usual case.
+    table_.assign(table_size_for(0), kNone);
+    for (std::uint32_t e = 0; e < matches.size(); ++e)
+      add(e, matches[e], key, observer);
+  }
+
+  // ---- MatchCache::rematch's events, in its order; `matches` is the cache's
+  // dense array at the moment of the event (before the change it announces).
+
+  /// Entry e is dropped and the last entry `last` takes its index.
+  template <class Observer>
+  void erased(std::uint32_t e, std::uint32_t last, std::span<const Match> matches,
+              Observer& observer) {
+    remove(e, matches, observer);
+    if (e != last) {
+      // Entry `last` becomes e: relink it where it was.
+      const std::uint32_t g = group_of_[last];
+      group_of_[e] = g;
+      next_[e] = next_[last];
+      if (head_[g] == last) {
+        head_[g] = e;
+      } else {
+        std::uint32_t p = head_[g];
+        while (next_[p] != last)
+          p = next_[p];
+        next_[p] = e;
+      }
+    }
+    group_of_.pop_back();
+    next_.pop_back();
+  }
+
+  /// Entry e is matched again: `before` becomes `after`.
+  template <class KeyFn, class Observer>
+  void replaced(std::uint32_t e, const Match& before, const Match& after,
+                std::span<const Match> matches, KeyFn&& key, Observer& observer) {
+    // The group's own copy of its key, not `before`'s: a parameter changed in
+    // place (then announced as a rewrite) reads the same from both.
+    (void)before;
+    std::uint64_t b[kMaxKey];
+    key(after, b);
+    if (std::equal(b, b + words_, key_of(group_of_[e]))) {
+      // Same group; its representative may have been this entry's old match
+      // (whose slots a rewrite may have freed): take the new one.
+      reps_[group_of_[e]] = after;
+      return;
+    }
+    remove(e, matches, observer);
+    add(e, after, key, observer);
+  }
+
+  /// A new entry e (the last), matched as m.
+  template <class KeyFn, class Observer>
+  void inserted(std::uint32_t e, const Match& m, KeyFn&& key, Observer& observer) {
+    group_of_.push_back(kNone);
+    next_.push_back(kNone);
+    add(e, m, key, observer);
+  }
+
+  /// Checks the groups against the matches as they are now (for tests):
+  /// every entry in the group of its key, counts right, no two groups with
+  /// one key. Returns an empty string or what is wrong.
+  template <class KeyFn>
+  std::string check(std::span<const Match> matches, KeyFn&& key) const {
+    if (group_of_.size() != matches.size()) return "entries and matches differ in number";
+    std::vector<std::uint32_t> seen(reps_.size(), 0);
+    std::uint64_t a[kMaxKey];
+    for (std::uint32_t e = 0; e < matches.size(); ++e) {
+      const std::uint32_t g = group_of_[e];
+      if (g >= reps_.size()) return "entry " + std::to_string(e) + " has no group";
+      ++seen[g];
+      key(matches[e], a);
+      if (!std::equal(a, a + words_, key_of(g)))
+        return "entry " + std::to_string(e) + " is in a group of another key";
+    }
+    for (std::uint32_t g = 0; g < reps_.size(); ++g) {
+      std::uint32_t n = 0;
+      for_each_member(g, [&](std::uint32_t e) {
+        if (group_of_[e] == g) ++n;
+      });
+      if (n != count_[g] || seen[g] != count_[g])
+        return "group " + std::to_string(g) + " has a wrong count";
+      key(reps_[g], a);
+      if (find(a) != g) return "group " + std::to_string(g) + " is not found by its key";
+    }
+    return "";
+  }
+
+ private:
+  static std::size_t table_size_for(std::size_t n) {
+    std::size_t size = 16;
+    while (size < 2 * n + 2)
+      size *= 2;
+    return size;
+  }
+
+  std::size_t hash(const std::uint64_t* k) const {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for (int i = 0; i < words_; ++i) {
+      h ^= k[i] + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+      h *= 0xbf58476d1ce4e5b9ull;
+      h ^= h >> 31;
+    }
+    return static_cast<std::size_t>(h) & (table_.size() - 1);
+  }
+
+  const std::uint64_t* key_of(std::uint32_t g) const {
+    return keys_.data() + static_cast<std::size_t>(g) * static_cast<std::size_t>(words_);
+  }
+
+  /// The group with key k, or kNone.
+  std::uint32_t find(const std::uint64_t* k) const {
+    for (std::size_t i = hash(k);; i = (i + 1) & (table_.size() - 1)) {
+      const std::uint32_t g = table_[i];
+      if (g == kNone) return kNone;
+      if (std::equal(k, k + words_, key_of(g))) return g;
+    }
+  }
+
+  /// The table's position holding group g (whose key is k).
+  std::size_t position_of(std::uint32_t g, const std::uint64_t* k) const {
+    std::size_t i = hash(k);
+    while (table_[i] != g)
+      i = (i + 1) & (table_.size() - 1);
+    return i;
+  }
+
+  void grow_table() {
+    table_.assign(table_size_for(2 * reps_.size()), kNone);
+    for (std::uint32_t g = 0; g < reps_.size(); ++g) {
+      std::size_t i = hash(key_of(g));
+      while (table_[i] != kNone)
+        i = (i + 1) & (table_.size() - 1);
+      table_[i] = g;
+    }
+  }
+
+  template <class KeyFn, class Observer>
+  void add(std::uint32_t e, const Match& m, KeyFn&& key, Observer& observer) {
+    std::uint64_t k[kMaxKey];
+    key(m, k);
+    std::uint32_t g = find(k);
+    if (g == kNone) {
+      g = static_cast<std::uint32_t>(reps_.size());
+      reps_.push_back(m);
+      count_.push_back(0);
+      head_.push_back(kNone);
+      keys_.insert(keys_.end(), k, k + words_);
+      if (2 * reps_.size() + 2 > table_.size()) {
+        grow_table();  // places g too
+      } else {
+        std::size_t i = hash(k);
+        while (table_[i] != kNone)
+          i = (i + 1) & (table_.size() - 1);
+        table_[i] = g;
+      }
+      observer.inserted(g, m);
+    }
+    group_of_[e] = g;
+    next_[e] = head_[g];
+    head_[g] = e;
+    ++count_[g];
+  }
+
+  /// Takes entry e out of its group; a group left empty is dropped.
+  template <class Observer>
+  void remove(std::uint32_t e, std::span<const Match> matches, Observer& observer) {
+    const std::uint32_t g = group_of_[e];
+    if (head_[g] == e) {
+      head_[g] = next_[e];
+    } else {
+      std::uint32_t p = head_[g];
+      while (next_[p] != e)
+        p = next_[p];
+      next_[p] = next_[e];
+    }
+    group_of_[e] = kNone;
+    next_[e] = kNone;
+    if (--count_[g] > 0) {
+      // The representative may have been e's match: take a remaining member's.
+      reps_[g] = matches[head_[g]];
+      return;
+    }
+    drop_group(g, observer);
+  }
+
+  template <class Observer>
+  void drop_group(std::uint32_t g, Observer& observer) {
+    erase_from_table(position_of(g, key_of(g)));
+    const std::uint32_t last = static_cast<std::uint32_t>(reps_.size() - 1);
+    observer.erased(g, last);
+    if (g != last) {
+      table_[position_of(last, key_of(last))] = g;
+      std::copy(key_of(last), key_of(last) + words_,
+                keys_.begin() + static_cast<std::ptrdiff_t>(g) * words_);
+      reps_[g] = reps_[last];
+      count_[g] = count_[last];
+      head_[g] = head_[last];
+      for_each_member(g, [&](std::uint32_t m) { group_of_[m] = g; });
+    }
+    reps_.pop_back();
+    count_.pop_back();
+    head_.pop_back();
+    keys_.resize(keys_.size() - static_cast<std::size_t>(words_));
+  }
+
+  /// Linear probing's deletion: later entries of the run move back into
+  /// the hole when their home is not after it.
+  void erase_from_table(std::size_t hole) {
+    const std::size_t mask = table_.size() - 1;
+    table_[hole] = kNone;
+    for (std::size_t i = (hole + 1) & mask; table_[i] != kNone; i = (i + 1) & mask) {
+      const std::size_t home = hash(key_of(table_[i]));
+      // Moves back when home is cyclically outside (hole, i].
+      const bool between = hole <= i ? (hole < home && home <= i) : (hole < home || home <= i);
+      if (!between) {
+        table_[hole] = table_[i];
+        table_[i] = kNone;
+        hole = i;
+      }
+    }
+  }
+
+  int words_ = 0;
+  std::vector<Match> reps_;
+  std::vector<std::uint32_t> count_;
+  std::vector<std::uint32_t> head_;      ///< per group: its first member
+  std::vector<std::uint64_t> keys_;      ///< per group: its key (words_ words), as grouped
+  std::vector<std::uint32_t> group_of_;  ///< per entry
+  std::vector<std::uint32_t> next_;      ///< per entry: the next member of its group
+  std::vector<std::uint32_t> table_;     ///< open addressing: group ids by key
+};
+
+}  // namespace rift

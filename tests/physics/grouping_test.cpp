@@ -1,0 +1,303 @@
+// Identical matches evaluated once (runtime/rift/sim/match_groups.hpp, issue
+// 12 deliverable 2): the grouped force pass gives the forces of the
+// ungrouped one (to rounding), stores every member's atomic forces exactly,
+// keeps apart matches whose parameters differ, and follows tears.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "physics_setup.hpp"
+#include "rift/sim/match_groups.hpp"
+
+namespace rift::physics_test {
+namespace {
+
+using Stretch2d = packs::mass_spring2d::StretchInteraction;
+using Bend2d = packs::mass_spring2d::BendInteraction;
+
+std::unique_ptr<Simulation> make(GMap map, const std::vector<Use>& interactions, bool grouped,
+                                 const std::vector<Use>& criteria = {}) {
+  SimSetup setup;
+  setup.settings.group_interactions = grouped;
+  setup.interactions = interactions;
+  setup.criteria = criteria;
+  return simulate(std::move(map), setup);
+}
+
+/// A random deformation and velocity, the same for any simulation of the
+/// same mesh (slots are assigned in the same order).
+void deform(Simulation& sim, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<Real> u(-1, 1);
+  auto& x = sim.position().values();
+  auto& v = sim.velocity().values();
+  for (std::size_t s = 0; s < x.size(); ++s) {
+    x[s] += 0.05 * Vec3(u(rng), u(rng), u(rng));
+    v[s] = Vec3(u(rng), u(rng), u(rng));
+  }
+}
+
+Real largest(const std::vector<Vec3>& f) {
+  Real m = 0;
+  for (const Vec3& x : f)
+    m = std::max(m, x.norm());
+  return m;
+}
+
+std::size_t evaluated(const Simulation& sim) {
+  std::size_t n = 0;
+  for (const auto& m : sim.force_models())
+    n += m->evaluated_matches();
+  return n;
+}
+std::size_t matched(const Simulation& sim) {
+  std::size_t n = 0;
+  for (const auto& m : sim.force_models())
+    n += m->active_matches();
+  return n;
+}
+
+/// The forces of a grouped and an ungrouped simulation of one map, deformed
+/// alike: equal to 1e-12 of the largest; then a storing pass, whose stored
+/// atomic forces must be equal dart by dart, bit for bit (each match is
+/// evaluated from the same dart either way, and a group's members share
+/// their key, so their stored values are each member's own).
+void expect_same(Simulation& grouped, Simulation& plain, const std::vector<std::string>& stored,
+                 unsigned seed) {
+  deform(grouped, seed);
+  deform(plain, seed);
+  const std::vector<Vec3> fg = internal_forces(grouped);
+  const std::vector<Vec3> fp = internal_forces(plain);
+  ASSERT_EQ(fg.size(), fp.size());
+  const Real tol = 1e-12 * largest(fp);
+  ASSERT_GT(largest(fp), 0);
+  for (std::size_t s = 0; s < fp.size(); ++s)
+    ASSERT_LE((fg[s] - fp[s]).norm(), tol) << "vertex slot " << s << ", seed " << seed;
+  for (Simulation* sim : {&grouped, &plain}) {
+    std::vector<Vec3> f(sim->position().values().size(), Vec3::Zero());
+    const ForceInput in{sim->position().values().data(), sim->velocity().values().data()};
+    for (const auto& m : sim->force_models())
+      m->add_forces(in, f.data(), true);
+  }
+  for (const std::string& name : stored) {
+    const auto a = grouped.map().embedding<Vec3>(name);
+    const auto b = plain.map().embedding<Vec3>(name);
+    ASSERT_TRUE(a && b) << name;
+    ASSERT_EQ(a.values().size(), b.values().size()) << name;
+    std::size_t nonzero = 0;
+    for (std::size_t s = 0; s < a.values().size(); ++s) {
+      ASSERT_EQ(a.values()[s], b.values()[s]) << name << " slot " << s << ", seed " << seed;
+      nonzero += a.values()[s] != Vec3::Zero() ? 1 : 0;
+    }
+    EXPECT_GT(nonzero, 0u) << name;
+  }
+}
+
+/// Cuts the map along `cuts` random interior (n-1)-cells (an edge of a
+/// surface, a face of a volume): the same cells in both simulations, whose
+/// maps were built alike, then announced like a tear.
+void cut_alike(Simulation& grouped, Simulation& plain, int cuts, unsigned seed) {
+  GMap& g = grouped.map();
+  const int n = g.dimension();
+  const Orbit cell = Orbit::cell(n - 1, n);  // the cut cell, both sides
+  std::mt19937 rng(seed);
+  for (int c = 0; c < cuts; ++c) {
+    Dart d = kNoDart;
+    for (int attempt = 0; attempt < 10000 && d == kNoDart; ++attempt) {
+      const Dart x = static_cast<Dart>(rng() % g.capacity());
+      if (g.is_alive(x) && !g.is_free(x, n)) d = x;
+    }
+    ASSERT_NE(d, kNoDart);
+    std::vector<Dart> touched;
+    g.for_each_in_orbit(d, cell, [&](Dart x) { touched.push_back(x); });
+    for (Simulation* sim : {&grouped, &plain}) {
+      sim->map().unsew(d, n);
+      ASSERT_TRUE(sim->map().is_valid());
+      sim->on_topology_changed(touched);
+    }
+  }
+}
+
+/// Grouped and ungrouped simulations of one mesh give the same forces and
+/// store the same atomic forces, before and after random cuts.
+void expect_same_forces(const MeshData& mesh, const std::vector<Use>& interactions,
+                        const std::vector<std::string>& stored) {
+  auto grouped = make(assemble_gmap(mesh), interactions, true);
+  auto plain = make(assemble_gmap(mesh), interactions, false);
+  EXPECT_EQ(matched(*grouped), matched(*plain));
+  EXPECT_LT(evaluated(*grouped), evaluated(*plain)) << "nothing was grouped";
+  EXPECT_EQ(evaluated(*plain), matched(*plain));
+  for (unsigned seed = 1; seed <= 3; ++seed)
+    expect_same(*grouped, *plain, stored, seed);
+  for (unsigned round = 1; round <= 3; ++round) {
+    cut_alike(*grouped, *plain, 4, 100 + round);
+    EXPECT_EQ(matched(*grouped), matched(*plain));
+    EXPECT_LT(evaluated(*grouped), evaluated(*plain));
+    expect_same(*grouped, *plain, stored, 10 + round);
+  }
+}
+
+TEST(Grouping, QuadClothGivesTheUngroupedForces) {
+  expect_same_forces(make_grid(GridKind::Quad, 10, 10), paper_cloth_springs(),
+                     {"f_stretch", "f_shear", "f_bend"});
+}
+
+TEST(Grouping, TriangleClothGivesTheUngroupedForces) {
+  expect_same_forces(make_grid(GridKind::Tri, 10, 10),
+                     {{"stretch", {{"stiffness", 60.0}, {"damping", 0.1}}},
+                      {"bend", {{"stiffness", 10.0}, {"damping", 0.1}}},
+                      {"angular_shear", {{"stiffness", 0.1}, {"damping", 0.01}}}},
+                     {"f_stretch", "f_bend", "f_ashear", "f_ashear_end"});
+}
+
+TEST(Grouping, HexahedraGiveTheUngroupedForces) {
+  expect_same_forces(make_block(BlockKind::Hex, 3, 3, 3),
+                     {{"stretch", {{"stiffness", 60.0}, {"damping", 0.1}}},
+                      {"shear", {{"stiffness", 43.0}, {"damping", 0.1}}},
+                      {"volume_shear", {{"stiffness", 43.0}, {"damping", 0.1}}}},
+                     {"f_stretch", "f_shear", "f_volume_shear"});
+}
+
+// The paper's 10 × 10 quad cloth: 960 atomic springs (400 stretch, 360
+// bend, 100 shear matches of two diagonals each), 618 distinct ones
+// (tests/reference's cumulated cloth: 220 stretch, 200 shear, 198 bend).
+TEST(Grouping, QuadClothEvaluatesEachVertexPairOnce) {
+  auto sim = make(assemble_gmap(make_grid(GridKind::Quad, 10, 10)), paper_cloth_springs(), true);
+  EXPECT_EQ(matched(*sim), 400u + 100u + 360u);
+  EXPECT_EQ(evaluated(*sim), 220u + 100u + 198u);
+}
+
+// Every member of a group stores exactly (bit for bit) what its own
+// evaluation gives.
+TEST(Grouping, StoredAtomicForcesAreEachMembersOwn) {
+  auto sim = make(assemble_gmap(make_grid(GridKind::Quad, 6, 6)), paper_cloth_springs(), true);
+  deform(*sim, 7);
+  const ForceInput in{sim->position().values().data(), sim->velocity().values().data()};
+  std::vector<Vec3> f(sim->position().values().size(), Vec3::Zero());
+  for (const auto& m : sim->force_models())
+    m->add_forces(in, f.data(), true);
+  const auto stretch = sim->map().embedding<Vec3>("f_stretch");
+  const auto bend = sim->map().embedding<Vec3>("f_bend");
+  int checked = 0;
+  for (const auto& model : sim->force_models()) {
+    if (auto* s = dynamic_cast<Stretch2d*>(model.get())) {
+      ASSERT_TRUE(s->grouped());
+      for (const auto& m : s->cache().matches()) {
+        Vec3 t[2];
+        s->kernel().evaluate_terms(m, in, t);
+        ASSERT_EQ(stretch.values()[m.dart_a], t[0]);
+        ASSERT_EQ(stretch.values()[m.dart_b], t[1]);
+        ++checked;
+      }
+    }
+    if (auto* b = dynamic_cast<Bend2d*>(model.get())) {
+      for (const auto& m : b->cache().matches()) {
+        Vec3 t[2];
+        b->kernel().evaluate_terms(m, in, t);
+        ASSERT_EQ(bend.values()[m.dart_l], t[0]);
+        ASSERT_EQ(bend.values()[m.dart_r], t[1]);
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 100);
+}
+
+// One face's stretch spring stiffer than its twin across the edge: the two
+// no longer group, and the forces still equal the ungrouped ones.
+TEST(Grouping, DifferentParametersDoNotGroup) {
+  const MeshData mesh = make_grid(GridKind::Quad, 4, 4);
+  const std::vector<Use> springs = {{"stretch", {{"stiffness", 60.0}, {"damping", 0.1}}}};
+  auto grouped = make(assemble_gmap(mesh), springs, true);
+  auto plain = make(assemble_gmap(mesh), springs, false);
+  const std::size_t before = evaluated(*grouped);
+  // An interior half-edge: a dart whose α2 is another dart.
+  Dart edge = kNoDart;
+  grouped->map().for_each_cell(Orbit{0}, [&](Dart d) {
+    if (edge == kNoDart && grouped->map().alpha(d, 2) != d) edge = d;
+  });
+  ASSERT_NE(edge, kNoDart);
+  for (auto* sim : {grouped.get(), plain.get()}) {
+    auto k = sim->map().embedding<Real>("stretch_k");
+    k[edge] = 3 * k[edge];
+    // Parameters changed outside a rewrite are announced like a rewrite.
+    const Dart touched[] = {edge};
+    sim->on_topology_changed(touched);
+  }
+  EXPECT_EQ(evaluated(*grouped), before + 1);
+  deform(*grouped, 3);
+  deform(*plain, 3);
+  const std::vector<Vec3> fg = internal_forces(*grouped);
+  const std::vector<Vec3> fp = internal_forces(*plain);
+  for (std::size_t s = 0; s < fp.size(); ++s)
+    ASSERT_LE((fg[s] - fp[s]).norm(), 1e-12 * largest(fp)) << "slot " << s;
+}
+
+// After random tears the groups are those a fresh grouping of the matches
+// gives, and the grouped forces are the sum of every match's own.
+TEST(Grouping, GroupsFollowTears) {
+  for (GridKind kind : {GridKind::Quad, GridKind::Tri}) {
+    SimSetup setup;
+    setup.interactions = paper_cloth_springs();
+    // Triangles: no quad, no shear.
+    if (kind == GridKind::Tri) setup.interactions.erase(setup.interactions.begin() + 1);
+    setup.criteria = {{"spring_split", {{"threshold", 0.5}}}};
+    setup.settings.max_tears_per_step = 3;
+    setup.settings.dt = 1e-4;
+    auto sim = simulate(assemble_gmap(make_grid(kind, 12, 12)), setup);
+    // Stretched: every spring pulls, the criterion picks among many.
+    move_vertices(*sim, [](const Vec3& x) { return Vec3(1.3 * x.x(), 1.3 * x.y(), x.z()); });
+    for (int step = 0; step < 8; ++step) {
+      sim->step();
+      for (const auto& model : sim->force_models()) {
+        if (auto* s = dynamic_cast<Stretch2d*>(model.get())) {
+          ASSERT_EQ(s->check_groups(), "") << "step " << step;
+          const auto reps = s->groups().representatives();
+          ASSERT_EQ(s->colouring().check(
+                        reps.size(), 2,
+                        [&](std::size_t g, Slot* out) { s->kernel().force_targets(reps[g], out); }),
+                    "")
+              << "step " << step;
+          // A fresh grouping of the same matches has as many groups.
+          using Match = packs::mass_spring2d::StretchKernel::Match;
+          MatchGroups<Match> fresh;
+          MatchGroups<Match>::NoObserver none;
+          fresh.build(
+              s->cache().matches(), packs::mass_spring2d::StretchKernel::kGroupKey,
+              [&](const auto& m, std::uint64_t* out) { s->kernel().group_key(m, out); }, none);
+          ASSERT_EQ(fresh.size(), s->groups().size()) << "step " << step;
+        }
+      }
+      // Grouped forces against the plain sum of every match's own forces.
+      const ForceInput in{sim->position().values().data(), sim->velocity().values().data()};
+      std::vector<Vec3> fg(sim->position().values().size(), Vec3::Zero());
+      std::vector<Vec3> fp = fg;
+      for (const auto& model : sim->force_models()) {
+        model->add_forces(in, fg.data(), false);
+        if (auto* s = dynamic_cast<Stretch2d*>(model.get())) {
+          for (const auto& m : s->cache().matches()) {
+            Vec3 t[2];
+            s->kernel().evaluate_terms(m, in, t);
+            fp[m.vertex_a] += t[0];
+            fp[m.vertex_b] += t[1];
+          }
+        } else if (auto* b = dynamic_cast<Bend2d*>(model.get())) {
+          for (const auto& m : b->cache().matches()) {
+            Vec3 t[2];
+            b->kernel().evaluate_terms(m, in, t);
+            fp[m.vertex_l] += t[0];
+            fp[m.vertex_r] += t[1];
+          }
+        } else {
+          model->add_forces(in, fp.data(), false);  // shear: no two faces share a diagonal
+        }
+      }
+      for (std::size_t s = 0; s < fp.size(); ++s)
+        ASSERT_LE((fg[s] - fp[s]).norm(), 1e-12 * largest(fp)) << "slot " << s;
+    }
+    EXPECT_GT(sim->tears(), 0u);
+  }
+}
+
+}  // namespace
+}  // namespace rift::physics_test
