@@ -204,8 +204,8 @@ rift::Dart StretchKernel::support_dart(const rift::GMap& g, rift::Dart d) const 
   return smallest_support_dart<2>(g, d, kSupport, [&](rift::Dart x, rift::Slot* key) {
     Match m{};
     if (!match(g, x, m)) return false;
-    key[0] = m.vertex_b;
-    key[1] = m.vertex_a;
+    key[0] = m.vertex_a;
+    key[1] = m.vertex_b;
     return true;
   });
 }
@@ -256,8 +256,8 @@ void StretchKernel::force_targets(const Match& m, rift::Slot* out) const {
 
 void StretchKernel::group_key(const Match& m, std::uint64_t* out) const {
   const Columns c = columns();
-  out = rift::key_words(m.vertex_b, out);
   out = rift::key_words(m.vertex_a, out);
+  out = rift::key_words(m.vertex_b, out);
   out = rift::key_words(c.stretch_k[m.orbit0_a], out);
   out = rift::key_words(c.stretch_rest[m.orbit0_a], out);
   (void)out;
@@ -539,10 +539,10 @@ void ShearKernel::force_targets(const Match& m, rift::Slot* out) const {
 
 void ShearKernel::group_key(const Match& m, std::uint64_t* out) const {
   const Columns c = columns();
-  out = rift::key_words(m.vertex_c2, out);
   out = rift::key_words(m.vertex_c0, out);
-  out = rift::key_words(m.vertex_c3, out);
+  out = rift::key_words(m.vertex_c2, out);
   out = rift::key_words(m.vertex_c1, out);
+  out = rift::key_words(m.vertex_c3, out);
   out = rift::key_words(c.shear_k[m.orbit01_c0], out);
   out = rift::key_words(c.shear_rest02[m.orbit01_c0], out);
   out = rift::key_words(c.shear_rest13[m.orbit01_c0], out);
@@ -2133,14 +2133,14 @@ void VolumeShearKernel::force_targets(const Match& m, rift::Slot* out) const {
 
 void VolumeShearKernel::group_key(const Match& m, std::uint64_t* out) const {
   const Columns c = columns();
-  out = rift::key_words(m.vertex_s22, out);
   out = rift::key_words(m.vertex_b0, out);
-  out = rift::key_words(m.vertex_s32, out);
+  out = rift::key_words(m.vertex_s22, out);
   out = rift::key_words(m.vertex_b2, out);
-  out = rift::key_words(m.vertex_s02, out);
+  out = rift::key_words(m.vertex_s32, out);
   out = rift::key_words(m.vertex_b4, out);
-  out = rift::key_words(m.vertex_s12, out);
+  out = rift::key_words(m.vertex_s02, out);
   out = rift::key_words(m.vertex_b6, out);
+  out = rift::key_words(m.vertex_s12, out);
   out = rift::key_words(c.vshear_k[m.orbit012_b0], out);
   out = rift::key_words(c.vshear_rest0[m.orbit012_b0], out);
   out = rift::key_words(c.vshear_rest1[m.orbit012_b0], out);
