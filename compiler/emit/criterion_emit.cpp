@@ -83,6 +83,9 @@ void declare_criterion(Writer& w, const ast::Criterion& crit, const PackModel& m
     w.line("rift::Embedding<" + storage_type(model.symbols->embedding(name)->type) + "> " +
            embedding_var(name) + ";");
   }
+  // collect() is const to its callers; its cells and block lists are its scratch.
+  w.line("/// The cells collect() visits, kept while the map's links do not change.");
+  w.line("mutable rift::generated::CellCollection cells_;");
   for (std::size_t m = 0; m < plan.memos.size(); ++m) {
     const ir::OrbitMemo& memo = plan.memos[m];
     // collect() is const to its callers; the memos are its scratch, reset by each call.
@@ -127,7 +130,13 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
          "::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {");
   for (std::size_t m = 0; m < plan.memos.size(); ++m)
     w.line(memo_var(m) + ".begin(g, " + orbit_code(plan.memos[m].orbit) + ");");
-  w.open("g.for_each_cell(" + orbit_code(crit.orbit.dims) + ", [&](rift::Dart " + d + ") {");
+  // A criterion riftc proves free of shared scratch (CriterionPlan::parallel_collect)
+  // evaluates blocks of cells on every core; the candidates come out in the
+  // cells' order whatever the number of threads.
+  w.open("cells_.collect(g, " + orbit_code(crit.orbit.dims) + ", " +
+         (plan.parallel_collect ? "rift::generated::CollectOn::kEveryCore"
+                                : "rift::generated::CollectOn::kOneThread") +
+         ", out, [&](rift::Dart " + d + ", std::vector<rift::TearCandidate>& found) {");
   // One relaxed load per cell: Ctrl-C is seen inside a long pass (a cell's
   // measure may traverse a large face).
   w.line("rift::throw_if_interrupted();");
@@ -170,7 +179,7 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
       write_rendered(w, r, a.value->loc, "c." + a.name.text + " = ", plan.args[k], ";");
     }
   }
-  w.line("out.push_back(c);");
+  w.line("found.push_back(c);");
   w.close("});");
   w.close();
   w.line();

@@ -105,6 +105,7 @@ void write_header(Writer& w, const PackModel& m) {
   w.line("#include <vector>");
   w.line();
   w.line("#include \"rift/core/interrupt.hpp\"");
+  w.line("#include \"rift/generated/collect_cells.hpp\"");
   w.line("#include \"rift/generated/orbit_memo.hpp\"");
   w.line("#include \"rift/gmap/gmap.hpp\"");
   w.line("#include \"rift/pack/pack.hpp\"");

@@ -46,6 +46,12 @@ CriterionPlan plan_criterion(const ast::Criterion& crit, const std::vector<ast::
     const ast::Embedding* e = symbols.embedding(name);
     return e ? e->orbit.dims : std::vector<int>{};
   });
+  plan.parallel_collect = plan.memos.empty();
+  for (std::size_t i = 0; i < body.graph.size(); ++i) {
+    const ir::Node& n = body.graph[static_cast<ir::ExprId>(i)];
+    if (n.op == ir::Op::Fold || (n.op == ir::Op::Collect && n.orbit.size() > 2))
+      plan.parallel_collect = false;
+  }
   return plan;
 }
 

@@ -27,6 +27,11 @@ struct CriterionPlan {
   std::vector<ir::ExprId> args;
   /// What collect() computes once per orbit and collection (lower/orbit_memo.hpp).
   std::vector<ir::OrbitMemo> memos;
+  /// Whether collect() may evaluate several cells at once on several threads:
+  /// it memoises nothing and walks only orbits of at most two links, which
+  /// the map walks without marks (a mark is state of the whole map, and a fold
+  /// over sub-orbits marks the darts it has seen).
+  bool parallel_collect = false;
 };
 
 CriterionPlan plan_criterion(const ast::Criterion& crit, const std::vector<ast::Param>& rule_params,

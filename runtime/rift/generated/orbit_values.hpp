@@ -28,6 +28,22 @@ T zero() {
 /// Calls f(value) once per slot of e met in the orbit <o>(d).
 template <class T, class F>
 void for_each_value(const GMap& g, const Embedding<T>& e, Dart d, Orbit o, F&& f) {
+  // The darts of an embedding orbit share its slot. Where that orbit holds
+  // <o>(d), the walk meets one value; where it is the single dart, every dart
+  // its own: neither needs the search for values already met, which a
+  // criterion on the edges of a large cloth would otherwise pay at each of them.
+  const std::uint8_t on = e.orbit().mask();
+  if ((on & o.mask()) == o.mask()) {
+    if (e.slot(d) != kNoSlot) f(e[d]);
+    return;
+  }
+  if (on == 0) {
+    g.for_each_in_orbit(d, o, [&](Dart x) {
+      throw_if_interrupted();
+      if (e.slot(x) != kNoSlot) f(e[x]);
+    });
+    return;
+  }
   Scratch& s = scratch();
   s.seen.clear();
   g.for_each_in_orbit(d, o, [&](Dart x) {

@@ -15,6 +15,7 @@
 
 #include "rift/core/polar.hpp"
 #include "rift/core/symmetric_eigen.hpp"
+#include "rift/generated/collect_cells.hpp"
 #include "rift/generated/match_rows.hpp"
 #include "rift/generated/orbit_memo.hpp"
 #include "rift/generated/orbit_values.hpp"

@@ -1,12 +1,20 @@
 #include "rift/gmap/gmap.hpp"
 
+#include <atomic>
 #include <stdexcept>
 
 #include "rift/core/huge_pages.hpp"
 
 namespace rift {
 
-GMap::GMap(int dimension) : dimension_(dimension) {
+namespace {
+std::uint64_t next_identity() {
+  static std::atomic<std::uint64_t> next{1};
+  return next.fetch_add(1, std::memory_order_relaxed);
+}
+}  // namespace
+
+GMap::GMap(int dimension) : dimension_(dimension), identity_(next_identity()) {
   if (dimension < 1 || dimension > kMaxDimension) {
     throw std::invalid_argument("G-map dimension must be 1, 2 or 3, not " +
                                 std::to_string(dimension));
@@ -27,6 +35,7 @@ void GMap::reserve(std::size_t count) {
 }
 
 Dart GMap::create_dart() {
+  ++topology_version_;
   Dart d;
   if (!free_darts_.empty()) {
     d = free_darts_.back();
@@ -49,6 +58,7 @@ Dart GMap::create_dart() {
 }
 
 Dart GMap::create_darts(std::size_t count) {
+  ++topology_version_;
   const std::size_t first = alive_.size();
   if (first + count >= kNoDart) throw std::length_error("G-map: out of 32-bit dart indices");
   const std::size_t end = first + count;
@@ -66,6 +76,7 @@ Dart GMap::create_darts(std::size_t count) {
 
 void GMap::delete_dart(Dart d) {
   assert(is_alive(d));
+  ++topology_version_;
   for (int i = 0; i <= dimension_; ++i)
     unlink(d, i);
   for (auto& att : attachments_)
@@ -80,11 +91,13 @@ void GMap::delete_dart(Dart d) {
 
 void GMap::link(Dart a, Dart b, int i) {
   assert(is_free(a, i) && is_free(b, i));
+  ++topology_version_;
   alpha_[i][a] = b;
   alpha_[i][b] = a;
 }
 
 void GMap::unlink(Dart a, int i) {
+  ++topology_version_;
   const Dart b = alpha_[i][a];
   alpha_[i][a] = a;
   alpha_[i][b] = b;
@@ -309,6 +322,7 @@ void GMap::check_after_rewrite([[maybe_unused]] const char* what) const {
 
 std::vector<Dart> GMap::compact() {
   if (used_marks_ != 0) throw std::logic_error("G-map: compact() while marks are reserved");
+  ++topology_version_;
   const std::size_t n = alive_.size();
   std::vector<Dart> new_index(n, kNoDart);
   Dart next = 0;

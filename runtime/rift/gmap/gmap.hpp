@@ -56,6 +56,13 @@ class GMap {
 
   int dimension() const { return dimension_; }
 
+  /// Which map this is, unique in the process (kept by a move): with
+  /// topology_version(), the key of caches derived from the links (CellList).
+  std::uint64_t identity() const { return identity_; }
+  /// Changes whenever a dart is created, deleted or renumbered or a link is
+  /// set or cleared; embeddings and marks do not change it.
+  std::uint64_t topology_version() const { return topology_version_; }
+
   // ---- darts ---------------------------------------------------------------
 
   /// A new dart, free in every dimension, without embedding values.
@@ -201,6 +208,8 @@ class GMap {
   void release_scratch() const { --scratch_depth_; }
 
   int dimension_;
+  std::uint64_t identity_;
+  std::uint64_t topology_version_ = 0;
   std::array<std::vector<Dart>, kMaxDimension + 1> alpha_;
   std::vector<std::uint8_t> alive_;
   std::vector<Dart> free_darts_;

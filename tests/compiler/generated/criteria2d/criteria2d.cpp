@@ -481,7 +481,7 @@ void StretchStrainCriterion::initialise(rift::GMap& g) {
 }
 
 void StretchStrainCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  g.for_each_cell(rift::Orbit{0}, [&](rift::Dart d_a) {
+  cells_.collect(g, rift::Orbit{0}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_a, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
     const rift::Real l_l = ((e_position[g.alpha(d_a, 0)] - e_position[d_a])).norm();
     const rift::Real measure = ((e_stretch_rest[d_a] > 0.0) ? ((l_l - e_stretch_rest[d_a]) / e_stretch_rest[d_a]) : 0.0);
@@ -490,7 +490,7 @@ void StretchStrainCriterion::collect(const rift::GMap& g, std::vector<rift::Tear
     rift::TearCandidate c;
     c.at = d_a;
     c.measure = measure - threshold;
-    out.push_back(c);
+    found.push_back(c);
   });
 }
 
@@ -510,7 +510,7 @@ void StretchForceCriterion::initialise(rift::GMap& g) {
 }
 
 void StretchForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  g.for_each_cell(rift::Orbit{0}, [&](rift::Dart d_a) {
+  cells_.collect(g, rift::Orbit{0}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_a, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
     const rift::Real measure = (e_f_stretch[d_a]).norm();
     const rift::Real threshold = p_.threshold;
@@ -518,7 +518,7 @@ void StretchForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
     rift::TearCandidate c;
     c.at = d_a;
     c.measure = measure - threshold;
-    out.push_back(c);
+    found.push_back(c);
   });
 }
 
@@ -538,7 +538,7 @@ void SpringSplitCriterion::initialise(rift::GMap& g) {
 }
 
 void SpringSplitCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  g.for_each_cell(rift::Orbit{0}, [&](rift::Dart d_a) {
+  cells_.collect(g, rift::Orbit{0}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_a, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
     const rift::Real measure = (e_f_stretch[d_a]).norm();
     const rift::Real threshold = p_.threshold;
@@ -547,7 +547,7 @@ void SpringSplitCriterion::collect(const rift::GMap& g, std::vector<rift::TearCa
     c.at = d_a;
     c.measure = measure - threshold;
     c.normal = (e_f_stretch[d_a]).normalized();
-    out.push_back(c);
+    found.push_back(c);
   });
 }
 
@@ -569,7 +569,7 @@ void ShearForceCriterion::initialise(rift::GMap& g) {
 }
 
 void ShearForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  g.for_each_cell(rift::Orbit{0, 1}, [&](rift::Dart d_f) {
+  cells_.collect(g, rift::Orbit{0, 1}, rift::generated::CollectOn::kOneThread, out, [&](rift::Dart d_f, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
     const rift::Real measure = [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, (e_f_shear[d_c]).norm()); }); return acc0; }();
     const rift::Real threshold = p_.threshold;
@@ -577,7 +577,7 @@ void ShearForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCan
     rift::TearCandidate c;
     c.at = d_f;
     c.measure = measure - threshold;
-    out.push_back(c);
+    found.push_back(c);
   });
 }
 
@@ -598,7 +598,7 @@ void BendForceCriterion::initialise(rift::GMap& g) {
 }
 
 void BendForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  g.for_each_cell(rift::Orbit{2}, [&](rift::Dart d_d) {
+  cells_.collect(g, rift::Orbit{2}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_d, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
     const rift::Real measure = std::max<rift::Real>(std::max<rift::Real>((e_f_bend[g.alpha(g.alpha(d_d, 1), 0)]).norm(), (e_f_bend[g.alpha(g.alpha(g.alpha(d_d, 2), 1), 0)]).norm()), (2.0 * (e_f_abend[d_d]).norm()));
     const rift::Real threshold = p_.threshold;
@@ -606,7 +606,7 @@ void BendForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCand
     rift::TearCandidate c;
     c.at = d_d;
     c.measure = measure - threshold;
-    out.push_back(c);
+    found.push_back(c);
   });
 }
 
@@ -627,7 +627,7 @@ void ElementStressCriterion::initialise(rift::GMap& g) {
 }
 
 void ElementStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  g.for_each_cell(rift::Orbit{0, 1}, [&](rift::Dart d_f) {
+  cells_.collect(g, rift::Orbit{0, 1}, rift::generated::CollectOn::kOneThread, out, [&](rift::Dart d_f, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
     const rift::Real l_area = (0.5 * (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm());
     const rift::Mat3 l_m = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc0; }();
@@ -637,7 +637,7 @@ void ElementStressCriterion::collect(const rift::GMap& g, std::vector<rift::Tear
     rift::TearCandidate c;
     c.at = d_f;
     c.measure = measure - threshold;
-    out.push_back(c);
+    found.push_back(c);
   });
 }
 
@@ -659,7 +659,7 @@ void InteractionForceCriterion::initialise(rift::GMap& g) {
 }
 
 void InteractionForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart d_v) {
+  cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kOneThread, out, [&](rift::Dart d_v, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
     const rift::Real measure = std::max<rift::Real>([&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, std::max<rift::Real>((e_f_membrane[d_c]).norm(), (e_f_shear[d_c]).norm())); }); return acc0; }(), [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&](rift::Dart d_x) { acc0 = std::max<rift::Real>(acc0, (e_f_stretch[d_x]).norm()); }); return acc0; }());
     const rift::Real threshold = p_.threshold;
@@ -667,7 +667,7 @@ void InteractionForceCriterion::collect(const rift::GMap& g, std::vector<rift::T
     rift::TearCandidate c;
     c.at = d_v;
     c.measure = measure - threshold;
-    out.push_back(c);
+    found.push_back(c);
   });
 }
 
@@ -690,7 +690,7 @@ void VertexStressCriterion::initialise(rift::GMap& g) {
 
 void VertexStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   memo0_.begin(g, rift::Orbit{0, 1});
-  g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart d_v) {
+  cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kOneThread, out, [&](rift::Dart d_v, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
     const rift::Mat3 s5 = (rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished();
     rift::Mat3 s0 = rift::Mat3::Zero();
@@ -707,7 +707,7 @@ void VertexStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
     c.measure = measure - threshold;
     c.normal = symmetric_max_eigenvector(l_s);
     c.point = e_position[d_v];
-    out.push_back(c);
+    found.push_back(c);
   });
 }
 
@@ -734,7 +734,7 @@ void VertexEnergyCriterion::initialise(rift::GMap& g) {
 
 void VertexEnergyCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   memo0_.begin(g, rift::Orbit{0, 1});
-  g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart d_v) {
+  cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kOneThread, out, [&](rift::Dart d_v, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
     rift::Real s0 = rift::Real(0);
     rift::Real s1 = rift::Real(0);
@@ -751,7 +751,7 @@ void VertexEnergyCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
     const rift::Mat3 l_weighted = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s5 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s6 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Real { return collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}); }); const rift::Mat3 s7 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); acc0 += ((s5 > 0.0) ? rift::Mat3((((s6 * 2.0) / s5) * s7)) : rift::Mat3(s8)); }); return acc0; }();
     c.normal = symmetric_max_eigenvector(((-0.5) * (l_weighted + (l_weighted).transpose())));
     c.point = e_position[d_v];
-    out.push_back(c);
+    found.push_back(c);
   });
 }
 
@@ -774,7 +774,7 @@ void VertexSumCriterion::initialise(rift::GMap& g) {
 }
 
 void VertexSumCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart d_v) {
+  cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_v, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
     const rift::Real measure = (e_vertex_force[d_v]).norm();
     const rift::Real threshold = p_.threshold;
@@ -784,7 +784,7 @@ void VertexSumCriterion::collect(const rift::GMap& g, std::vector<rift::TearCand
     c.measure = measure - threshold;
     c.normal = (e_vertex_force[d_v]).normalized();
     c.point = e_position[d_v];
-    out.push_back(c);
+    found.push_back(c);
   });
 }
 
@@ -809,7 +809,7 @@ void AtomicEdgeCriterion::initialise(rift::GMap& g) {
 }
 
 void AtomicEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  g.for_each_cell(rift::Orbit{0, 2}, [&](rift::Dart d_a) {
+  cells_.collect(g, rift::Orbit{0, 2}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_a, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
     const rift::Vec3 s0 = e_position[g.alpha(d_a, 0)];
     const rift::Vec3 l_ab = (s0 - e_position[d_a]);
@@ -827,7 +827,7 @@ void AtomicEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCan
     rift::TearCandidate c;
     c.at = d_a;
     c.measure = measure - threshold;
-    out.push_back(c);
+    found.push_back(c);
   });
 }
 
@@ -848,7 +848,7 @@ void GlobalEdgeCriterion::initialise(rift::GMap& g) {
 }
 
 void GlobalEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  g.for_each_cell(rift::Orbit{0, 2}, [&](rift::Dart d_a) {
+  cells_.collect(g, rift::Orbit{0, 2}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_a, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
     const rift::Vec3 l_ab = (e_position[g.alpha(d_a, 0)] - e_position[d_a]);
     const rift::Vec3 l_n = (l_ab).cross(((l_ab).cross((e_position[g.alpha(g.alpha(d_a, 1), 0)] - e_position[d_a])) + ((e_position[g.alpha(g.alpha(g.alpha(d_a, 2), 1), 0)] - e_position[d_a])).cross(l_ab)));
@@ -859,7 +859,7 @@ void GlobalEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCan
     rift::TearCandidate c;
     c.at = d_a;
     c.measure = measure - threshold;
-    out.push_back(c);
+    found.push_back(c);
   });
 }
 

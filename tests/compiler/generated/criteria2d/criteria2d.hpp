@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rift/core/interrupt.hpp"
+#include "rift/generated/collect_cells.hpp"
 #include "rift/generated/orbit_memo.hpp"
 #include "rift/gmap/gmap.hpp"
 #include "rift/pack/pack.hpp"
@@ -90,6 +91,8 @@ class StretchStrainCriterion final : public rift::Criterion {
   [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_position;
   rift::Embedding<rift::Real> e_stretch_rest;
+  /// The cells collect() visits, kept while the map's links do not change.
+  mutable rift::generated::CellCollection cells_;
 };
 
 /// Parameters given by the scene.
@@ -113,6 +116,8 @@ class StretchForceCriterion final : public rift::Criterion {
   StretchForceParams p_;
   [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_f_stretch;
+  /// The cells collect() visits, kept while the map's links do not change.
+  mutable rift::generated::CellCollection cells_;
 };
 
 /// Parameters given by the scene.
@@ -137,6 +142,8 @@ class SpringSplitCriterion final : public rift::Criterion {
   SpringSplitParams p_;
   [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_f_stretch;
+  /// The cells collect() visits, kept while the map's links do not change.
+  mutable rift::generated::CellCollection cells_;
 };
 
 /// Parameters given by the scene.
@@ -160,6 +167,8 @@ class ShearForceCriterion final : public rift::Criterion {
   ShearForceParams p_;
   [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_f_shear;
+  /// The cells collect() visits, kept while the map's links do not change.
+  mutable rift::generated::CellCollection cells_;
 };
 
 /// Parameters given by the scene.
@@ -184,6 +193,8 @@ class BendForceCriterion final : public rift::Criterion {
   [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_f_abend;
   rift::Embedding<rift::Vec3> e_f_bend;
+  /// The cells collect() visits, kept while the map's links do not change.
+  mutable rift::generated::CellCollection cells_;
 };
 
 /// Parameters given by the scene.
@@ -208,6 +219,8 @@ class ElementStressCriterion final : public rift::Criterion {
   [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_f_membrane;
   rift::Embedding<rift::Vec3> e_position;
+  /// The cells collect() visits, kept while the map's links do not change.
+  mutable rift::generated::CellCollection cells_;
 };
 
 /// Parameters given by the scene.
@@ -233,6 +246,8 @@ class InteractionForceCriterion final : public rift::Criterion {
   rift::Embedding<rift::Vec3> e_f_membrane;
   rift::Embedding<rift::Vec3> e_f_shear;
   rift::Embedding<rift::Vec3> e_f_stretch;
+  /// The cells collect() visits, kept while the map's links do not change.
+  mutable rift::generated::CellCollection cells_;
 };
 
 /// Parameters given by the scene.
@@ -258,6 +273,8 @@ class VertexStressCriterion final : public rift::Criterion {
   rift::Embedding<rift::Real> e_corner_mass;
   rift::Embedding<rift::Vec3> e_f_membrane;
   rift::Embedding<rift::Vec3> e_position;
+  /// The cells collect() visits, kept while the map's links do not change.
+  mutable rift::generated::CellCollection cells_;
   /// Values collect() computes once per orbit rift::Orbit{0, 1} it meets (rift/generated/orbit_memo.hpp).
   mutable rift::generated::OrbitMemo memo0_;
   mutable rift::generated::OrbitMemoValues<rift::Real> memo0_0_;
@@ -289,6 +306,8 @@ class VertexEnergyCriterion final : public rift::Criterion {
   rift::Embedding<rift::Real> e_membrane_lambda;
   rift::Embedding<rift::Real> e_membrane_mu;
   rift::Embedding<rift::Vec3> e_position;
+  /// The cells collect() visits, kept while the map's links do not change.
+  mutable rift::generated::CellCollection cells_;
   /// Values collect() computes once per orbit rift::Orbit{0, 1} it meets (rift/generated/orbit_memo.hpp).
   mutable rift::generated::OrbitMemo memo0_;
   mutable rift::generated::OrbitMemoValues<rift::Mat3> memo0_0_;
@@ -317,6 +336,8 @@ class VertexSumCriterion final : public rift::Criterion {
   [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_position;
   rift::Embedding<rift::Vec3> e_vertex_force;
+  /// The cells collect() visits, kept while the map's links do not change.
+  mutable rift::generated::CellCollection cells_;
 };
 
 /// Parameters given by the scene.
@@ -343,6 +364,8 @@ class AtomicEdgeCriterion final : public rift::Criterion {
   rift::Embedding<rift::Vec3> e_f_shear;
   rift::Embedding<rift::Vec3> e_f_stretch;
   rift::Embedding<rift::Vec3> e_position;
+  /// The cells collect() visits, kept while the map's links do not change.
+  mutable rift::generated::CellCollection cells_;
 };
 
 /// Parameters given by the scene.
@@ -367,6 +390,8 @@ class GlobalEdgeCriterion final : public rift::Criterion {
   [[maybe_unused]] Params pack_;
   rift::Embedding<rift::Vec3> e_position;
   rift::Embedding<rift::Vec3> e_vertex_force;
+  /// The cells collect() visits, kept while the map's links do not change.
+  mutable rift::generated::CellCollection cells_;
 };
 
 /// Rule 'separate_faces' as a rift::Rule: arguments by position.

@@ -1,0 +1,153 @@
+// CellList (the cells of a map, kept while its links do not change),
+// CellCollection (a criterion's cells visited on one thread or on every core)
+// and the aggregates over orbits, whose shortcuts must count each embedding
+// orbit exactly once.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "rift/core/parallel.hpp"
+#include "rift/generated/support.hpp"
+#include "rift/gmap/cell_list.hpp"
+#include "rift/mesh/assemble.hpp"
+#include "rift/mesh/generators.hpp"
+
+namespace rift {
+namespace {
+
+std::vector<Dart> cells_by_marks(const GMap& g, Orbit o) {
+  std::vector<Dart> out;
+  g.for_each_cell(o, [&](Dart d) { out.push_back(d); });
+  return out;
+}
+
+/// Cuts the map along `count` random interior links of dimension n (unsews),
+/// as tears do.
+void cut_randomly(GMap& g, int count, std::mt19937& rng) {
+  const int n = g.dimension();
+  std::uniform_int_distribution<std::size_t> pick(0, g.capacity() - 1);
+  for (int done = 0, tries = 0; done < count && tries < 100 * count; ++tries) {
+    const Dart d = static_cast<Dart>(pick(rng));
+    if (!g.is_alive(d) || g.is_free(d, n)) continue;
+    g.unsew(d, n);
+    ++done;
+  }
+}
+
+TEST(CellList, EqualsTheMarkingWalkAndFollowsEveryChangeOfLinks) {
+  std::mt19937 rng(7);
+  for (GridKind kind : {GridKind::Quad, GridKind::Tri, GridKind::Mix}) {
+    GMap g = assemble_gmap(make_grid(kind, 12, 9));
+    CellList edges, vertices;
+    for (int round = 0; round < 4; ++round) {
+      EXPECT_EQ(edges.of(g, Orbit{0, 2}), cells_by_marks(g, Orbit{0, 2}));
+      EXPECT_EQ(vertices.of(g, Orbit{1, 2}), cells_by_marks(g, Orbit{1, 2}));
+      cut_randomly(g, 5, rng);
+    }
+    EXPECT_EQ(edges.rebuilds(), 4u);
+    // A new dart is a new cell.
+    const Dart lone = g.create_dart();
+    const std::vector<Dart>& with_lone = vertices.of(g, Orbit{1, 2});
+    EXPECT_NE(std::find(with_lone.begin(), with_lone.end(), lone), with_lone.end());
+    g.delete_dart(lone);
+    EXPECT_EQ(vertices.of(g, Orbit{1, 2}), cells_by_marks(g, Orbit{1, 2}));
+  }
+}
+
+TEST(CellList, KeptWhileOnlyValuesChangeAndRebuiltForAnotherMapOrOrbit) {
+  GMap g = assemble_gmap(make_grid(GridKind::Quad, 6, 5));
+  CellList list;
+  list.of(g, Orbit{1, 2});
+  auto x = g.embedding<Vec3>("position");
+  ASSERT_TRUE(x);
+  x[0] = Vec3(1, 2, 3);  // values and marks are not topology
+  g.for_each_cell(Orbit{0, 1}, [](Dart) {});
+  list.of(g, Orbit{1, 2});
+  EXPECT_EQ(list.rebuilds(), 1u);
+  EXPECT_EQ(list.of(g, Orbit{0, 1}), cells_by_marks(g, Orbit{0, 1}));
+  EXPECT_EQ(list.rebuilds(), 2u);
+  // Another map with the same links and version is still another map.
+  GMap h = assemble_gmap(make_grid(GridKind::Tri, 6, 5));
+  EXPECT_EQ(list.of(h, Orbit{0, 1}), cells_by_marks(h, Orbit{0, 1}));
+  EXPECT_EQ(list.rebuilds(), 3u);
+}
+
+/// A stand-in for a generated criterion: candidates at the edges whose first
+/// dart is a multiple of 3, measured by the dart, several per cell for some.
+void visit_edge(Dart d, std::vector<TearCandidate>& found) {
+  if (d % 3 != 0) return;
+  TearCandidate c;
+  c.at = d;
+  c.measure = static_cast<Real>(d);
+  found.push_back(c);
+  if (d % 7 == 0) found.push_back(c);
+}
+
+TEST(CellCollection, CandidatesInTheOrderOfTheCellsWhateverTheThreads) {
+  // Enough edges for many blocks, so that every thread gets several.
+  GMap g = assemble_gmap(make_grid(GridKind::Mix, 80, 70));
+  std::vector<TearCandidate> expected;
+  g.for_each_cell(Orbit{0, 2}, [&](Dart d) { visit_edge(d, expected); });
+  ASSERT_GT(expected.size(), 4 * kParallelBlock / 3);
+  generated::CellCollection collection;
+  for (int threads : {1, 2, 3, 8}) {
+    set_thread_count(threads);
+    for (auto on : {generated::CollectOn::kOneThread, generated::CollectOn::kEveryCore}) {
+      std::vector<TearCandidate> got(1);  // what is already there stays first
+      collection.collect(g, Orbit{0, 2}, on, got, visit_edge);
+      ASSERT_EQ(got.size(), expected.size() + 1) << threads << " threads";
+      for (std::size_t i = 0; i < expected.size(); ++i) {
+        EXPECT_EQ(got[i + 1].at, expected[i].at) << i;
+        EXPECT_EQ(got[i + 1].measure, expected[i].measure) << i;
+      }
+    }
+  }
+  set_thread_count(0);
+  EXPECT_EQ(collection.cells().rebuilds(), 1u);
+}
+
+/// Σ of an embedding over <o>(d), each of its slots once: the definition.
+template <class T>
+T sum_by_slots(const GMap& g, const Embedding<T>& e, Dart d, Orbit o) {
+  std::set<Slot> seen;
+  T sum = generated::zero<T>();
+  g.for_each_in_orbit(d, o, [&](Dart x) {
+    const Slot s = e.slot(x);
+    if (s != kNoSlot && seen.insert(s).second) sum = sum + e[x];
+  });
+  return sum;
+}
+
+TEST(OrbitValues, EveryPairOfOrbitsCountsEachEmbeddingOrbitOnce) {
+  // Embeddings on every orbit of a 3D map (the single dart, those inside the
+  // walked orbit, around it and across it), summed over every orbit, after cuts.
+  GMap g = assemble_gmap(make_block(BlockKind::Hex, 3, 2, 2));
+  std::mt19937 rng(3);
+  cut_randomly(g, 6, rng);
+  std::vector<Embedding<std::int64_t>> columns;
+  for (unsigned mask = 0; mask < 16; ++mask) {
+    const Orbit on = Orbit::from_mask(static_cast<std::uint8_t>(mask));
+    std::string name = "e";
+    name += std::to_string(mask);
+    auto e = g.add_embedding<std::int64_t>(name, on, MergePolicy::kKeepFirst, 0);
+    g.for_each_cell(on, [&](Dart d) { e[d] = static_cast<std::int64_t>(rng() % 1000); });
+    columns.push_back(e);
+  }
+  for (const auto& e : columns) {
+    for (unsigned walk = 0; walk < 16; ++walk) {
+      const Orbit o = Orbit::from_mask(static_cast<std::uint8_t>(walk));
+      for (Dart d = 0; d < g.capacity(); d += 5) {
+        if (!g.is_alive(d)) continue;
+        ASSERT_EQ(generated::collect_sum(g, e, d, o), sum_by_slots(g, e, d, o))
+            << "embedding on " << e.orbit().str() << ", walk " << o.str() << ", dart " << d;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rift
