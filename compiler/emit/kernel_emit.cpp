@@ -396,8 +396,11 @@ void write_add_forces_all(Writer& w, const Kernel& k) {
   std::set<std::string> stores;
   for (const ir::Force& f : b.forces)
     stores.insert(f.embedding);
+  // Not asked for unless storing: a column nothing reads has no storage
+  // (rift::ForceModel::set_store_forces), and values() would give it some.
   for (const std::string& e : stores)
-    w.line("rift::Vec3* const stored_" + e + " = " + embedding_var(e) + ".values().data();");
+    w.line("rift::Vec3* const stored_" + e + " = store ? " + embedding_var(e) +
+           ".values().data() : nullptr;");
   w.open("for (const Match& m : ms) {");
   w.line("Result r;");
   if (forces) {

@@ -396,7 +396,7 @@ inline bool CorotationalKernel::evaluate(const Match& m, const rift::ForceInput&
 
 void CorotationalKernel::add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store) {
   const Columns c = columns();
-  rift::Vec3* const stored_f_fem = e_f_fem.values().data();
+  rift::Vec3* const stored_f_fem = store ? e_f_fem.values().data() : nullptr;
   for (const Match& m : ms) {
     Result r;
     if (!evaluate<true>(m, in, c, r)) {
