@@ -37,6 +37,8 @@ class ExprLowering {
   ir::ExprId lower(const ast::Expr& e);
   /// `e` converted to `to` (only int -> real converts).
   ir::ExprId lower_as(const ast::Expr& e, ir::Type to);
+  /// The dart a path `node@i@j` stands for (the newest node of that name).
+  ir::Place place(const ast::Expr& e) const;
 
  private:
   ir::ExprId convert(ir::ExprId id, ir::Type to);
@@ -46,7 +48,6 @@ class ExprLowering {
   ir::ExprId fold(const ast::Expr& e);
   ir::ExprId inline_call(const ast::Expr& e, const ast::Function& f);
   int node_index(const std::string& name) const;
-  ir::Place place(const ast::Expr& e) const;
 
   ir::Graph& g_;
   std::vector<std::string>& nodes_;
