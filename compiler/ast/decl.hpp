@@ -241,4 +241,11 @@ struct File {
   std::vector<Criterion> criteria;
 };
 
+/// A pack of functions only: a library, which reads no G-map (so any
+/// dimension may include it) and need not call what it declares.
+inline bool declares_only_functions(const File& f) {
+  return !f.functions.empty() && f.embeddings.empty() && f.params.empty() && f.inits.empty() &&
+         f.rules.empty() && f.scripts.empty() && f.interactions.empty() && f.criteria.empty();
+}
+
 }  // namespace rift::ast

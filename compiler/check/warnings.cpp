@@ -33,11 +33,13 @@ void check_unused(const ast::Program& program, const resolve::Symbols& symbols,
     for (const ast::Function& f : file.functions) {
       unused_lets(f.lets, diags);
       unused_params(f.params, "function", f.name.text, diags);
-      // An included pack is a library: its includers need not call all of it.
+      // An included pack, or a pack of functions only, is a library: its
+      // users need not call all of it.
+      const bool library = file.included || ast::declares_only_functions(file);
       const auto calls = symbols.calls.find(&f);
       // Not a duplicate or a built-in's name, which are errors already.
       const bool declared = symbols.function(f.name.text) == &f && !builtin(f.name.text);
-      if (declared && !file.included && (calls == symbols.calls.end() || calls->second == 0)) {
+      if (declared && !library && (calls == symbols.calls.end() || calls->second == 0)) {
         diags.warning("unused-function", f.name.loc,
                       "function '" + f.name.text + "' is never called");
       }

@@ -154,7 +154,14 @@ class Tangents {
   ExprId of(ExprId id) {
     const auto it = memo_.find(id);
     if (it != memo_.end()) return it->second;
-    const ExprId t = compute(id);
+    const auto before = static_cast<ExprId>(g_.size());
+    ExprId t = compute(id);
+    // The tangent of a function's let is named after it (t_spring_force_l).
+    if (t >= before && !g_[id].value_name.empty() && g_[t].value_name.empty()) {
+      Node named = g_[t];
+      named.value_name = "t_" + g_[id].value_name;
+      t = g_.add(std::move(named));
+    }
     memo_.emplace(id, t);
     return t;
   }

@@ -68,6 +68,9 @@ class Loader {
  private:
   void check_dimension(const ast::File& file) {
     if (!file.has_header) return;
+    // A pack of functions only reads no G-map: a pack of any dimension may
+    // include it (rules/laws.rules serves 2D and 3D), and it fixes none.
+    if (ast::declares_only_functions(file)) return;
     if (!have_dimension_) {
       have_dimension_ = true;
       program_.dimension = file.dimension;

@@ -163,4 +163,25 @@ TEST(Functions, InitRuleAndScriptComputeWhatTheirFunctionsSay) {
   EXPECT_DOUBLE_EQ(mark[d], 2.0);
 }
 
+TEST(Functions, CriterionMeasuresThroughItsFunctions) {
+  GMap g = rift::load_map("grid:quad:2x1");
+  const fp::Pack pack;
+  pack.initialise(g);
+  ComponentUse u;
+  u.name = "long_edge";
+  u.params["ratio"] = SceneParam{Value(1.5), 0};
+  auto criterion = pack.make_criterion(u);
+  criterion->initialise(g);
+  std::vector<rift::TearCandidate> found;
+  criterion->collect(g, found);
+  EXPECT_TRUE(found.empty());  // at rest every edge has ratio 1
+  // Stretch the edges at dart 0's vertex: length(difference(...)) / (2 half) passes 1.5.
+  auto position = g.embedding<Vec3>("position");
+  position[Dart{0}] += Vec3(-2.0, -2.0, 0.0);  // one slot per vertex
+  criterion->collect(g, found);
+  ASSERT_FALSE(found.empty());
+  for (const rift::TearCandidate& c : found)
+    EXPECT_GT(c.measure, 0.0);
+}
+
 }  // namespace

@@ -631,7 +631,7 @@ void ElementStressCriterion::collect(const rift::GMap& g, std::vector<rift::Tear
     rift::throw_if_interrupted();
     const rift::Real l_area = (0.5 * (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm());
     const rift::Mat3 l_m = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc0; }();
-    const rift::Real measure = ((l_area > 0.0) ? symmetric_max_eigenvalue((((-0.5) * (l_m + (l_m).transpose())) / l_area)) : 0.0);
+    const rift::Real measure = symmetric_max_eigenvalue(((l_area > 0.0) ? rift::Mat3((((-0.5) / l_area) * (l_m + (l_m).transpose()))) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished())));
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
     rift::TearCandidate c;
@@ -695,10 +695,10 @@ void VertexStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
     const rift::Mat3 s5 = (rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished();
     rift::Mat3 s0 = rift::Mat3::Zero();
     rift::Real s1 = rift::Real(0);
-    for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s2 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s3 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Real { return collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}); }); const rift::Mat3 s4 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); s0 += ((s2 > 0.0) ? rift::Mat3((((s3 * 2.0) / s2) * s4)) : rift::Mat3(s5)); s1 += s3; });
+    for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s2 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Real { return collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}); }); const rift::Real s3 = (0.5 * (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm()); const rift::Mat3 s4 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); s0 += (s2 * ((s3 > 0.0) ? rift::Mat3((((-0.5) / s3) * (s4 + (s4).transpose()))) : rift::Mat3(s5))); s1 += s2; });
     const rift::Mat3 l_weighted = s0;
     const rift::Real l_mass = s1;
-    const rift::Mat3 l_s = ((l_mass > 0.0) ? rift::Mat3((((-0.5) * (l_weighted + (l_weighted).transpose())) / l_mass)) : rift::Mat3(s5));
+    const rift::Mat3 l_s = ((l_mass > 0.0) ? rift::Mat3((l_weighted / l_mass)) : rift::Mat3(s5));
     const rift::Real measure = symmetric_max_eigenvalue(l_s);
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
@@ -1011,7 +1011,7 @@ Pack::Pack(const Params& params) : params_(params), description_("2D tearing cri
   }, kDimension, {}, {"f_membrane", "f_shear", "f_stretch"}});
   catalog_.criteria.push_back({"vertex_stress", "The vertex stress tensor (mass-weighted mean of its elements', eq. 1-2) has an eigenvalue past the threshold: split perpendicular to its eigenvector (§5.2). (on <1,2>; applies rule split_vertex)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(100.0)), "N/m", true, false},
-  }, kDimension, {}, {"position", "corner_mass", "f_membrane"}});
+  }, kDimension, {}, {"corner_mass", "f_membrane", "position"}});
   catalog_.criteria.push_back({"vertex_energy", "Griffith at the mesh scale: the strain energy of a vertex's share of its membrane triangles per unit of its size passes the toughness: split perpendicular to the largest principal stress. (on <1,2>; applies rule split_vertex)", {
     {"toughness", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N/m (energy release rate times thickness)", true, false},
   }, kDimension, {}, {"membrane_mu", "position", "f_membrane", "membrane_lambda", "corner_mass"}});

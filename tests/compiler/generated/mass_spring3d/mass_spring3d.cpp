@@ -192,8 +192,8 @@ void StretchKernel::initialise(rift::GMap& g) {
 bool StretchKernel::match(const rift::GMap& g, rift::Dart support, Match& m) const {
   rift::Dart darts[2];
   if (!find(g, support, darts)) return false;
-  m.vertex_b = e_position.slot(darts[1]);
   m.vertex_a = e_position.slot(darts[0]);
+  m.vertex_b = e_position.slot(darts[1]);
   m.orbit0_a = e_stretch_k.slot(darts[0]);
   m.dart_a = e_f_stretch.slot(darts[0]);
   m.dart_b = e_f_stretch.slot(darts[1]);
@@ -204,8 +204,8 @@ rift::Dart StretchKernel::support_dart(const rift::GMap& g, rift::Dart d) const 
   return smallest_support_dart<2>(g, d, kSupport, [&](rift::Dart x, rift::Slot* key) {
     Match m{};
     if (!match(g, x, m)) return false;
-    key[0] = m.vertex_b;
-    key[1] = m.vertex_a;
+    key[0] = m.vertex_a;
+    key[1] = m.vertex_b;
     return true;
   });
 }
@@ -216,16 +216,14 @@ StretchKernel::Columns StretchKernel::columns() const {
 
 template <bool kForces>
 inline bool StretchKernel::evaluate(const Match& m, const rift::ForceInput& in, const Columns& c, Result& r) const {
-  const rift::Vec3 l_d = (in.x[m.vertex_b] - in.x[m.vertex_a]);
-  const rift::Real l_l = (l_d).norm();
-  if (!(l_l > 0.0)) return false;
-  [[maybe_unused]] const rift::Real l_inv = (1.0 / l_l);
-  const rift::Real s0 = (l_l - c.stretch_rest[m.orbit0_a]);
-  [[maybe_unused]] const rift::Real l_t = ((c.stretch_k[m.orbit0_a] * s0) + ((p_.damping * ((in.v[m.vertex_b] - in.v[m.vertex_a])).dot(l_d)) * l_inv));
+  const rift::Vec3 spring_force_d = (in.x[m.vertex_b] - in.x[m.vertex_a]);
+  const rift::Real spring_force_l = (spring_force_d).norm();
+  const rift::Real s0 = (spring_force_l - c.stretch_rest[m.orbit0_a]);
+  const rift::Real spring_force_inv = ((spring_force_l > 0.0) ? (1.0 / spring_force_l) : 0.0);
+  [[maybe_unused]] const rift::Vec3 l_f = ((((c.stretch_k[m.orbit0_a] * s0) + ((p_.damping * ((in.v[m.vertex_b] - in.v[m.vertex_a])).dot(spring_force_d)) * spring_force_inv)) * spring_force_inv) * spring_force_d);
   if constexpr (kForces) {
-    const rift::Real s1 = (l_t * l_inv);
-    r.f_stretch_a = (s1 * l_d);
-    r.f_stretch_b = ((-s1) * l_d);
+    r.f_stretch_a = l_f;
+    r.f_stretch_b = (-l_f);
   } else {
     r.energy = (((0.5 * c.stretch_k[m.orbit0_a]) * s0) * s0);
   }
@@ -258,8 +256,8 @@ void StretchKernel::force_targets(const Match& m, rift::Slot* out) const {
 
 void StretchKernel::group_key(const Match& m, std::uint64_t* out) const {
   const Columns c = columns();
-  out = rift::key_words(m.vertex_b, out);
   out = rift::key_words(m.vertex_a, out);
+  out = rift::key_words(m.vertex_b, out);
   out = rift::key_words(c.stretch_k[m.orbit0_a], out);
   out = rift::key_words(c.stretch_rest[m.orbit0_a], out);
   (void)out;
@@ -304,8 +302,8 @@ rift::Real StretchKernel::energy(const Match& m, const rift::ForceInput& in) con
 }
 
 void StretchKernel::vertex_slots(const Match& m, rift::Slot* out) const {
-  out[0] = m.vertex_b;
-  out[1] = m.vertex_a;
+  out[0] = m.vertex_a;
+  out[1] = m.vertex_b;
 }
 
 [[gnu::flatten]] void StretchKernel::jacobian([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, rift::Mat3* dfdx, rift::Mat3* dfdv) {
@@ -314,15 +312,16 @@ void StretchKernel::vertex_slots(const Match& m, rift::Slot* out) const {
     dfdv[b].setZero();
   }
   [[maybe_unused]] const Columns c = columns();
-  [[maybe_unused]] const rift::Vec3 l_d = (in.x[m.vertex_b] - in.x[m.vertex_a]);
-  [[maybe_unused]] const rift::Real l_l = (l_d).norm();
-  if (!(l_l > 0.0)) return;
-  [[maybe_unused]] const rift::Real l_inv = (1.0 / l_l);
+  const rift::Vec3 spring_force_d = (in.x[m.vertex_b] - in.x[m.vertex_a]);
+  const rift::Real spring_force_l = (spring_force_d).norm();
   const rift::Vec3 s0 = (in.v[m.vertex_b] - in.v[m.vertex_a]);
-  const rift::Real s1 = (p_.damping * (s0).dot(l_d));
-  [[maybe_unused]] const rift::Real l_t = ((c.stretch_k[m.orbit0_a] * (l_l - c.stretch_rest[m.orbit0_a])) + (s1 * l_inv));
-  const rift::Real s2 = (l_t * l_inv);
-  const rift::Real s3 = (-s2);
+  const rift::Real s1 = (p_.damping * (s0).dot(spring_force_d));
+  const bool s2 = (spring_force_l > 0.0);
+  const rift::Real s3 = (1.0 / spring_force_l);
+  const rift::Real spring_force_inv = (s2 ? s3 : 0.0);
+  const rift::Real spring_force_t = ((c.stretch_k[m.orbit0_a] * (spring_force_l - c.stretch_rest[m.orbit0_a])) + (s1 * spring_force_inv));
+  const rift::Real s4 = (spring_force_t * spring_force_inv);
+  [[maybe_unused]] const rift::Vec3 l_f = (s4 * spring_force_d);
   #pragma GCC unroll 6
   for (int dir = 0; dir < 6; ++dir) {
     const int j = dir / 3, c3 = dir % 3;
@@ -331,13 +330,12 @@ void StretchKernel::vertex_slots(const Match& m, rift::Slot* out) const {
       tx[v].setZero();
     }
     tx[j][c3] = 1;
-    const rift::Vec3 t_l_d = (tx[0] - tx[1]);
-    const rift::Real t_l_l = ((l_d).dot(t_l_d) / l_l);
-    const rift::Real t_l_inv = ((-(l_inv * t_l_l)) / l_l);
-    const rift::Real t_l_t = ((c.stretch_k[m.orbit0_a] * t_l_l) + (((p_.damping * (s0).dot(t_l_d)) * l_inv) + (s1 * t_l_inv)));
-    const rift::Real s4 = ((t_l_t * l_inv) + (l_t * t_l_inv));
-    dfdx[2 + j].col(c3) += ((s4 * l_d) + (s2 * t_l_d));
-    dfdx[0 + j].col(c3) += (((-s4) * l_d) + (s3 * t_l_d));
+    const rift::Vec3 t_spring_force_d = (tx[1] - tx[0]);
+    const rift::Real t_spring_force_l = ((spring_force_d).dot(t_spring_force_d) / spring_force_l);
+    const rift::Real t_spring_force_inv = (s2 ? ((-(s3 * t_spring_force_l)) / spring_force_l) : 0.0);
+    const rift::Vec3 t_l_f = ((((((c.stretch_k[m.orbit0_a] * t_spring_force_l) + (((p_.damping * (s0).dot(t_spring_force_d)) * spring_force_inv) + (s1 * t_spring_force_inv))) * spring_force_inv) + (spring_force_t * t_spring_force_inv)) * spring_force_d) + (s4 * t_spring_force_d));
+    dfdx[0 + j].col(c3) += t_l_f;
+    dfdx[2 + j].col(c3) += (-t_l_f);
   }
   #pragma GCC unroll 6
   for (int dir = 0; dir < 6; ++dir) {
@@ -347,32 +345,32 @@ void StretchKernel::vertex_slots(const Match& m, rift::Slot* out) const {
       tv[v].setZero();
     }
     tv[j][c3] = 1;
-    const rift::Real t_l_t = ((p_.damping * ((tv[0] - tv[1])).dot(l_d)) * l_inv);
-    const rift::Real s5 = (t_l_t * l_inv);
-    dfdv[2 + j].col(c3) += (s5 * l_d);
-    dfdv[0 + j].col(c3) += ((-s5) * l_d);
+    const rift::Vec3 t_l_f = ((((p_.damping * ((tv[1] - tv[0])).dot(spring_force_d)) * spring_force_inv) * spring_force_inv) * spring_force_d);
+    dfdv[0 + j].col(c3) += t_l_f;
+    dfdv[2 + j].col(c3) += (-t_l_f);
   }
 }
 
 [[gnu::flatten]] void StretchKernel::jacobian_product([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, [[maybe_unused]] const rift::Vec3* px, [[maybe_unused]] const rift::Vec3* pv, rift::Vec3* out) {
   [[maybe_unused]] const Columns c = columns();
-  [[maybe_unused]] const rift::Vec3 l_d = (in.x[m.vertex_b] - in.x[m.vertex_a]);
-  [[maybe_unused]] const rift::Real l_l = (l_d).norm();
-  if (!(l_l > 0.0)) return;
-  [[maybe_unused]] const rift::Real l_inv = (1.0 / l_l);
+  const rift::Vec3 spring_force_d = (in.x[m.vertex_b] - in.x[m.vertex_a]);
+  const rift::Real spring_force_l = (spring_force_d).norm();
   const rift::Vec3 s0 = (in.v[m.vertex_b] - in.v[m.vertex_a]);
-  const rift::Real s1 = (p_.damping * (s0).dot(l_d));
-  [[maybe_unused]] const rift::Real l_t = ((c.stretch_k[m.orbit0_a] * (l_l - c.stretch_rest[m.orbit0_a])) + (s1 * l_inv));
-  [[maybe_unused]] const rift::Vec3 tx[2] = {px[m.vertex_b], px[m.vertex_a]};
-  [[maybe_unused]] const rift::Vec3 tv[2] = {pv[m.vertex_b], pv[m.vertex_a]};
-  const rift::Vec3 t_l_d = (tx[0] - tx[1]);
-  const rift::Real t_l_l = ((l_d).dot(t_l_d) / l_l);
-  const rift::Real t_l_inv = ((-(l_inv * t_l_l)) / l_l);
-  const rift::Real t_l_t = ((c.stretch_k[m.orbit0_a] * t_l_l) + (((p_.damping * (((tv[0] - tv[1])).dot(l_d) + (s0).dot(t_l_d))) * l_inv) + (s1 * t_l_inv)));
-  const rift::Real s2 = ((t_l_t * l_inv) + (l_t * t_l_inv));
-  const rift::Real s3 = (l_t * l_inv);
-  out[m.vertex_a] += ((s2 * l_d) + (s3 * t_l_d));
-  out[m.vertex_b] += (((-s2) * l_d) + ((-s3) * t_l_d));
+  const rift::Real s1 = (p_.damping * (s0).dot(spring_force_d));
+  const bool s2 = (spring_force_l > 0.0);
+  const rift::Real s3 = (1.0 / spring_force_l);
+  const rift::Real spring_force_inv = (s2 ? s3 : 0.0);
+  const rift::Real spring_force_t = ((c.stretch_k[m.orbit0_a] * (spring_force_l - c.stretch_rest[m.orbit0_a])) + (s1 * spring_force_inv));
+  const rift::Real s4 = (spring_force_t * spring_force_inv);
+  [[maybe_unused]] const rift::Vec3 l_f = (s4 * spring_force_d);
+  [[maybe_unused]] const rift::Vec3 tx[2] = {px[m.vertex_a], px[m.vertex_b]};
+  [[maybe_unused]] const rift::Vec3 tv[2] = {pv[m.vertex_a], pv[m.vertex_b]};
+  const rift::Vec3 t_spring_force_d = (tx[1] - tx[0]);
+  const rift::Real t_spring_force_l = ((spring_force_d).dot(t_spring_force_d) / spring_force_l);
+  const rift::Real t_spring_force_inv = (s2 ? ((-(s3 * t_spring_force_l)) / spring_force_l) : 0.0);
+  const rift::Vec3 t_l_f = ((((((c.stretch_k[m.orbit0_a] * t_spring_force_l) + (((p_.damping * (((tv[1] - tv[0])).dot(spring_force_d) + (s0).dot(t_spring_force_d))) * spring_force_inv) + (s1 * t_spring_force_inv))) * spring_force_inv) + (spring_force_t * t_spring_force_inv)) * spring_force_d) + (s4 * t_spring_force_d));
+  out[m.vertex_a] += t_l_f;
+  out[m.vertex_b] += (-t_l_f);
 }
 
 // ---- interaction 'shear'
@@ -467,11 +465,11 @@ void ShearKernel::initialise(rift::GMap& g) {
 bool ShearKernel::match(const rift::GMap& g, rift::Dart support, Match& m) const {
   rift::Dart darts[8];
   if (!find(g, support, darts)) return false;
-  m.vertex_c2 = e_position.slot(darts[4]);
   m.vertex_c0 = e_position.slot(darts[0]);
-  m.vertex_c3 = e_position.slot(darts[6]);
-  m.vertex_c1 = e_position.slot(darts[2]);
+  m.vertex_c2 = e_position.slot(darts[4]);
   m.orbit01_c0 = e_shear_k.slot(darts[0]);
+  m.vertex_c1 = e_position.slot(darts[2]);
+  m.vertex_c3 = e_position.slot(darts[6]);
   m.orbit1_c0 = e_f_shear.slot(darts[0]);
   m.orbit1_c2 = e_f_shear.slot(darts[4]);
   m.orbit1_c1 = e_f_shear.slot(darts[2]);
@@ -485,25 +483,24 @@ ShearKernel::Columns ShearKernel::columns() const {
 
 template <bool kForces>
 inline bool ShearKernel::evaluate(const Match& m, const rift::ForceInput& in, const Columns& c, Result& r) const {
-  const rift::Vec3 l_da = (in.x[m.vertex_c2] - in.x[m.vertex_c0]);
-  const rift::Vec3 l_db = (in.x[m.vertex_c3] - in.x[m.vertex_c1]);
-  const rift::Real l_la = (l_da).norm();
-  const rift::Real l_lb = (l_db).norm();
-  [[maybe_unused]] const rift::Real l_ia = ((l_la > 0.0) ? (1.0 / l_la) : 0.0);
-  [[maybe_unused]] const rift::Real l_ib = ((l_lb > 0.0) ? (1.0 / l_lb) : 0.0);
-  const rift::Real s0 = (l_la - c.shear_rest02[m.orbit01_c0]);
-  [[maybe_unused]] const rift::Real l_ta = ((c.shear_k[m.orbit01_c0] * s0) + ((p_.damping * ((in.v[m.vertex_c2] - in.v[m.vertex_c0])).dot(l_da)) * l_ia));
-  const rift::Real s1 = (l_lb - c.shear_rest13[m.orbit01_c0]);
-  [[maybe_unused]] const rift::Real l_tb = ((c.shear_k[m.orbit01_c0] * s1) + ((p_.damping * ((in.v[m.vertex_c3] - in.v[m.vertex_c1])).dot(l_db)) * l_ib));
-  [[maybe_unused]] const rift::Vec3 l_fa = ((l_ta * l_ia) * l_da);
-  [[maybe_unused]] const rift::Vec3 l_fb = ((l_tb * l_ib) * l_db);
+  const rift::Vec3 spring_force_d = (in.x[m.vertex_c2] - in.x[m.vertex_c0]);
+  const rift::Real spring_force_l = (spring_force_d).norm();
+  const rift::Real s0 = (spring_force_l - c.shear_rest02[m.orbit01_c0]);
+  const rift::Real spring_force_inv = ((spring_force_l > 0.0) ? (1.0 / spring_force_l) : 0.0);
+  [[maybe_unused]] const rift::Vec3 l_fa = ((((c.shear_k[m.orbit01_c0] * s0) + ((p_.damping * ((in.v[m.vertex_c2] - in.v[m.vertex_c0])).dot(spring_force_d)) * spring_force_inv)) * spring_force_inv) * spring_force_d);
+  const rift::Vec3 spring_force_d_2 = (in.x[m.vertex_c3] - in.x[m.vertex_c1]);
+  const rift::Real spring_force_l_2 = (spring_force_d_2).norm();
+  const rift::Real s1 = (spring_force_l_2 - c.shear_rest13[m.orbit01_c0]);
+  const rift::Real spring_force_inv_2 = ((spring_force_l_2 > 0.0) ? (1.0 / spring_force_l_2) : 0.0);
+  [[maybe_unused]] const rift::Vec3 l_fb = ((((c.shear_k[m.orbit01_c0] * s1) + ((p_.damping * ((in.v[m.vertex_c3] - in.v[m.vertex_c1])).dot(spring_force_d_2)) * spring_force_inv_2)) * spring_force_inv_2) * spring_force_d_2);
   if constexpr (kForces) {
     r.f_shear_c0 = l_fa;
     r.f_shear_c2 = (-l_fa);
     r.f_shear_c1 = l_fb;
     r.f_shear_c3 = (-l_fb);
   } else {
-    r.energy = ((0.5 * c.shear_k[m.orbit01_c0]) * ((s0 * s0) + (s1 * s1)));
+    const rift::Real s2 = (0.5 * c.shear_k[m.orbit01_c0]);
+    r.energy = (((s2 * s0) * s0) + ((s2 * s1) * s1));
   }
   return true;
 }
@@ -542,10 +539,10 @@ void ShearKernel::force_targets(const Match& m, rift::Slot* out) const {
 
 void ShearKernel::group_key(const Match& m, std::uint64_t* out) const {
   const Columns c = columns();
-  out = rift::key_words(m.vertex_c2, out);
   out = rift::key_words(m.vertex_c0, out);
-  out = rift::key_words(m.vertex_c3, out);
+  out = rift::key_words(m.vertex_c2, out);
   out = rift::key_words(m.vertex_c1, out);
+  out = rift::key_words(m.vertex_c3, out);
   out = rift::key_words(c.shear_k[m.orbit01_c0], out);
   out = rift::key_words(c.shear_rest02[m.orbit01_c0], out);
   out = rift::key_words(c.shear_rest13[m.orbit01_c0], out);
@@ -599,10 +596,10 @@ rift::Real ShearKernel::energy(const Match& m, const rift::ForceInput& in) const
 }
 
 void ShearKernel::vertex_slots(const Match& m, rift::Slot* out) const {
-  out[0] = m.vertex_c2;
-  out[1] = m.vertex_c0;
-  out[2] = m.vertex_c3;
-  out[3] = m.vertex_c1;
+  out[0] = m.vertex_c0;
+  out[1] = m.vertex_c2;
+  out[2] = m.vertex_c1;
+  out[3] = m.vertex_c3;
 }
 
 [[gnu::flatten]] void ShearKernel::jacobian([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, rift::Mat3* dfdx, rift::Mat3* dfdv) {
@@ -611,26 +608,26 @@ void ShearKernel::vertex_slots(const Match& m, rift::Slot* out) const {
     dfdv[b].setZero();
   }
   [[maybe_unused]] const Columns c = columns();
-  [[maybe_unused]] const rift::Vec3 l_da = (in.x[m.vertex_c2] - in.x[m.vertex_c0]);
-  [[maybe_unused]] const rift::Vec3 l_db = (in.x[m.vertex_c3] - in.x[m.vertex_c1]);
-  [[maybe_unused]] const rift::Real l_la = (l_da).norm();
-  [[maybe_unused]] const rift::Real l_lb = (l_db).norm();
-  const bool s0 = (l_la > 0.0);
-  const rift::Real s1 = (1.0 / l_la);
-  [[maybe_unused]] const rift::Real l_ia = (s0 ? s1 : 0.0);
-  const bool s2 = (l_lb > 0.0);
-  const rift::Real s3 = (1.0 / l_lb);
-  [[maybe_unused]] const rift::Real l_ib = (s2 ? s3 : 0.0);
-  const rift::Vec3 s4 = (in.v[m.vertex_c2] - in.v[m.vertex_c0]);
-  const rift::Real s5 = (p_.damping * (s4).dot(l_da));
-  [[maybe_unused]] const rift::Real l_ta = ((c.shear_k[m.orbit01_c0] * (l_la - c.shear_rest02[m.orbit01_c0])) + (s5 * l_ia));
-  const rift::Vec3 s6 = (in.v[m.vertex_c3] - in.v[m.vertex_c1]);
-  const rift::Real s7 = (p_.damping * (s6).dot(l_db));
-  [[maybe_unused]] const rift::Real l_tb = ((c.shear_k[m.orbit01_c0] * (l_lb - c.shear_rest13[m.orbit01_c0])) + (s7 * l_ib));
-  const rift::Real s8 = (l_ta * l_ia);
-  [[maybe_unused]] const rift::Vec3 l_fa = (s8 * l_da);
-  const rift::Real s9 = (l_tb * l_ib);
-  [[maybe_unused]] const rift::Vec3 l_fb = (s9 * l_db);
+  const rift::Vec3 spring_force_d = (in.x[m.vertex_c2] - in.x[m.vertex_c0]);
+  const rift::Real spring_force_l = (spring_force_d).norm();
+  const rift::Vec3 s0 = (in.v[m.vertex_c2] - in.v[m.vertex_c0]);
+  const rift::Real s1 = (p_.damping * (s0).dot(spring_force_d));
+  const bool s2 = (spring_force_l > 0.0);
+  const rift::Real s3 = (1.0 / spring_force_l);
+  const rift::Real spring_force_inv = (s2 ? s3 : 0.0);
+  const rift::Real spring_force_t = ((c.shear_k[m.orbit01_c0] * (spring_force_l - c.shear_rest02[m.orbit01_c0])) + (s1 * spring_force_inv));
+  const rift::Real s4 = (spring_force_t * spring_force_inv);
+  [[maybe_unused]] const rift::Vec3 l_fa = (s4 * spring_force_d);
+  const rift::Vec3 spring_force_d_2 = (in.x[m.vertex_c3] - in.x[m.vertex_c1]);
+  const rift::Real spring_force_l_2 = (spring_force_d_2).norm();
+  const rift::Vec3 s5 = (in.v[m.vertex_c3] - in.v[m.vertex_c1]);
+  const rift::Real s6 = (p_.damping * (s5).dot(spring_force_d_2));
+  const bool s7 = (spring_force_l_2 > 0.0);
+  const rift::Real s8 = (1.0 / spring_force_l_2);
+  const rift::Real spring_force_inv_2 = (s7 ? s8 : 0.0);
+  const rift::Real spring_force_t_2 = ((c.shear_k[m.orbit01_c0] * (spring_force_l_2 - c.shear_rest13[m.orbit01_c0])) + (s6 * spring_force_inv_2));
+  const rift::Real s9 = (spring_force_t_2 * spring_force_inv_2);
+  [[maybe_unused]] const rift::Vec3 l_fb = (s9 * spring_force_d_2);
   #pragma GCC unroll 12
   for (int dir = 0; dir < 12; ++dir) {
     const int j = dir / 3, c3 = dir % 3;
@@ -639,20 +636,18 @@ void ShearKernel::vertex_slots(const Match& m, rift::Slot* out) const {
       tx[v].setZero();
     }
     tx[j][c3] = 1;
-    const rift::Vec3 t_l_da = (tx[0] - tx[1]);
-    const rift::Vec3 t_l_db = (tx[2] - tx[3]);
-    const rift::Real t_l_la = ((l_da).dot(t_l_da) / l_la);
-    const rift::Real t_l_lb = ((l_db).dot(t_l_db) / l_lb);
-    const rift::Real t_l_ia = (s0 ? ((-(s1 * t_l_la)) / l_la) : 0.0);
-    const rift::Real t_l_ib = (s2 ? ((-(s3 * t_l_lb)) / l_lb) : 0.0);
-    const rift::Real t_l_ta = ((c.shear_k[m.orbit01_c0] * t_l_la) + (((p_.damping * (s4).dot(t_l_da)) * l_ia) + (s5 * t_l_ia)));
-    const rift::Real t_l_tb = ((c.shear_k[m.orbit01_c0] * t_l_lb) + (((p_.damping * (s6).dot(t_l_db)) * l_ib) + (s7 * t_l_ib)));
-    const rift::Vec3 t_l_fa = ((((t_l_ta * l_ia) + (l_ta * t_l_ia)) * l_da) + (s8 * t_l_da));
-    const rift::Vec3 t_l_fb = ((((t_l_tb * l_ib) + (l_tb * t_l_ib)) * l_db) + (s9 * t_l_db));
-    dfdx[4 + j].col(c3) += t_l_fa;
-    dfdx[0 + j].col(c3) += (-t_l_fa);
-    dfdx[12 + j].col(c3) += t_l_fb;
-    dfdx[8 + j].col(c3) += (-t_l_fb);
+    const rift::Vec3 t_spring_force_d = (tx[1] - tx[0]);
+    const rift::Real t_spring_force_l = ((spring_force_d).dot(t_spring_force_d) / spring_force_l);
+    const rift::Real t_spring_force_inv = (s2 ? ((-(s3 * t_spring_force_l)) / spring_force_l) : 0.0);
+    const rift::Vec3 t_l_fa = ((((((c.shear_k[m.orbit01_c0] * t_spring_force_l) + (((p_.damping * (s0).dot(t_spring_force_d)) * spring_force_inv) + (s1 * t_spring_force_inv))) * spring_force_inv) + (spring_force_t * t_spring_force_inv)) * spring_force_d) + (s4 * t_spring_force_d));
+    const rift::Vec3 t_spring_force_d_2 = (tx[3] - tx[2]);
+    const rift::Real t_spring_force_l_2 = ((spring_force_d_2).dot(t_spring_force_d_2) / spring_force_l_2);
+    const rift::Real t_spring_force_inv_2 = (s7 ? ((-(s8 * t_spring_force_l_2)) / spring_force_l_2) : 0.0);
+    const rift::Vec3 t_l_fb = ((((((c.shear_k[m.orbit01_c0] * t_spring_force_l_2) + (((p_.damping * (s5).dot(t_spring_force_d_2)) * spring_force_inv_2) + (s6 * t_spring_force_inv_2))) * spring_force_inv_2) + (spring_force_t_2 * t_spring_force_inv_2)) * spring_force_d_2) + (s9 * t_spring_force_d_2));
+    dfdx[0 + j].col(c3) += t_l_fa;
+    dfdx[4 + j].col(c3) += (-t_l_fa);
+    dfdx[8 + j].col(c3) += t_l_fb;
+    dfdx[12 + j].col(c3) += (-t_l_fb);
   }
   #pragma GCC unroll 12
   for (int dir = 0; dir < 12; ++dir) {
@@ -662,51 +657,47 @@ void ShearKernel::vertex_slots(const Match& m, rift::Slot* out) const {
       tv[v].setZero();
     }
     tv[j][c3] = 1;
-    const rift::Real t_l_ta = ((p_.damping * ((tv[0] - tv[1])).dot(l_da)) * l_ia);
-    const rift::Real t_l_tb = ((p_.damping * ((tv[2] - tv[3])).dot(l_db)) * l_ib);
-    const rift::Vec3 t_l_fa = ((t_l_ta * l_ia) * l_da);
-    const rift::Vec3 t_l_fb = ((t_l_tb * l_ib) * l_db);
-    dfdv[4 + j].col(c3) += t_l_fa;
-    dfdv[0 + j].col(c3) += (-t_l_fa);
-    dfdv[12 + j].col(c3) += t_l_fb;
-    dfdv[8 + j].col(c3) += (-t_l_fb);
+    const rift::Vec3 t_l_fa = ((((p_.damping * ((tv[1] - tv[0])).dot(spring_force_d)) * spring_force_inv) * spring_force_inv) * spring_force_d);
+    const rift::Vec3 t_l_fb = ((((p_.damping * ((tv[3] - tv[2])).dot(spring_force_d_2)) * spring_force_inv_2) * spring_force_inv_2) * spring_force_d_2);
+    dfdv[0 + j].col(c3) += t_l_fa;
+    dfdv[4 + j].col(c3) += (-t_l_fa);
+    dfdv[8 + j].col(c3) += t_l_fb;
+    dfdv[12 + j].col(c3) += (-t_l_fb);
   }
 }
 
 [[gnu::flatten]] void ShearKernel::jacobian_product([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, [[maybe_unused]] const rift::Vec3* px, [[maybe_unused]] const rift::Vec3* pv, rift::Vec3* out) {
   [[maybe_unused]] const Columns c = columns();
-  [[maybe_unused]] const rift::Vec3 l_da = (in.x[m.vertex_c2] - in.x[m.vertex_c0]);
-  [[maybe_unused]] const rift::Vec3 l_db = (in.x[m.vertex_c3] - in.x[m.vertex_c1]);
-  [[maybe_unused]] const rift::Real l_la = (l_da).norm();
-  [[maybe_unused]] const rift::Real l_lb = (l_db).norm();
-  const bool s0 = (l_la > 0.0);
-  const rift::Real s1 = (1.0 / l_la);
-  [[maybe_unused]] const rift::Real l_ia = (s0 ? s1 : 0.0);
-  const bool s2 = (l_lb > 0.0);
-  const rift::Real s3 = (1.0 / l_lb);
-  [[maybe_unused]] const rift::Real l_ib = (s2 ? s3 : 0.0);
-  const rift::Vec3 s4 = (in.v[m.vertex_c2] - in.v[m.vertex_c0]);
-  const rift::Real s5 = (p_.damping * (s4).dot(l_da));
-  [[maybe_unused]] const rift::Real l_ta = ((c.shear_k[m.orbit01_c0] * (l_la - c.shear_rest02[m.orbit01_c0])) + (s5 * l_ia));
-  const rift::Vec3 s6 = (in.v[m.vertex_c3] - in.v[m.vertex_c1]);
-  const rift::Real s7 = (p_.damping * (s6).dot(l_db));
-  [[maybe_unused]] const rift::Real l_tb = ((c.shear_k[m.orbit01_c0] * (l_lb - c.shear_rest13[m.orbit01_c0])) + (s7 * l_ib));
-  const rift::Real s8 = (l_ta * l_ia);
-  [[maybe_unused]] const rift::Vec3 l_fa = (s8 * l_da);
-  const rift::Real s9 = (l_tb * l_ib);
-  [[maybe_unused]] const rift::Vec3 l_fb = (s9 * l_db);
-  [[maybe_unused]] const rift::Vec3 tx[4] = {px[m.vertex_c2], px[m.vertex_c0], px[m.vertex_c3], px[m.vertex_c1]};
-  [[maybe_unused]] const rift::Vec3 tv[4] = {pv[m.vertex_c2], pv[m.vertex_c0], pv[m.vertex_c3], pv[m.vertex_c1]};
-  const rift::Vec3 t_l_da = (tx[0] - tx[1]);
-  const rift::Vec3 t_l_db = (tx[2] - tx[3]);
-  const rift::Real t_l_la = ((l_da).dot(t_l_da) / l_la);
-  const rift::Real t_l_lb = ((l_db).dot(t_l_db) / l_lb);
-  const rift::Real t_l_ia = (s0 ? ((-(s1 * t_l_la)) / l_la) : 0.0);
-  const rift::Real t_l_ib = (s2 ? ((-(s3 * t_l_lb)) / l_lb) : 0.0);
-  const rift::Real t_l_ta = ((c.shear_k[m.orbit01_c0] * t_l_la) + (((p_.damping * (((tv[0] - tv[1])).dot(l_da) + (s4).dot(t_l_da))) * l_ia) + (s5 * t_l_ia)));
-  const rift::Real t_l_tb = ((c.shear_k[m.orbit01_c0] * t_l_lb) + (((p_.damping * (((tv[2] - tv[3])).dot(l_db) + (s6).dot(t_l_db))) * l_ib) + (s7 * t_l_ib)));
-  const rift::Vec3 t_l_fa = ((((t_l_ta * l_ia) + (l_ta * t_l_ia)) * l_da) + (s8 * t_l_da));
-  const rift::Vec3 t_l_fb = ((((t_l_tb * l_ib) + (l_tb * t_l_ib)) * l_db) + (s9 * t_l_db));
+  const rift::Vec3 spring_force_d = (in.x[m.vertex_c2] - in.x[m.vertex_c0]);
+  const rift::Real spring_force_l = (spring_force_d).norm();
+  const rift::Vec3 s0 = (in.v[m.vertex_c2] - in.v[m.vertex_c0]);
+  const rift::Real s1 = (p_.damping * (s0).dot(spring_force_d));
+  const bool s2 = (spring_force_l > 0.0);
+  const rift::Real s3 = (1.0 / spring_force_l);
+  const rift::Real spring_force_inv = (s2 ? s3 : 0.0);
+  const rift::Real spring_force_t = ((c.shear_k[m.orbit01_c0] * (spring_force_l - c.shear_rest02[m.orbit01_c0])) + (s1 * spring_force_inv));
+  const rift::Real s4 = (spring_force_t * spring_force_inv);
+  [[maybe_unused]] const rift::Vec3 l_fa = (s4 * spring_force_d);
+  const rift::Vec3 spring_force_d_2 = (in.x[m.vertex_c3] - in.x[m.vertex_c1]);
+  const rift::Real spring_force_l_2 = (spring_force_d_2).norm();
+  const rift::Vec3 s5 = (in.v[m.vertex_c3] - in.v[m.vertex_c1]);
+  const rift::Real s6 = (p_.damping * (s5).dot(spring_force_d_2));
+  const bool s7 = (spring_force_l_2 > 0.0);
+  const rift::Real s8 = (1.0 / spring_force_l_2);
+  const rift::Real spring_force_inv_2 = (s7 ? s8 : 0.0);
+  const rift::Real spring_force_t_2 = ((c.shear_k[m.orbit01_c0] * (spring_force_l_2 - c.shear_rest13[m.orbit01_c0])) + (s6 * spring_force_inv_2));
+  const rift::Real s9 = (spring_force_t_2 * spring_force_inv_2);
+  [[maybe_unused]] const rift::Vec3 l_fb = (s9 * spring_force_d_2);
+  [[maybe_unused]] const rift::Vec3 tx[4] = {px[m.vertex_c0], px[m.vertex_c2], px[m.vertex_c1], px[m.vertex_c3]};
+  [[maybe_unused]] const rift::Vec3 tv[4] = {pv[m.vertex_c0], pv[m.vertex_c2], pv[m.vertex_c1], pv[m.vertex_c3]};
+  const rift::Vec3 t_spring_force_d = (tx[1] - tx[0]);
+  const rift::Real t_spring_force_l = ((spring_force_d).dot(t_spring_force_d) / spring_force_l);
+  const rift::Real t_spring_force_inv = (s2 ? ((-(s3 * t_spring_force_l)) / spring_force_l) : 0.0);
+  const rift::Vec3 t_l_fa = ((((((c.shear_k[m.orbit01_c0] * t_spring_force_l) + (((p_.damping * (((tv[1] - tv[0])).dot(spring_force_d) + (s0).dot(t_spring_force_d))) * spring_force_inv) + (s1 * t_spring_force_inv))) * spring_force_inv) + (spring_force_t * t_spring_force_inv)) * spring_force_d) + (s4 * t_spring_force_d));
+  const rift::Vec3 t_spring_force_d_2 = (tx[3] - tx[2]);
+  const rift::Real t_spring_force_l_2 = ((spring_force_d_2).dot(t_spring_force_d_2) / spring_force_l_2);
+  const rift::Real t_spring_force_inv_2 = (s7 ? ((-(s8 * t_spring_force_l_2)) / spring_force_l_2) : 0.0);
+  const rift::Vec3 t_l_fb = ((((((c.shear_k[m.orbit01_c0] * t_spring_force_l_2) + (((p_.damping * (((tv[3] - tv[2])).dot(spring_force_d_2) + (s5).dot(t_spring_force_d_2))) * spring_force_inv_2) + (s6 * t_spring_force_inv_2))) * spring_force_inv_2) + (spring_force_t_2 * t_spring_force_inv_2)) * spring_force_d_2) + (s9 * t_spring_force_d_2));
   out[m.vertex_c0] += t_l_fa;
   out[m.vertex_c2] += (-t_l_fa);
   out[m.vertex_c1] += t_l_fb;
@@ -2030,14 +2021,14 @@ bool VolumeShearKernel::match(const rift::GMap& g, rift::Dart support, Match& m)
   rift::Dart darts[48];
   if (!find(g, support, darts)) return false;
   m.orbit012_b0 = e_vshear_k.slot(darts[0]);
-  m.vertex_s22 = e_position.slot(darts[26]);
   m.vertex_b0 = e_position.slot(darts[0]);
-  m.vertex_s32 = e_position.slot(darts[34]);
+  m.vertex_s22 = e_position.slot(darts[26]);
   m.vertex_b2 = e_position.slot(darts[2]);
-  m.vertex_s02 = e_position.slot(darts[10]);
+  m.vertex_s32 = e_position.slot(darts[34]);
   m.vertex_b4 = e_position.slot(darts[4]);
-  m.vertex_s12 = e_position.slot(darts[18]);
+  m.vertex_s02 = e_position.slot(darts[10]);
   m.vertex_b6 = e_position.slot(darts[6]);
+  m.vertex_s12 = e_position.slot(darts[18]);
   m.orbit12_b0 = e_f_volume_shear.slot(darts[0]);
   m.orbit12_s22 = e_f_volume_shear.slot(darts[26]);
   m.orbit12_b2 = e_f_volume_shear.slot(darts[2]);
@@ -2056,26 +2047,26 @@ VolumeShearKernel::Columns VolumeShearKernel::columns() const {
 template <bool kForces>
 inline bool VolumeShearKernel::evaluate(const Match& m, const rift::ForceInput& in, const Columns& c, Result& r) const {
   const rift::Real l_k = c.vshear_k[m.orbit012_b0];
-  const rift::Vec3 l_d0 = (in.x[m.vertex_s22] - in.x[m.vertex_b0]);
-  const rift::Vec3 l_d1 = (in.x[m.vertex_s32] - in.x[m.vertex_b2]);
-  const rift::Vec3 l_d2 = (in.x[m.vertex_s02] - in.x[m.vertex_b4]);
-  const rift::Vec3 l_d3 = (in.x[m.vertex_s12] - in.x[m.vertex_b6]);
-  const rift::Real l_l0 = (l_d0).norm();
-  const rift::Real l_l1 = (l_d1).norm();
-  const rift::Real l_l2 = (l_d2).norm();
-  const rift::Real l_l3 = (l_d3).norm();
-  [[maybe_unused]] const rift::Real l_i0 = ((l_l0 > 0.0) ? (1.0 / l_l0) : 0.0);
-  [[maybe_unused]] const rift::Real l_i1 = ((l_l1 > 0.0) ? (1.0 / l_l1) : 0.0);
-  [[maybe_unused]] const rift::Real l_i2 = ((l_l2 > 0.0) ? (1.0 / l_l2) : 0.0);
-  [[maybe_unused]] const rift::Real l_i3 = ((l_l3 > 0.0) ? (1.0 / l_l3) : 0.0);
-  const rift::Real s0 = (l_l0 - c.vshear_rest0[m.orbit012_b0]);
-  [[maybe_unused]] const rift::Vec3 l_g0 = ((((l_k * s0) + ((p_.damping * ((in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(l_d0)) * l_i0)) * l_i0) * l_d0);
-  const rift::Real s1 = (l_l1 - c.vshear_rest1[m.orbit012_b0]);
-  [[maybe_unused]] const rift::Vec3 l_g1 = ((((l_k * s1) + ((p_.damping * ((in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(l_d1)) * l_i1)) * l_i1) * l_d1);
-  const rift::Real s2 = (l_l2 - c.vshear_rest2[m.orbit012_b0]);
-  [[maybe_unused]] const rift::Vec3 l_g2 = ((((l_k * s2) + ((p_.damping * ((in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(l_d2)) * l_i2)) * l_i2) * l_d2);
-  const rift::Real s3 = (l_l3 - c.vshear_rest3[m.orbit012_b0]);
-  [[maybe_unused]] const rift::Vec3 l_g3 = ((((l_k * s3) + ((p_.damping * ((in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(l_d3)) * l_i3)) * l_i3) * l_d3);
+  const rift::Vec3 spring_force_d = (in.x[m.vertex_s22] - in.x[m.vertex_b0]);
+  const rift::Real spring_force_l = (spring_force_d).norm();
+  const rift::Real s0 = (spring_force_l - c.vshear_rest0[m.orbit012_b0]);
+  const rift::Real spring_force_inv = ((spring_force_l > 0.0) ? (1.0 / spring_force_l) : 0.0);
+  [[maybe_unused]] const rift::Vec3 l_g0 = ((((l_k * s0) + ((p_.damping * ((in.v[m.vertex_s22] - in.v[m.vertex_b0])).dot(spring_force_d)) * spring_force_inv)) * spring_force_inv) * spring_force_d);
+  const rift::Vec3 spring_force_d_2 = (in.x[m.vertex_s32] - in.x[m.vertex_b2]);
+  const rift::Real spring_force_l_2 = (spring_force_d_2).norm();
+  const rift::Real s1 = (spring_force_l_2 - c.vshear_rest1[m.orbit012_b0]);
+  const rift::Real spring_force_inv_2 = ((spring_force_l_2 > 0.0) ? (1.0 / spring_force_l_2) : 0.0);
+  [[maybe_unused]] const rift::Vec3 l_g1 = ((((l_k * s1) + ((p_.damping * ((in.v[m.vertex_s32] - in.v[m.vertex_b2])).dot(spring_force_d_2)) * spring_force_inv_2)) * spring_force_inv_2) * spring_force_d_2);
+  const rift::Vec3 spring_force_d_3 = (in.x[m.vertex_s02] - in.x[m.vertex_b4]);
+  const rift::Real spring_force_l_3 = (spring_force_d_3).norm();
+  const rift::Real s2 = (spring_force_l_3 - c.vshear_rest2[m.orbit012_b0]);
+  const rift::Real spring_force_inv_3 = ((spring_force_l_3 > 0.0) ? (1.0 / spring_force_l_3) : 0.0);
+  [[maybe_unused]] const rift::Vec3 l_g2 = ((((l_k * s2) + ((p_.damping * ((in.v[m.vertex_s02] - in.v[m.vertex_b4])).dot(spring_force_d_3)) * spring_force_inv_3)) * spring_force_inv_3) * spring_force_d_3);
+  const rift::Vec3 spring_force_d_4 = (in.x[m.vertex_s12] - in.x[m.vertex_b6]);
+  const rift::Real spring_force_l_4 = (spring_force_d_4).norm();
+  const rift::Real s3 = (spring_force_l_4 - c.vshear_rest3[m.orbit012_b0]);
+  const rift::Real spring_force_inv_4 = ((spring_force_l_4 > 0.0) ? (1.0 / spring_force_l_4) : 0.0);
+  [[maybe_unused]] const rift::Vec3 l_g3 = ((((l_k * s3) + ((p_.damping * ((in.v[m.vertex_s12] - in.v[m.vertex_b6])).dot(spring_force_d_4)) * spring_force_inv_4)) * spring_force_inv_4) * spring_force_d_4);
   if constexpr (kForces) {
     r.f_volume_shear_b0 = l_g0;
     r.f_volume_shear_s22 = (-l_g0);
@@ -2086,7 +2077,8 @@ inline bool VolumeShearKernel::evaluate(const Match& m, const rift::ForceInput& 
     r.f_volume_shear_b6 = l_g3;
     r.f_volume_shear_s12 = (-l_g3);
   } else {
-    r.energy = ((0.5 * l_k) * ((((s0 * s0) + (s1 * s1)) + (s2 * s2)) + (s3 * s3)));
+    const rift::Real s4 = (0.5 * l_k);
+    r.energy = (((((s4 * s0) * s0) + ((s4 * s1) * s1)) + ((s4 * s2) * s2)) + ((s4 * s3) * s3));
   }
   return true;
 }
@@ -2141,14 +2133,14 @@ void VolumeShearKernel::force_targets(const Match& m, rift::Slot* out) const {
 
 void VolumeShearKernel::group_key(const Match& m, std::uint64_t* out) const {
   const Columns c = columns();
-  out = rift::key_words(m.vertex_s22, out);
   out = rift::key_words(m.vertex_b0, out);
-  out = rift::key_words(m.vertex_s32, out);
+  out = rift::key_words(m.vertex_s22, out);
   out = rift::key_words(m.vertex_b2, out);
-  out = rift::key_words(m.vertex_s02, out);
+  out = rift::key_words(m.vertex_s32, out);
   out = rift::key_words(m.vertex_b4, out);
-  out = rift::key_words(m.vertex_s12, out);
+  out = rift::key_words(m.vertex_s02, out);
   out = rift::key_words(m.vertex_b6, out);
+  out = rift::key_words(m.vertex_s12, out);
   out = rift::key_words(c.vshear_k[m.orbit012_b0], out);
   out = rift::key_words(c.vshear_rest0[m.orbit012_b0], out);
   out = rift::key_words(c.vshear_rest1[m.orbit012_b0], out);
@@ -2220,14 +2212,14 @@ rift::Real VolumeShearKernel::energy(const Match& m, const rift::ForceInput& in)
 }
 
 void VolumeShearKernel::vertex_slots(const Match& m, rift::Slot* out) const {
-  out[0] = m.vertex_s22;
-  out[1] = m.vertex_b0;
-  out[2] = m.vertex_s32;
-  out[3] = m.vertex_b2;
-  out[4] = m.vertex_s02;
-  out[5] = m.vertex_b4;
-  out[6] = m.vertex_s12;
-  out[7] = m.vertex_b6;
+  out[0] = m.vertex_b0;
+  out[1] = m.vertex_s22;
+  out[2] = m.vertex_b2;
+  out[3] = m.vertex_s32;
+  out[4] = m.vertex_b4;
+  out[5] = m.vertex_s02;
+  out[6] = m.vertex_b6;
+  out[7] = m.vertex_s12;
 }
 
 [[gnu::flatten]] void VolumeShearKernel::jacobian([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, rift::Mat3* dfdx, rift::Mat3* dfdv) {
@@ -2237,46 +2229,46 @@ void VolumeShearKernel::vertex_slots(const Match& m, rift::Slot* out) const {
   }
   [[maybe_unused]] const Columns c = columns();
   [[maybe_unused]] const rift::Real l_k = c.vshear_k[m.orbit012_b0];
-  [[maybe_unused]] const rift::Vec3 l_d0 = (in.x[m.vertex_s22] - in.x[m.vertex_b0]);
-  [[maybe_unused]] const rift::Vec3 l_d1 = (in.x[m.vertex_s32] - in.x[m.vertex_b2]);
-  [[maybe_unused]] const rift::Vec3 l_d2 = (in.x[m.vertex_s02] - in.x[m.vertex_b4]);
-  [[maybe_unused]] const rift::Vec3 l_d3 = (in.x[m.vertex_s12] - in.x[m.vertex_b6]);
-  [[maybe_unused]] const rift::Real l_l0 = (l_d0).norm();
-  [[maybe_unused]] const rift::Real l_l1 = (l_d1).norm();
-  [[maybe_unused]] const rift::Real l_l2 = (l_d2).norm();
-  [[maybe_unused]] const rift::Real l_l3 = (l_d3).norm();
-  const bool s0 = (l_l0 > 0.0);
-  const rift::Real s1 = (1.0 / l_l0);
-  [[maybe_unused]] const rift::Real l_i0 = (s0 ? s1 : 0.0);
-  const bool s2 = (l_l1 > 0.0);
-  const rift::Real s3 = (1.0 / l_l1);
-  [[maybe_unused]] const rift::Real l_i1 = (s2 ? s3 : 0.0);
-  const bool s4 = (l_l2 > 0.0);
-  const rift::Real s5 = (1.0 / l_l2);
-  [[maybe_unused]] const rift::Real l_i2 = (s4 ? s5 : 0.0);
-  const bool s6 = (l_l3 > 0.0);
-  const rift::Real s7 = (1.0 / l_l3);
-  [[maybe_unused]] const rift::Real l_i3 = (s6 ? s7 : 0.0);
-  const rift::Vec3 s8 = (in.v[m.vertex_s22] - in.v[m.vertex_b0]);
-  const rift::Real s9 = (p_.damping * (s8).dot(l_d0));
-  const rift::Real s10 = ((l_k * (l_l0 - c.vshear_rest0[m.orbit012_b0])) + (s9 * l_i0));
-  const rift::Real s11 = (s10 * l_i0);
-  [[maybe_unused]] const rift::Vec3 l_g0 = (s11 * l_d0);
-  const rift::Vec3 s12 = (in.v[m.vertex_s32] - in.v[m.vertex_b2]);
-  const rift::Real s13 = (p_.damping * (s12).dot(l_d1));
-  const rift::Real s14 = ((l_k * (l_l1 - c.vshear_rest1[m.orbit012_b0])) + (s13 * l_i1));
-  const rift::Real s15 = (s14 * l_i1);
-  [[maybe_unused]] const rift::Vec3 l_g1 = (s15 * l_d1);
-  const rift::Vec3 s16 = (in.v[m.vertex_s02] - in.v[m.vertex_b4]);
-  const rift::Real s17 = (p_.damping * (s16).dot(l_d2));
-  const rift::Real s18 = ((l_k * (l_l2 - c.vshear_rest2[m.orbit012_b0])) + (s17 * l_i2));
-  const rift::Real s19 = (s18 * l_i2);
-  [[maybe_unused]] const rift::Vec3 l_g2 = (s19 * l_d2);
-  const rift::Vec3 s20 = (in.v[m.vertex_s12] - in.v[m.vertex_b6]);
-  const rift::Real s21 = (p_.damping * (s20).dot(l_d3));
-  const rift::Real s22 = ((l_k * (l_l3 - c.vshear_rest3[m.orbit012_b0])) + (s21 * l_i3));
-  const rift::Real s23 = (s22 * l_i3);
-  [[maybe_unused]] const rift::Vec3 l_g3 = (s23 * l_d3);
+  const rift::Vec3 spring_force_d = (in.x[m.vertex_s22] - in.x[m.vertex_b0]);
+  const rift::Real spring_force_l = (spring_force_d).norm();
+  const rift::Vec3 s0 = (in.v[m.vertex_s22] - in.v[m.vertex_b0]);
+  const rift::Real s1 = (p_.damping * (s0).dot(spring_force_d));
+  const bool s2 = (spring_force_l > 0.0);
+  const rift::Real s3 = (1.0 / spring_force_l);
+  const rift::Real spring_force_inv = (s2 ? s3 : 0.0);
+  const rift::Real spring_force_t = ((l_k * (spring_force_l - c.vshear_rest0[m.orbit012_b0])) + (s1 * spring_force_inv));
+  const rift::Real s4 = (spring_force_t * spring_force_inv);
+  [[maybe_unused]] const rift::Vec3 l_g0 = (s4 * spring_force_d);
+  const rift::Vec3 spring_force_d_2 = (in.x[m.vertex_s32] - in.x[m.vertex_b2]);
+  const rift::Real spring_force_l_2 = (spring_force_d_2).norm();
+  const rift::Vec3 s5 = (in.v[m.vertex_s32] - in.v[m.vertex_b2]);
+  const rift::Real s6 = (p_.damping * (s5).dot(spring_force_d_2));
+  const bool s7 = (spring_force_l_2 > 0.0);
+  const rift::Real s8 = (1.0 / spring_force_l_2);
+  const rift::Real spring_force_inv_2 = (s7 ? s8 : 0.0);
+  const rift::Real spring_force_t_2 = ((l_k * (spring_force_l_2 - c.vshear_rest1[m.orbit012_b0])) + (s6 * spring_force_inv_2));
+  const rift::Real s9 = (spring_force_t_2 * spring_force_inv_2);
+  [[maybe_unused]] const rift::Vec3 l_g1 = (s9 * spring_force_d_2);
+  const rift::Vec3 spring_force_d_3 = (in.x[m.vertex_s02] - in.x[m.vertex_b4]);
+  const rift::Real spring_force_l_3 = (spring_force_d_3).norm();
+  const rift::Vec3 s10 = (in.v[m.vertex_s02] - in.v[m.vertex_b4]);
+  const rift::Real s11 = (p_.damping * (s10).dot(spring_force_d_3));
+  const bool s12 = (spring_force_l_3 > 0.0);
+  const rift::Real s13 = (1.0 / spring_force_l_3);
+  const rift::Real spring_force_inv_3 = (s12 ? s13 : 0.0);
+  const rift::Real spring_force_t_3 = ((l_k * (spring_force_l_3 - c.vshear_rest2[m.orbit012_b0])) + (s11 * spring_force_inv_3));
+  const rift::Real s14 = (spring_force_t_3 * spring_force_inv_3);
+  [[maybe_unused]] const rift::Vec3 l_g2 = (s14 * spring_force_d_3);
+  const rift::Vec3 spring_force_d_4 = (in.x[m.vertex_s12] - in.x[m.vertex_b6]);
+  const rift::Real spring_force_l_4 = (spring_force_d_4).norm();
+  const rift::Vec3 s15 = (in.v[m.vertex_s12] - in.v[m.vertex_b6]);
+  const rift::Real s16 = (p_.damping * (s15).dot(spring_force_d_4));
+  const bool s17 = (spring_force_l_4 > 0.0);
+  const rift::Real s18 = (1.0 / spring_force_l_4);
+  const rift::Real spring_force_inv_4 = (s17 ? s18 : 0.0);
+  const rift::Real spring_force_t_4 = ((l_k * (spring_force_l_4 - c.vshear_rest3[m.orbit012_b0])) + (s16 * spring_force_inv_4));
+  const rift::Real s19 = (spring_force_t_4 * spring_force_inv_4);
+  [[maybe_unused]] const rift::Vec3 l_g3 = (s19 * spring_force_d_4);
   #pragma GCC unroll 24
   for (int dir = 0; dir < 24; ++dir) {
     const int j = dir / 3, c3 = dir % 3;
@@ -2285,30 +2277,30 @@ void VolumeShearKernel::vertex_slots(const Match& m, rift::Slot* out) const {
       tx[v].setZero();
     }
     tx[j][c3] = 1;
-    const rift::Vec3 t_l_d0 = (tx[0] - tx[1]);
-    const rift::Vec3 t_l_d1 = (tx[2] - tx[3]);
-    const rift::Vec3 t_l_d2 = (tx[4] - tx[5]);
-    const rift::Vec3 t_l_d3 = (tx[6] - tx[7]);
-    const rift::Real t_l_l0 = ((l_d0).dot(t_l_d0) / l_l0);
-    const rift::Real t_l_l1 = ((l_d1).dot(t_l_d1) / l_l1);
-    const rift::Real t_l_l2 = ((l_d2).dot(t_l_d2) / l_l2);
-    const rift::Real t_l_l3 = ((l_d3).dot(t_l_d3) / l_l3);
-    const rift::Real t_l_i0 = (s0 ? ((-(s1 * t_l_l0)) / l_l0) : 0.0);
-    const rift::Real t_l_i1 = (s2 ? ((-(s3 * t_l_l1)) / l_l1) : 0.0);
-    const rift::Real t_l_i2 = (s4 ? ((-(s5 * t_l_l2)) / l_l2) : 0.0);
-    const rift::Real t_l_i3 = (s6 ? ((-(s7 * t_l_l3)) / l_l3) : 0.0);
-    const rift::Vec3 t_l_g0 = ((((((l_k * t_l_l0) + (((p_.damping * (s8).dot(t_l_d0)) * l_i0) + (s9 * t_l_i0))) * l_i0) + (s10 * t_l_i0)) * l_d0) + (s11 * t_l_d0));
-    const rift::Vec3 t_l_g1 = ((((((l_k * t_l_l1) + (((p_.damping * (s12).dot(t_l_d1)) * l_i1) + (s13 * t_l_i1))) * l_i1) + (s14 * t_l_i1)) * l_d1) + (s15 * t_l_d1));
-    const rift::Vec3 t_l_g2 = ((((((l_k * t_l_l2) + (((p_.damping * (s16).dot(t_l_d2)) * l_i2) + (s17 * t_l_i2))) * l_i2) + (s18 * t_l_i2)) * l_d2) + (s19 * t_l_d2));
-    const rift::Vec3 t_l_g3 = ((((((l_k * t_l_l3) + (((p_.damping * (s20).dot(t_l_d3)) * l_i3) + (s21 * t_l_i3))) * l_i3) + (s22 * t_l_i3)) * l_d3) + (s23 * t_l_d3));
-    dfdx[8 + j].col(c3) += t_l_g0;
-    dfdx[0 + j].col(c3) += (-t_l_g0);
-    dfdx[24 + j].col(c3) += t_l_g1;
-    dfdx[16 + j].col(c3) += (-t_l_g1);
-    dfdx[40 + j].col(c3) += t_l_g2;
-    dfdx[32 + j].col(c3) += (-t_l_g2);
-    dfdx[56 + j].col(c3) += t_l_g3;
-    dfdx[48 + j].col(c3) += (-t_l_g3);
+    const rift::Vec3 t_spring_force_d = (tx[1] - tx[0]);
+    const rift::Real t_spring_force_l = ((spring_force_d).dot(t_spring_force_d) / spring_force_l);
+    const rift::Real t_spring_force_inv = (s2 ? ((-(s3 * t_spring_force_l)) / spring_force_l) : 0.0);
+    const rift::Vec3 t_l_g0 = ((((((l_k * t_spring_force_l) + (((p_.damping * (s0).dot(t_spring_force_d)) * spring_force_inv) + (s1 * t_spring_force_inv))) * spring_force_inv) + (spring_force_t * t_spring_force_inv)) * spring_force_d) + (s4 * t_spring_force_d));
+    const rift::Vec3 t_spring_force_d_2 = (tx[3] - tx[2]);
+    const rift::Real t_spring_force_l_2 = ((spring_force_d_2).dot(t_spring_force_d_2) / spring_force_l_2);
+    const rift::Real t_spring_force_inv_2 = (s7 ? ((-(s8 * t_spring_force_l_2)) / spring_force_l_2) : 0.0);
+    const rift::Vec3 t_l_g1 = ((((((l_k * t_spring_force_l_2) + (((p_.damping * (s5).dot(t_spring_force_d_2)) * spring_force_inv_2) + (s6 * t_spring_force_inv_2))) * spring_force_inv_2) + (spring_force_t_2 * t_spring_force_inv_2)) * spring_force_d_2) + (s9 * t_spring_force_d_2));
+    const rift::Vec3 t_spring_force_d_3 = (tx[5] - tx[4]);
+    const rift::Real t_spring_force_l_3 = ((spring_force_d_3).dot(t_spring_force_d_3) / spring_force_l_3);
+    const rift::Real t_spring_force_inv_3 = (s12 ? ((-(s13 * t_spring_force_l_3)) / spring_force_l_3) : 0.0);
+    const rift::Vec3 t_l_g2 = ((((((l_k * t_spring_force_l_3) + (((p_.damping * (s10).dot(t_spring_force_d_3)) * spring_force_inv_3) + (s11 * t_spring_force_inv_3))) * spring_force_inv_3) + (spring_force_t_3 * t_spring_force_inv_3)) * spring_force_d_3) + (s14 * t_spring_force_d_3));
+    const rift::Vec3 t_spring_force_d_4 = (tx[7] - tx[6]);
+    const rift::Real t_spring_force_l_4 = ((spring_force_d_4).dot(t_spring_force_d_4) / spring_force_l_4);
+    const rift::Real t_spring_force_inv_4 = (s17 ? ((-(s18 * t_spring_force_l_4)) / spring_force_l_4) : 0.0);
+    const rift::Vec3 t_l_g3 = ((((((l_k * t_spring_force_l_4) + (((p_.damping * (s15).dot(t_spring_force_d_4)) * spring_force_inv_4) + (s16 * t_spring_force_inv_4))) * spring_force_inv_4) + (spring_force_t_4 * t_spring_force_inv_4)) * spring_force_d_4) + (s19 * t_spring_force_d_4));
+    dfdx[0 + j].col(c3) += t_l_g0;
+    dfdx[8 + j].col(c3) += (-t_l_g0);
+    dfdx[16 + j].col(c3) += t_l_g1;
+    dfdx[24 + j].col(c3) += (-t_l_g1);
+    dfdx[32 + j].col(c3) += t_l_g2;
+    dfdx[40 + j].col(c3) += (-t_l_g2);
+    dfdx[48 + j].col(c3) += t_l_g3;
+    dfdx[56 + j].col(c3) += (-t_l_g3);
   }
   #pragma GCC unroll 24
   for (int dir = 0; dir < 24; ++dir) {
@@ -2318,82 +2310,82 @@ void VolumeShearKernel::vertex_slots(const Match& m, rift::Slot* out) const {
       tv[v].setZero();
     }
     tv[j][c3] = 1;
-    const rift::Vec3 t_l_g0 = ((((p_.damping * ((tv[0] - tv[1])).dot(l_d0)) * l_i0) * l_i0) * l_d0);
-    const rift::Vec3 t_l_g1 = ((((p_.damping * ((tv[2] - tv[3])).dot(l_d1)) * l_i1) * l_i1) * l_d1);
-    const rift::Vec3 t_l_g2 = ((((p_.damping * ((tv[4] - tv[5])).dot(l_d2)) * l_i2) * l_i2) * l_d2);
-    const rift::Vec3 t_l_g3 = ((((p_.damping * ((tv[6] - tv[7])).dot(l_d3)) * l_i3) * l_i3) * l_d3);
-    dfdv[8 + j].col(c3) += t_l_g0;
-    dfdv[0 + j].col(c3) += (-t_l_g0);
-    dfdv[24 + j].col(c3) += t_l_g1;
-    dfdv[16 + j].col(c3) += (-t_l_g1);
-    dfdv[40 + j].col(c3) += t_l_g2;
-    dfdv[32 + j].col(c3) += (-t_l_g2);
-    dfdv[56 + j].col(c3) += t_l_g3;
-    dfdv[48 + j].col(c3) += (-t_l_g3);
+    const rift::Vec3 t_l_g0 = ((((p_.damping * ((tv[1] - tv[0])).dot(spring_force_d)) * spring_force_inv) * spring_force_inv) * spring_force_d);
+    const rift::Vec3 t_l_g1 = ((((p_.damping * ((tv[3] - tv[2])).dot(spring_force_d_2)) * spring_force_inv_2) * spring_force_inv_2) * spring_force_d_2);
+    const rift::Vec3 t_l_g2 = ((((p_.damping * ((tv[5] - tv[4])).dot(spring_force_d_3)) * spring_force_inv_3) * spring_force_inv_3) * spring_force_d_3);
+    const rift::Vec3 t_l_g3 = ((((p_.damping * ((tv[7] - tv[6])).dot(spring_force_d_4)) * spring_force_inv_4) * spring_force_inv_4) * spring_force_d_4);
+    dfdv[0 + j].col(c3) += t_l_g0;
+    dfdv[8 + j].col(c3) += (-t_l_g0);
+    dfdv[16 + j].col(c3) += t_l_g1;
+    dfdv[24 + j].col(c3) += (-t_l_g1);
+    dfdv[32 + j].col(c3) += t_l_g2;
+    dfdv[40 + j].col(c3) += (-t_l_g2);
+    dfdv[48 + j].col(c3) += t_l_g3;
+    dfdv[56 + j].col(c3) += (-t_l_g3);
   }
 }
 
 [[gnu::flatten]] void VolumeShearKernel::jacobian_product([[maybe_unused]] const Match& m, [[maybe_unused]] const rift::ForceInput& in, [[maybe_unused]] const rift::Vec3* px, [[maybe_unused]] const rift::Vec3* pv, rift::Vec3* out) {
   [[maybe_unused]] const Columns c = columns();
   [[maybe_unused]] const rift::Real l_k = c.vshear_k[m.orbit012_b0];
-  [[maybe_unused]] const rift::Vec3 l_d0 = (in.x[m.vertex_s22] - in.x[m.vertex_b0]);
-  [[maybe_unused]] const rift::Vec3 l_d1 = (in.x[m.vertex_s32] - in.x[m.vertex_b2]);
-  [[maybe_unused]] const rift::Vec3 l_d2 = (in.x[m.vertex_s02] - in.x[m.vertex_b4]);
-  [[maybe_unused]] const rift::Vec3 l_d3 = (in.x[m.vertex_s12] - in.x[m.vertex_b6]);
-  [[maybe_unused]] const rift::Real l_l0 = (l_d0).norm();
-  [[maybe_unused]] const rift::Real l_l1 = (l_d1).norm();
-  [[maybe_unused]] const rift::Real l_l2 = (l_d2).norm();
-  [[maybe_unused]] const rift::Real l_l3 = (l_d3).norm();
-  const bool s0 = (l_l0 > 0.0);
-  const rift::Real s1 = (1.0 / l_l0);
-  [[maybe_unused]] const rift::Real l_i0 = (s0 ? s1 : 0.0);
-  const bool s2 = (l_l1 > 0.0);
-  const rift::Real s3 = (1.0 / l_l1);
-  [[maybe_unused]] const rift::Real l_i1 = (s2 ? s3 : 0.0);
-  const bool s4 = (l_l2 > 0.0);
-  const rift::Real s5 = (1.0 / l_l2);
-  [[maybe_unused]] const rift::Real l_i2 = (s4 ? s5 : 0.0);
-  const bool s6 = (l_l3 > 0.0);
-  const rift::Real s7 = (1.0 / l_l3);
-  [[maybe_unused]] const rift::Real l_i3 = (s6 ? s7 : 0.0);
-  const rift::Vec3 s8 = (in.v[m.vertex_s22] - in.v[m.vertex_b0]);
-  const rift::Real s9 = (p_.damping * (s8).dot(l_d0));
-  const rift::Real s10 = ((l_k * (l_l0 - c.vshear_rest0[m.orbit012_b0])) + (s9 * l_i0));
-  const rift::Real s11 = (s10 * l_i0);
-  [[maybe_unused]] const rift::Vec3 l_g0 = (s11 * l_d0);
-  const rift::Vec3 s12 = (in.v[m.vertex_s32] - in.v[m.vertex_b2]);
-  const rift::Real s13 = (p_.damping * (s12).dot(l_d1));
-  const rift::Real s14 = ((l_k * (l_l1 - c.vshear_rest1[m.orbit012_b0])) + (s13 * l_i1));
-  const rift::Real s15 = (s14 * l_i1);
-  [[maybe_unused]] const rift::Vec3 l_g1 = (s15 * l_d1);
-  const rift::Vec3 s16 = (in.v[m.vertex_s02] - in.v[m.vertex_b4]);
-  const rift::Real s17 = (p_.damping * (s16).dot(l_d2));
-  const rift::Real s18 = ((l_k * (l_l2 - c.vshear_rest2[m.orbit012_b0])) + (s17 * l_i2));
-  const rift::Real s19 = (s18 * l_i2);
-  [[maybe_unused]] const rift::Vec3 l_g2 = (s19 * l_d2);
-  const rift::Vec3 s20 = (in.v[m.vertex_s12] - in.v[m.vertex_b6]);
-  const rift::Real s21 = (p_.damping * (s20).dot(l_d3));
-  const rift::Real s22 = ((l_k * (l_l3 - c.vshear_rest3[m.orbit012_b0])) + (s21 * l_i3));
-  const rift::Real s23 = (s22 * l_i3);
-  [[maybe_unused]] const rift::Vec3 l_g3 = (s23 * l_d3);
-  [[maybe_unused]] const rift::Vec3 tx[8] = {px[m.vertex_s22], px[m.vertex_b0], px[m.vertex_s32], px[m.vertex_b2], px[m.vertex_s02], px[m.vertex_b4], px[m.vertex_s12], px[m.vertex_b6]};
-  [[maybe_unused]] const rift::Vec3 tv[8] = {pv[m.vertex_s22], pv[m.vertex_b0], pv[m.vertex_s32], pv[m.vertex_b2], pv[m.vertex_s02], pv[m.vertex_b4], pv[m.vertex_s12], pv[m.vertex_b6]};
-  const rift::Vec3 t_l_d0 = (tx[0] - tx[1]);
-  const rift::Vec3 t_l_d1 = (tx[2] - tx[3]);
-  const rift::Vec3 t_l_d2 = (tx[4] - tx[5]);
-  const rift::Vec3 t_l_d3 = (tx[6] - tx[7]);
-  const rift::Real t_l_l0 = ((l_d0).dot(t_l_d0) / l_l0);
-  const rift::Real t_l_l1 = ((l_d1).dot(t_l_d1) / l_l1);
-  const rift::Real t_l_l2 = ((l_d2).dot(t_l_d2) / l_l2);
-  const rift::Real t_l_l3 = ((l_d3).dot(t_l_d3) / l_l3);
-  const rift::Real t_l_i0 = (s0 ? ((-(s1 * t_l_l0)) / l_l0) : 0.0);
-  const rift::Real t_l_i1 = (s2 ? ((-(s3 * t_l_l1)) / l_l1) : 0.0);
-  const rift::Real t_l_i2 = (s4 ? ((-(s5 * t_l_l2)) / l_l2) : 0.0);
-  const rift::Real t_l_i3 = (s6 ? ((-(s7 * t_l_l3)) / l_l3) : 0.0);
-  const rift::Vec3 t_l_g0 = ((((((l_k * t_l_l0) + (((p_.damping * (((tv[0] - tv[1])).dot(l_d0) + (s8).dot(t_l_d0))) * l_i0) + (s9 * t_l_i0))) * l_i0) + (s10 * t_l_i0)) * l_d0) + (s11 * t_l_d0));
-  const rift::Vec3 t_l_g1 = ((((((l_k * t_l_l1) + (((p_.damping * (((tv[2] - tv[3])).dot(l_d1) + (s12).dot(t_l_d1))) * l_i1) + (s13 * t_l_i1))) * l_i1) + (s14 * t_l_i1)) * l_d1) + (s15 * t_l_d1));
-  const rift::Vec3 t_l_g2 = ((((((l_k * t_l_l2) + (((p_.damping * (((tv[4] - tv[5])).dot(l_d2) + (s16).dot(t_l_d2))) * l_i2) + (s17 * t_l_i2))) * l_i2) + (s18 * t_l_i2)) * l_d2) + (s19 * t_l_d2));
-  const rift::Vec3 t_l_g3 = ((((((l_k * t_l_l3) + (((p_.damping * (((tv[6] - tv[7])).dot(l_d3) + (s20).dot(t_l_d3))) * l_i3) + (s21 * t_l_i3))) * l_i3) + (s22 * t_l_i3)) * l_d3) + (s23 * t_l_d3));
+  const rift::Vec3 spring_force_d = (in.x[m.vertex_s22] - in.x[m.vertex_b0]);
+  const rift::Real spring_force_l = (spring_force_d).norm();
+  const rift::Vec3 s0 = (in.v[m.vertex_s22] - in.v[m.vertex_b0]);
+  const rift::Real s1 = (p_.damping * (s0).dot(spring_force_d));
+  const bool s2 = (spring_force_l > 0.0);
+  const rift::Real s3 = (1.0 / spring_force_l);
+  const rift::Real spring_force_inv = (s2 ? s3 : 0.0);
+  const rift::Real spring_force_t = ((l_k * (spring_force_l - c.vshear_rest0[m.orbit012_b0])) + (s1 * spring_force_inv));
+  const rift::Real s4 = (spring_force_t * spring_force_inv);
+  [[maybe_unused]] const rift::Vec3 l_g0 = (s4 * spring_force_d);
+  const rift::Vec3 spring_force_d_2 = (in.x[m.vertex_s32] - in.x[m.vertex_b2]);
+  const rift::Real spring_force_l_2 = (spring_force_d_2).norm();
+  const rift::Vec3 s5 = (in.v[m.vertex_s32] - in.v[m.vertex_b2]);
+  const rift::Real s6 = (p_.damping * (s5).dot(spring_force_d_2));
+  const bool s7 = (spring_force_l_2 > 0.0);
+  const rift::Real s8 = (1.0 / spring_force_l_2);
+  const rift::Real spring_force_inv_2 = (s7 ? s8 : 0.0);
+  const rift::Real spring_force_t_2 = ((l_k * (spring_force_l_2 - c.vshear_rest1[m.orbit012_b0])) + (s6 * spring_force_inv_2));
+  const rift::Real s9 = (spring_force_t_2 * spring_force_inv_2);
+  [[maybe_unused]] const rift::Vec3 l_g1 = (s9 * spring_force_d_2);
+  const rift::Vec3 spring_force_d_3 = (in.x[m.vertex_s02] - in.x[m.vertex_b4]);
+  const rift::Real spring_force_l_3 = (spring_force_d_3).norm();
+  const rift::Vec3 s10 = (in.v[m.vertex_s02] - in.v[m.vertex_b4]);
+  const rift::Real s11 = (p_.damping * (s10).dot(spring_force_d_3));
+  const bool s12 = (spring_force_l_3 > 0.0);
+  const rift::Real s13 = (1.0 / spring_force_l_3);
+  const rift::Real spring_force_inv_3 = (s12 ? s13 : 0.0);
+  const rift::Real spring_force_t_3 = ((l_k * (spring_force_l_3 - c.vshear_rest2[m.orbit012_b0])) + (s11 * spring_force_inv_3));
+  const rift::Real s14 = (spring_force_t_3 * spring_force_inv_3);
+  [[maybe_unused]] const rift::Vec3 l_g2 = (s14 * spring_force_d_3);
+  const rift::Vec3 spring_force_d_4 = (in.x[m.vertex_s12] - in.x[m.vertex_b6]);
+  const rift::Real spring_force_l_4 = (spring_force_d_4).norm();
+  const rift::Vec3 s15 = (in.v[m.vertex_s12] - in.v[m.vertex_b6]);
+  const rift::Real s16 = (p_.damping * (s15).dot(spring_force_d_4));
+  const bool s17 = (spring_force_l_4 > 0.0);
+  const rift::Real s18 = (1.0 / spring_force_l_4);
+  const rift::Real spring_force_inv_4 = (s17 ? s18 : 0.0);
+  const rift::Real spring_force_t_4 = ((l_k * (spring_force_l_4 - c.vshear_rest3[m.orbit012_b0])) + (s16 * spring_force_inv_4));
+  const rift::Real s19 = (spring_force_t_4 * spring_force_inv_4);
+  [[maybe_unused]] const rift::Vec3 l_g3 = (s19 * spring_force_d_4);
+  [[maybe_unused]] const rift::Vec3 tx[8] = {px[m.vertex_b0], px[m.vertex_s22], px[m.vertex_b2], px[m.vertex_s32], px[m.vertex_b4], px[m.vertex_s02], px[m.vertex_b6], px[m.vertex_s12]};
+  [[maybe_unused]] const rift::Vec3 tv[8] = {pv[m.vertex_b0], pv[m.vertex_s22], pv[m.vertex_b2], pv[m.vertex_s32], pv[m.vertex_b4], pv[m.vertex_s02], pv[m.vertex_b6], pv[m.vertex_s12]};
+  const rift::Vec3 t_spring_force_d = (tx[1] - tx[0]);
+  const rift::Real t_spring_force_l = ((spring_force_d).dot(t_spring_force_d) / spring_force_l);
+  const rift::Real t_spring_force_inv = (s2 ? ((-(s3 * t_spring_force_l)) / spring_force_l) : 0.0);
+  const rift::Vec3 t_l_g0 = ((((((l_k * t_spring_force_l) + (((p_.damping * (((tv[1] - tv[0])).dot(spring_force_d) + (s0).dot(t_spring_force_d))) * spring_force_inv) + (s1 * t_spring_force_inv))) * spring_force_inv) + (spring_force_t * t_spring_force_inv)) * spring_force_d) + (s4 * t_spring_force_d));
+  const rift::Vec3 t_spring_force_d_2 = (tx[3] - tx[2]);
+  const rift::Real t_spring_force_l_2 = ((spring_force_d_2).dot(t_spring_force_d_2) / spring_force_l_2);
+  const rift::Real t_spring_force_inv_2 = (s7 ? ((-(s8 * t_spring_force_l_2)) / spring_force_l_2) : 0.0);
+  const rift::Vec3 t_l_g1 = ((((((l_k * t_spring_force_l_2) + (((p_.damping * (((tv[3] - tv[2])).dot(spring_force_d_2) + (s5).dot(t_spring_force_d_2))) * spring_force_inv_2) + (s6 * t_spring_force_inv_2))) * spring_force_inv_2) + (spring_force_t_2 * t_spring_force_inv_2)) * spring_force_d_2) + (s9 * t_spring_force_d_2));
+  const rift::Vec3 t_spring_force_d_3 = (tx[5] - tx[4]);
+  const rift::Real t_spring_force_l_3 = ((spring_force_d_3).dot(t_spring_force_d_3) / spring_force_l_3);
+  const rift::Real t_spring_force_inv_3 = (s12 ? ((-(s13 * t_spring_force_l_3)) / spring_force_l_3) : 0.0);
+  const rift::Vec3 t_l_g2 = ((((((l_k * t_spring_force_l_3) + (((p_.damping * (((tv[5] - tv[4])).dot(spring_force_d_3) + (s10).dot(t_spring_force_d_3))) * spring_force_inv_3) + (s11 * t_spring_force_inv_3))) * spring_force_inv_3) + (spring_force_t_3 * t_spring_force_inv_3)) * spring_force_d_3) + (s14 * t_spring_force_d_3));
+  const rift::Vec3 t_spring_force_d_4 = (tx[7] - tx[6]);
+  const rift::Real t_spring_force_l_4 = ((spring_force_d_4).dot(t_spring_force_d_4) / spring_force_l_4);
+  const rift::Real t_spring_force_inv_4 = (s17 ? ((-(s18 * t_spring_force_l_4)) / spring_force_l_4) : 0.0);
+  const rift::Vec3 t_l_g3 = ((((((l_k * t_spring_force_l_4) + (((p_.damping * (((tv[7] - tv[6])).dot(spring_force_d_4) + (s15).dot(t_spring_force_d_4))) * spring_force_inv_4) + (s16 * t_spring_force_inv_4))) * spring_force_inv_4) + (spring_force_t_4 * t_spring_force_inv_4)) * spring_force_d_4) + (s19 * t_spring_force_d_4));
   out[m.vertex_b0] += t_l_g0;
   out[m.vertex_s22] += (-t_l_g0);
   out[m.vertex_b2] += t_l_g1;

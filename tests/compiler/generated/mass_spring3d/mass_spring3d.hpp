@@ -40,8 +40,8 @@ class StretchKernel {
  public:
   /// The slots a match caches (trivially copyable, fixed size).
   struct Match {
-    rift::Slot vertex_b = rift::kNoSlot;  // vertex of b
     rift::Slot vertex_a = rift::kNoSlot;  // vertex of a
+    rift::Slot vertex_b = rift::kNoSlot;  // vertex of b
     rift::Slot orbit0_a = rift::kNoSlot;  // <0> of a
     rift::Slot dart_a = rift::kNoSlot;  // <> of a
     rift::Slot dart_b = rift::kNoSlot;  // <> of b
@@ -126,11 +126,11 @@ class ShearKernel {
  public:
   /// The slots a match caches (trivially copyable, fixed size).
   struct Match {
-    rift::Slot vertex_c2 = rift::kNoSlot;  // vertex of c2
     rift::Slot vertex_c0 = rift::kNoSlot;  // vertex of c0
-    rift::Slot vertex_c3 = rift::kNoSlot;  // vertex of c3
-    rift::Slot vertex_c1 = rift::kNoSlot;  // vertex of c1
+    rift::Slot vertex_c2 = rift::kNoSlot;  // vertex of c2
     rift::Slot orbit01_c0 = rift::kNoSlot;  // <0,1> of c0
+    rift::Slot vertex_c1 = rift::kNoSlot;  // vertex of c1
+    rift::Slot vertex_c3 = rift::kNoSlot;  // vertex of c3
     rift::Slot orbit1_c0 = rift::kNoSlot;  // <1> of c0
     rift::Slot orbit1_c2 = rift::kNoSlot;  // <1> of c2
     rift::Slot orbit1_c1 = rift::kNoSlot;  // <1> of c1
@@ -219,14 +219,14 @@ class VolumeShearKernel {
   /// The slots a match caches (trivially copyable, fixed size).
   struct Match {
     rift::Slot orbit012_b0 = rift::kNoSlot;  // <0,1,2> of b0
-    rift::Slot vertex_s22 = rift::kNoSlot;  // vertex of s22
     rift::Slot vertex_b0 = rift::kNoSlot;  // vertex of b0
-    rift::Slot vertex_s32 = rift::kNoSlot;  // vertex of s32
+    rift::Slot vertex_s22 = rift::kNoSlot;  // vertex of s22
     rift::Slot vertex_b2 = rift::kNoSlot;  // vertex of b2
-    rift::Slot vertex_s02 = rift::kNoSlot;  // vertex of s02
+    rift::Slot vertex_s32 = rift::kNoSlot;  // vertex of s32
     rift::Slot vertex_b4 = rift::kNoSlot;  // vertex of b4
-    rift::Slot vertex_s12 = rift::kNoSlot;  // vertex of s12
+    rift::Slot vertex_s02 = rift::kNoSlot;  // vertex of s02
     rift::Slot vertex_b6 = rift::kNoSlot;  // vertex of b6
+    rift::Slot vertex_s12 = rift::kNoSlot;  // vertex of s12
     rift::Slot orbit12_b0 = rift::kNoSlot;  // <1,2> of b0
     rift::Slot orbit12_s22 = rift::kNoSlot;  // <1,2> of s22
     rift::Slot orbit12_b2 = rift::kNoSlot;  // <1,2> of b2
