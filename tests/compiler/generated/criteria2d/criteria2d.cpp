@@ -1011,7 +1011,7 @@ Pack::Pack(const Params& params) : params_(params), description_("2D tearing cri
   }, kDimension, {}, {"f_membrane", "f_shear", "f_stretch"}});
   catalog_.criteria.push_back({"vertex_stress", "The vertex stress tensor (mass-weighted mean of its elements', eq. 1-2) has an eigenvalue past the threshold: split perpendicular to its eigenvector (§5.2). (on <1,2>; applies rule split_vertex)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(100.0)), "N/m", true, false},
-  }, kDimension, {}, {"corner_mass", "f_membrane", "position"}});
+  }, kDimension, {}, {"corner_mass", "position", "f_membrane"}});
   catalog_.criteria.push_back({"vertex_energy", "Griffith at the mesh scale: the strain energy of a vertex's share of its membrane triangles per unit of its size passes the toughness: split perpendicular to the largest principal stress. (on <1,2>; applies rule split_vertex)", {
     {"toughness", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N/m (energy release rate times thickness)", true, false},
   }, kDimension, {}, {"membrane_mu", "position", "f_membrane", "membrane_lambda", "corner_mass"}});
