@@ -39,7 +39,7 @@ namespace {
 
 void declare_embeddings(rift::GMap& g) {
   if (!g.has_embedding("fem_b")) {
-    g.declare_embedding<rift::Mat3>("fem_b", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Mat3(rift::Mat3(rift::Mat3::Identity())));
+    g.declare_embedding<rift::Mat3>("fem_b", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Mat3(rift::Mat3::Identity()));
   } else if (g.find_column("fem_b")->type() != rift::ValueType::kMat3 || !(g.attachment_of("fem_b")->orbit() == rift::Orbit{0, 1, 2}) || g.find_column("fem_b")->policy() != rift::MergePolicy::kKeepFirst) {
     throw std::invalid_argument("the map's embedding 'fem_b' is not the pack's mat3 on <0,1,2> merged by 'keep'");
   }
@@ -594,7 +594,7 @@ void CorotationalKernel::vertex_slots(const Match& m, rift::Slot* out) const {
 }
 
 Pack::Pack(const Params& params) : params_(params), description_("Co-rotational FEM (Müller and Gross 2004) on the tetrahedra of 3D meshes.") {
-  embeddings_.push_back({"fem_b", rift::ValueType::kMat3, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Mat3(rift::Mat3(rift::Mat3::Identity())))});
+  embeddings_.push_back({"fem_b", rift::ValueType::kMat3, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Mat3(rift::Mat3::Identity()))});
   embeddings_.push_back({"fem_volume", rift::ValueType::kReal, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"fem_mu", rift::ValueType::kReal, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"fem_lambda", rift::ValueType::kReal, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
