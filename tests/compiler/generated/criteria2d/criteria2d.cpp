@@ -996,7 +996,7 @@ Pack::Pack(const Params& params) : params_(params), description_("2D tearing cri
   catalog_.criteria.push_back({"spring_split", "A stretch spring whose force passes the threshold splits its extremities, perpendicular to the force (§5.1, Fig. 9b). (on <0>; applies rule split_ends)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N", true, false},
     {"both_ends", rift::ValueType::kBool, rift::Value(rift::Bool(true)), "split both extremities (else the first only)", false, false},
-  }, kDimension, {}, {"f_stretch"}});
+  }, kDimension, {}, {"f_stretch", "position"}});
   catalog_.criteria.push_back({"shear_force", "A linear shear spring whose force passes the threshold removes its face (§5.1). (on <0,1>; applies rule remove_element)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N", true, false},
   }, kDimension, {}, {"f_shear"}});
@@ -1008,16 +1008,16 @@ Pack::Pack(const Params& params) : params_(params), description_("2D tearing cri
   }, kDimension, {}, {"position", "f_membrane"}});
   catalog_.criteria.push_back({"interaction_force", "The largest force a single interaction exerts on a vertex passes the threshold: the vertex splits perpendicular to it (§5.1, Fig. 9a). (on <1,2>; applies rule split_along_largest_force)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N", true, false},
-  }, kDimension, {}, {"f_membrane", "f_shear", "f_stretch"}});
+  }, kDimension, {}, {"f_membrane", "f_shear", "f_stretch", "position"}});
   catalog_.criteria.push_back({"vertex_stress", "The vertex stress tensor (mass-weighted mean of its elements', eq. 1-2) has an eigenvalue past the threshold: split perpendicular to its eigenvector (§5.2). (on <1,2>; applies rule split_vertex)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(100.0)), "N/m", true, false},
-  }, kDimension, {}, {"corner_mass", "position", "f_membrane"}});
+  }, kDimension, {}, {"corner_mass", "position", "f_membrane", "side"}});
   catalog_.criteria.push_back({"vertex_energy", "Griffith at the mesh scale: the strain energy of a vertex's share of its membrane triangles per unit of its size passes the toughness: split perpendicular to the largest principal stress. (on <1,2>; applies rule split_vertex)", {
     {"toughness", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N/m (energy release rate times thickness)", true, false},
-  }, kDimension, {}, {"membrane_mu", "position", "f_membrane", "membrane_lambda", "corner_mass"}});
+  }, kDimension, {}, {"membrane_mu", "position", "f_membrane", "membrane_lambda", "corner_mass", "side"}});
   catalog_.criteria.push_back({"vertex_sum", "The sum of the internal forces on a vertex passes the threshold: split perpendicular to it (§5.2, Fig. 9c). (on <1,2>; applies rule split_vertex)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N", true, false},
-  }, kDimension, {}, {"vertex_force"}});
+  }, kDimension, {}, {"vertex_force", "position", "side"}});
   catalog_.criteria.push_back({"atomic_edge", "Atomic edge criterion, eq. (4): |(f1 - f2) . n| past the threshold, both faces contracting, separates them (§5.3, Fig. 9e). (on <0,2>; applies rule separate_faces)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N", true, false},
   }, kDimension, {}, {"position", "f_stretch", "f_shear", "f_membrane"}});
