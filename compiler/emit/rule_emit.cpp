@@ -114,7 +114,11 @@ void emit_rule(Writer& w, const lower::RulePlan& plan, const PackModel& model) {
   if (guarded) {
     const std::string fail = "return false;";
     open_row_loop(w, plan.left, false);
-    write_statements(w, values.match, on_match, &fail, true);
+    std::vector<ir::ExprId> conds;
+    for (const ir::Stmt& s : values.match.stmts) {
+      if (s.kind == ir::Stmt::Kind::When) conds.push_back(s.cond);
+    }
+    write_statements(w, values.match, on_match, conds, &fail);
     w.close();
   }
   for (std::size_t k = 0; k < values.assigns.size(); ++k) {
@@ -123,7 +127,10 @@ void emit_rule(Writer& w, const lower::RulePlan& plan, const PackModel& model) {
   }
   if (!values.assigns.empty()) {
     open_row_loop(w, plan.left, false);
-    write_statements(w, values.match, on_match, nullptr, true);
+    std::vector<ir::ExprId> written;
+    for (const lower::Write& a : values.assigns)
+      written.push_back(a.value);
+    write_statements(w, values.match, on_match, written, nullptr);
     for (std::size_t k = 0; k < values.assigns.size(); ++k) {
       const lower::Write& a = values.assigns[k];
       write_sourced(w, a.loc,
