@@ -40,13 +40,17 @@ RenderContext dart_context(const ir::Body& body) {
 }
 
 void write_statements(Writer& w, const ir::Body& body, const RenderContext& ctx,
-                      const std::string* on_fail, bool maybe_unused) {
+                      const std::vector<ir::ExprId>& roots, const std::string* on_fail) {
+  std::vector<bool> wanted(body.lets.size(), false);
+  for (ir::ExprId root : roots)
+    lower::lets_read(body, root, wanted);
   for (const ir::Stmt& st : body.stmts) {
     if (st.kind == ir::Stmt::Kind::Let) {
-      const ir::Let& l = body.lets[static_cast<std::size_t>(st.let)];
+      const auto i = static_cast<std::size_t>(st.let);
+      if (!wanted[i]) continue;
+      const ir::Let& l = body.lets[i];
       write_sourced(w, l.loc,
-                    std::string(maybe_unused ? "[[maybe_unused]] " : "") + "const " +
-                        cpp_type(body.graph[l.value].type) + " " + let_name(l.name) + " = " +
+                    "const " + cpp_type(body.graph[l.value].type) + " " + let_name(l.name) + " = " +
                         render(body.graph, l.value, ctx) + ";");
     } else if (on_fail) {
       write_sourced(w, st.loc, "if (!(" + render(body.graph, st.cond, ctx) + ")) " + *on_fail);

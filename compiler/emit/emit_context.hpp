@@ -51,12 +51,12 @@ void fetch_embeddings(Writer& w, const std::vector<std::string>& names, const Pa
 /// Reads darts by name: node k of `body` is `d_<its name>`.
 RenderContext dart_context(const ir::Body& body);
 
-/// The lets of `body` in source order, each `const T l_x = ...;` with its
-/// #line, and, when `on_fail` is given, its whens where they are written:
-/// `on_fail` runs where one is false. `maybe_unused`: lets this function
-/// may not read are marked so.
+/// The statements of `body` in source order that compute `roots`: the lets
+/// they read (directly or through other lets), each `const T l_x = ...;`
+/// with its #line, and, when `on_fail` is given, the whens, `on_fail`
+/// running where one is false.
 void write_statements(Writer& w, const ir::Body& body, const RenderContext& ctx,
-                      const std::string* on_fail, bool maybe_unused);
+                      const std::vector<ir::ExprId>& roots, const std::string* on_fail);
 
 /// One statement whose expression comes from `loc` in a .rules file.
 void write_sourced(Writer& w, const diag::Location& loc, const std::string& statement);

@@ -26,12 +26,34 @@ std::string int_list(const std::vector<int>& v) {
   return out;
 }
 
-/// Opens the per-row loop and binds `d_<node>` for every node of a side.
-void open_row_loop(Writer& w, const std::vector<std::string>& side, bool right) {
+/// Opens the per-row loop and binds `d_<node>` for the nodes of a side
+/// (the first nodes of `body`) that `roots` read, directly or through the
+/// lets they read, or that `written` names.
+void open_row_loop(Writer& w, const std::vector<std::string>& side, bool right,
+                   const ir::Body& body, std::vector<ir::ExprId> roots,
+                   const std::vector<int>& written = {}) {
+  std::vector<bool> lets(body.lets.size(), false);
+  for (ir::ExprId root : roots)
+    lower::lets_read(body, root, lets);
+  for (std::size_t i = 0; i < lets.size(); ++i) {
+    if (lets[i]) roots.push_back(body.lets[i].value);
+  }
+  std::vector<bool> used(side.size(), false);
+  for (int v : written)
+    used[static_cast<std::size_t>(v)] = true;
+  for (ir::ExprId root : roots) {
+    ir::visit(body.graph, root, [&](const ir::Node& n) {
+      const bool placed = n.op == ir::Op::Position || n.op == ir::Op::Velocity ||
+                          n.op == ir::Op::Read || n.op == ir::Op::Collect || n.op == ir::Op::Fold;
+      const auto v = static_cast<std::size_t>(n.place.node);
+      if (placed && n.place.node >= 0 && v < used.size()) used[v] = true;
+    });
+  }
   w.open("for (std::size_t r = 0; r < rows; ++r) {");
   for (std::size_t v = 0; v < side.size(); ++v) {
+    if (!used[v]) continue;
     const int i = static_cast<int>(v);
-    w.line("[[maybe_unused]] const rift::Dart " + dart_name(side[v]) + " = " +
+    w.line("const rift::Dart " + dart_name(side[v]) + " = " +
            (right ? right_name(i) : left_name(i)) + "[r];");
   }
 }
@@ -113,8 +135,12 @@ void emit_rule(Writer& w, const lower::RulePlan& plan, const PackModel& model) {
                   [](const ir::Stmt& s) { return s.kind == ir::Stmt::Kind::When; });
   if (guarded) {
     const std::string fail = "return false;";
-    open_row_loop(w, plan.left, false);
-    write_statements(w, values.match, on_match, &fail, true);
+    std::vector<ir::ExprId> conds;
+    for (const ir::Stmt& s : values.match.stmts) {
+      if (s.kind == ir::Stmt::Kind::When) conds.push_back(s.cond);
+    }
+    open_row_loop(w, plan.left, false, values.match, conds);
+    write_statements(w, values.match, on_match, conds, &fail);
     w.close();
   }
   for (std::size_t k = 0; k < values.assigns.size(); ++k) {
@@ -122,8 +148,12 @@ void emit_rule(Writer& w, const lower::RulePlan& plan, const PackModel& model) {
            std::to_string(k) + "(rows);");
   }
   if (!values.assigns.empty()) {
-    open_row_loop(w, plan.left, false);
-    write_statements(w, values.match, on_match, nullptr, true);
+    std::vector<ir::ExprId> written;
+    written.reserve(values.assigns.size());
+    for (const lower::Write& a : values.assigns)
+      written.push_back(a.value);
+    open_row_loop(w, plan.left, false, values.match, written);
+    write_statements(w, values.match, on_match, written, nullptr);
     for (std::size_t k = 0; k < values.assigns.size(); ++k) {
       const lower::Write& a = values.assigns[k];
       write_sourced(w, a.loc,
@@ -184,7 +214,13 @@ void emit_rule(Writer& w, const lower::RulePlan& plan, const PackModel& model) {
            right_name(v) + "[r]] = value_" + std::to_string(k) + "[r];");
   }
   if (!values.updates.empty()) {
-    open_row_loop(w, plan.right, true);
+    std::vector<ir::ExprId> updated;
+    std::vector<int> targets;
+    for (const lower::Write& u : values.updates) {
+      updated.push_back(u.value);
+      targets.push_back(u.node);
+    }
+    open_row_loop(w, plan.right, true, values.rewritten, updated, targets);
     for (const lower::Write& u : values.updates) {
       write_sourced(w, u.loc,
                     embedding_var(u.embedding) + "[" + on_right.dart(u.node) +

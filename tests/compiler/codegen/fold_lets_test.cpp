@@ -87,6 +87,28 @@ TEST(FoldLets, RuleAndScriptComputeTheirFoldsOnADeformedGrid) {
   EXPECT_EQ(checked, 16);
 }
 
+TEST(FoldLets, RuleAppliesWhereItsWhensHold) {
+  GMap g = rift::load_map("grid:quad:3x3");
+  fl::declare_embeddings(g);
+  auto x = g.embedding<Vec3>("position");
+  g.for_each_cell(kVertex, [&](Dart v) { x[v] *= 1.0 + 0.3 * x[v].x(); });
+  const auto mark = g.embedding<Real>("mark");
+  fl::mark_if_long_args args;
+  args.limit = 0.4;
+  int applied = 0, refused = 0;
+  g.for_each_cell(kVertex, [&](Dart v) {
+    Real longest = 0;
+    around(g, v, Orbit{2},
+           [&](Dart e) { longest = std::max(longest, (x[g.alpha(e, 0)] - x[e]).norm()); });
+    const bool ok = fl::apply_mark_if_long(g, std::span<const Dart>(&v, 1), args);
+    EXPECT_EQ(ok, longest > args.limit) << "vertex of dart " << v;
+    EXPECT_NEAR(mark[v], ok ? 2 * longest : 0.0, 1e-12);
+    (ok ? applied : refused) += 1;
+  });
+  EXPECT_GT(applied, 0);
+  EXPECT_GT(refused, 0);
+}
+
 TEST(FoldLets, CriterionProposesTheVerticesWithALargeCorner) {
   GMap g = rift::load_map("grid:quad:3x3");
   const fl::Pack pack;
