@@ -149,6 +149,8 @@ ExprPtr call(std::string name, std::vector<ExprPtr> args, const rift::diag::Loca
 %type <rift::ast::ExprPtr> opt_default
 %type <std::optional<rift::ast::Ident>> opt_merge
 %type <std::vector<rift::ast::Param>> function_params
+%type <std::vector<rift::ast::Let>> fold_lets
+%type <rift::ast::ExprPtr> fold_body
 
 %precedence ELSE
 %left OR
@@ -721,13 +723,13 @@ primary
       $$->node_loc = path->node_loc;
       $$->hops = path->hops;
     }
-  | collect_op OF expr FOR EACH orbit LPAREN ident RPAREN IN orbit LPAREN node_path RPAREN {
+  | collect_op OF fold_body FOR EACH orbit LPAREN ident RPAREN IN orbit LPAREN node_path RPAREN {
       ExprPtr path = $13;
       rift::ast::Ident var = $8;
-      $$ = make_expr(Expr::Kind::Fold, @$);
+      $$ = std::move($3);  // the Fold fold_body made, with its lets
+      $$->loc = @$;
       $$->op = $1;
       $$->op_loc = @1;
-      $$->args.push_back($3);
       $$->orbit = $6;
       $$->var = var.text;
       $$->var_loc = var.loc;
@@ -751,6 +753,29 @@ primary
       $$->args.push_back($3);
       $$->args.push_back($5);
       $$ = deepen(std::move($$), ctx);
+    }
+  ;
+
+/* The value a fold aggregates: an expression, or lets then `return` the
+   value, as in a function body. Makes the Fold node; the rule above fills it. */
+fold_body
+  : expr {
+      $$ = make_expr(Expr::Kind::Fold, @$);
+      $$->args.push_back($1);
+    }
+  | LBRACE fold_lets RETURN expr SEMI RBRACE {
+      $$ = make_expr(Expr::Kind::Fold, @$);
+      $$->lets = $2;
+      for (const rift::ast::Let& l : $$->lets) $$->depth = std::max($$->depth, l.value->depth + 1);
+      $$->args.push_back($4);
+    }
+  ;
+
+fold_lets
+  : %empty { }
+  | fold_lets LET ident ASSIGN expr SEMI {
+      $$ = $1;
+      $$.push_back(rift::ast::Let{$3, $5});
     }
   ;
 

@@ -9,11 +9,6 @@
 
 namespace rift::ast {
 
-struct Ident {
-  std::string text;
-  Location loc;
-};
-
 struct NodeDecl {
   Ident name;
   Label label;
@@ -42,12 +37,6 @@ struct Pattern {
   std::vector<NodeDecl> nodes;
   std::vector<Arc> arcs;
   std::vector<Assign> assigns;  // only meaningful on the right
-};
-
-struct Let {
-  Ident name;
-  ExprPtr value;
-  mutable int uses = 0;  // counted by resolve/ for -Wunused-variable
 };
 
 /// One `let` or `when` of a body, in the order the file writes them: a guard

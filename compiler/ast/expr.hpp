@@ -23,6 +23,18 @@ struct Label {
 struct Expr;
 using ExprPtr = std::unique_ptr<Expr>;
 
+struct Ident {
+  std::string text;
+  Location loc;
+};
+
+/// `let name = value;` of a body, a function or a fold.
+struct Let {
+  Ident name;
+  ExprPtr value;
+  mutable int uses = 0;  // counted by resolve/ for -Wunused-variable
+};
+
 struct Expr {
   enum class Kind {
     IntLit,   // integer
@@ -55,6 +67,9 @@ struct Expr {
   std::string var;  // Fold: the dart variable bound to each sub-orbit
   Location var_loc;
   std::vector<ExprPtr> args;
+  /// Fold: the lets of its body (`sum of { let a = ...; return a * a; } for
+  /// each ...`), in order, each seeing the dart variable and the ones before it.
+  std::vector<Let> lets;
   int depth = 1;  // of the tree below; the parser caps it so passes may recurse safely
   // What names refer to and the types of expressions are not here: resolve/
   // and check/ record them in side tables (resolve::Symbols::binding,

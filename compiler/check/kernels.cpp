@@ -1,5 +1,7 @@
 #include "check/kernels.hpp"
 
+#include "ast/camel_case.hpp"
+
 #include <map>
 #include <set>
 #include <string>
@@ -55,26 +57,11 @@ void check_kernels(const ast::Program& program, const resolve::Symbols& /*symbol
 
 namespace rift::check {
 
-std::string camel_case(std::string_view name) {
-  std::string out;
-  bool upper = true;
-  for (char c : name) {
-    if (c == '_') {
-      if (upper) out += '_';  // keep runs of underscores: names stay distinct
-      upper = true;
-      continue;
-    }
-    out += upper && c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c;
-    upper = false;
-  }
-  return out;
-}
-
 void check_generated_names(const ast::Program& program, const resolve::Symbols& symbols,
                            diag::Diagnostics& diags) {
   std::map<std::string, const ast::Ident*> classes;
   auto add = [&](const ast::Ident& name, const char* suffix) {
-    const std::string cpp = camel_case(name.text) + suffix;
+    const std::string cpp = ast::camel_case(name.text) + suffix;
     auto [it, fresh] = classes.emplace(cpp, &name);
     if (fresh) return;
     diags

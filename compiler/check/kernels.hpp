@@ -27,7 +27,4 @@ void check_kernels(const ast::Program& program, const resolve::Symbols& symbols,
 void check_generated_names(const ast::Program& program, const resolve::Symbols& symbols,
                            diag::Diagnostics& diags);
 
-/// "global_edge" -> "GlobalEdge" (runs of underscores are kept after the first).
-std::string camel_case(std::string_view name);
-
 }  // namespace rift::check

@@ -90,6 +90,7 @@ class TypeChecker {
     check_hops(e);
     check_orbit_type(e.orbit, dimension_, "a 'for each'", diags_);
     check_orbit_type(e.outer, dimension_, "a 'for each'", diags_);
+    lets(e.lets);
     const Type t = expr(*e.args[0]);
     if (t == Type::Error) return t;
     if (e.op == "count") {

@@ -14,6 +14,7 @@
 #include "lower/derivative.hpp"
 #include "lower/interaction_plan.hpp"
 #include "lower/kernel_plan.hpp"
+#include "lower/pack_plan.hpp"
 #include "parse/loader.hpp"
 #include "parse/state_embeddings.hpp"
 #include "resolve/resolve.hpp"
@@ -115,16 +116,10 @@ void generate(const ast::Program& program, const Checked& checked,
   emit::PackModel model;
   model.line_directives = options.line_directives;
   model.program = &program;
-  model.symbols = &checked.symbols;
-  model.types = &checked.types;
-  model.rules = &checked.rules;
-  model.interactions = &checked.interactions;
-  // lower: every interaction to its kernel and its body in the IR.
-  std::vector<lower::InteractionPlan> interaction_plans;
-  interaction_plans.reserve(checked.interactions.size());
-  for (const check::CheckedInteraction& ci : checked.interactions)
-    interaction_plans.push_back(lower::plan_interaction(ci, checked.symbols, checked.types));
-  model.interaction_plans = &interaction_plans;
+  // lower: every declaration to its plan, its expressions in the IR.
+  const lower::PackPlan plan = lower::plan_pack(program, checked.rules, checked.interactions,
+                                                checked.symbols, checked.types);
+  model.plan = &plan;
   model.pack = program.files.empty() ? "pack" : program.files.front().pack.text;
   model.pack_namespace = "rift::packs::" + model.pack;
   const emit::GeneratedPack pack = emit::generate_pack(model, sources);

@@ -33,33 +33,33 @@ void write_wanted_lets(Writer& w, BodyRenderer& r, const ir::Body& body,
   }
 }
 
-std::set<std::string> criterion_embeddings(const ast::Criterion& crit) {
-  std::set<std::string> used;
-  for (const auto& l : crit.lets)
-    embeddings_read(*l.value, used);
-  embeddings_read(*crit.measure, used);
-  for (const auto& a : crit.apply_args)
-    embeddings_read(*a.value, used);
+std::vector<std::string> criterion_embeddings(const lower::CriterionPlan& plan) {
+  std::vector<std::string> used;
+  const ir::Graph& g = plan.body.graph;
+  for (const ir::Let& l : plan.body.lets)
+    lower::embeddings_read(g, l.value, used);
+  lower::embeddings_read(g, plan.measure, used);
+  lower::embeddings_read(g, plan.threshold, used);
+  for (ir::ExprId a : plan.args)
+    lower::embeddings_read(g, a, used);
   return used;
 }
 
-/// Whether the candidate carries an apply argument (vec3 arguments named
+/// Whether the candidate carries apply argument k (vec3 arguments named
 /// `normal` and `point`).
-
-bool carried(const ast::ApplyArg& a, const check::ExprTypes& types) {
-  return types.of(*a.value) == ast::Type::Vec3 &&
-         (a.name.text == "normal" || a.name.text == "point");
+bool carried(const lower::CriterionPlan& plan, std::size_t k) {
+  const std::string& name = plan.criterion->apply_args[k].name.text;
+  return plan.body.graph[plan.args[k]].type == ast::Type::Vec3 &&
+         (name == "normal" || name == "point");
 }
 
 }  // namespace
 
-void declare_criterion(Writer& w, const ast::Criterion& crit, const PackModel& model) {
-  const std::vector<ast::Param>& rule_params = *model.symbols->callee_params(crit.rule.text);
-  const lower::CriterionPlan plan =
-      lower::plan_criterion(crit, rule_params, *model.symbols, *model.types);
+void declare_criterion(Writer& w, const lower::CriterionPlan& plan, const PackModel& model) {
+  const ast::Criterion& crit = *plan.criterion;
   const std::string cls = criterion_class(crit.name.text);
   const std::string params = component_params_struct(crit.name.text);
-  declare_component_params(w, params, crit.params, *model.types);
+  declare_component_params(w, params, crit.params, model);
   w.line("/// Criterion '" + crit.name.text + "': applies rule '" + crit.rule.text +
          "' where its measure passes.");
   w.open("class " + cls + " final : public rift::Criterion {");
@@ -79,9 +79,8 @@ void declare_criterion(Writer& w, const ast::Criterion& crit, const PackModel& m
   w.line(params + " p_;");
   // Not every body reads a pack-level parameter; clang warns of an unused field.
   w.line("[[maybe_unused]] Params pack_;");
-  for (const std::string& name : criterion_embeddings(crit)) {
-    w.line("rift::Embedding<" + storage_type(model.symbols->embedding(name)->type) + "> " +
-           embedding_var(name) + ";");
+  for (const std::string& name : criterion_embeddings(plan)) {
+    w.line("rift::Embedding<" + embedding_storage(model, name) + "> " + embedding_var(name) + ";");
   }
   // collect() is const to its callers; its cells and block lists are its scratch.
   w.line("/// The cells collect() visits, kept while the map's links do not change.");
@@ -101,12 +100,10 @@ void declare_criterion(Writer& w, const ast::Criterion& crit, const PackModel& m
   w.line();
 }
 
-void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& model) {
+void emit_criterion(Writer& w, const lower::CriterionPlan& plan, const PackModel& model) {
+  const ast::Criterion& crit = *plan.criterion;
   const std::string cls = criterion_class(crit.name.text);
   const std::string user = "criterion '" + crit.name.text + "'";
-  const std::vector<ast::Param>& rule_params = *model.symbols->callee_params(crit.rule.text);
-  const lower::CriterionPlan plan =
-      lower::plan_criterion(crit, rule_params, *model.symbols, *model.types);
   const ir::Body& b = plan.body;
   const RenderContext ctx = criterion_context(b);
   RenderContext collect_ctx = ctx;
@@ -116,10 +113,9 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
   w.line();
   w.open("void " + cls + "::initialise(rift::GMap& g) {");
   w.line(model.pack_namespace + "::declare_embeddings(g);");
-  for (const std::string& name : criterion_embeddings(crit)) {
-    w.line(embedding_var(name) + " = require_embedding<" +
-           storage_type(model.symbols->embedding(name)->type) + ">(g, " + quote(name) + ", " +
-           quote(user) + ");");
+  for (const std::string& name : criterion_embeddings(plan)) {
+    w.line(embedding_var(name) + " = require_embedding<" + embedding_storage(model, name) +
+           ">(g, " + quote(name) + ", " + quote(user) + ");");
   }
   w.close();
   w.line();
@@ -149,7 +145,7 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
     // (values are shared across both, folds are walked together within each).
     std::vector<ir::ExprId> roots = {plan.measure, plan.threshold}, payload;
     for (std::size_t k = 0; k < crit.apply_args.size(); ++k) {
-      if (!carried(crit.apply_args[k], *model.types)) continue;
+      if (!carried(plan, k)) continue;
       lower::lets_read(b, plan.args[k], for_payload);
       payload.push_back(plan.args[k]);
     }
@@ -175,7 +171,7 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
     write_wanted_lets(w, r, b, for_payload, written);
     for (std::size_t k = 0; k < crit.apply_args.size(); ++k) {
       const ast::ApplyArg& a = crit.apply_args[k];
-      if (!carried(a, *model.types)) continue;
+      if (!carried(plan, k)) continue;
       write_rendered(w, r, a.value->loc, "c." + a.name.text + " = ", plan.args[k], ";");
     }
   }
@@ -189,7 +185,7 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
   std::vector<bool> wanted(b.lets.size(), false), written(b.lets.size(), false);
   std::vector<ir::ExprId> roots;
   for (std::size_t k = 0; k < crit.apply_args.size(); ++k) {
-    if (carried(crit.apply_args[k], *model.types)) continue;
+    if (carried(plan, k)) continue;
     lower::lets_read(b, plan.args[k], wanted);
     roots.push_back(plan.args[k]);
   }
@@ -209,7 +205,7 @@ void emit_criterion(Writer& w, const ast::Criterion& crit, const PackModel& mode
   for (std::size_t k = 0; k < crit.apply_args.size(); ++k) {
     const ast::ApplyArg& a = crit.apply_args[k];
     const std::string field = "args." + member_name(a.name.text);
-    if (carried(a, *model.types)) {
+    if (carried(plan, k)) {
       w.line(field + " = candidate." + a.name.text + ";");
       continue;
     }
@@ -247,12 +243,12 @@ void declare_rule_class(Writer& w, const std::string& name, std::size_t hook_cou
 }
 
 void emit_rule_class(Writer& w, const std::string& name, const std::vector<ast::Param>& params,
-                     const check::ExprTypes& types) {
+                     const PackModel& model) {
   const std::string cls = rule_class(name);
   w.open(cls + "::" + cls + "(const Params& pack) : pack_(pack) {");
   if (!params.empty()) {
     w.open("specs_ = {");
-    write_param_specs(w, params, false, types);
+    write_param_specs(w, params, false, model);
     w.close("};");
   }
   w.close();

@@ -4,18 +4,15 @@
 
 namespace rift::emit {
 
-void embeddings_read(const ast::Expr& e, std::set<std::string>& out) {
-  if (e.kind == ast::Expr::Kind::Read || e.kind == ast::Expr::Kind::Collect) out.insert(e.name);
-  for (const auto& a : e.args)
-    embeddings_read(*a, out);
+std::string embedding_storage(const PackModel& model, const std::string& name) {
+  return storage_type(model.plan->embedding_types.at(name));
 }
 
-void fetch_embeddings(Writer& w, const std::set<std::string>& names,
-                      const resolve::Symbols& symbols, const std::string& user) {
+void fetch_embeddings(Writer& w, const std::vector<std::string>& names, const PackModel& model,
+                      const std::string& user) {
   for (const std::string& name : names) {
-    const ast::Embedding* emb = symbols.embedding(name);
-    w.line("auto " + embedding_var(name) + " = require_embedding<" + storage_type(emb->type) +
-           ">(g, " + quote(name) + ", " + quote(user) + ");");
+    w.line("auto " + embedding_var(name) + " = require_embedding<" +
+           embedding_storage(model, name) + ">(g, " + quote(name) + ", " + quote(user) + ");");
   }
 }
 
@@ -36,26 +33,27 @@ std::string write_rendered(Writer& w, BodyRenderer& r, const diag::Location& loc
   return code;
 }
 
-void write_lets(Writer& w, const std::vector<ast::Let>& lets, const ExprContext& ctx) {
-  for (const ast::Let& l : lets) {
-    write_sourced(w, l.value->loc,
-                  "[[maybe_unused]] const " + cpp_type(ctx.types->of(*l.value)) + " " +
-                      let_name(l.name.text) + " = " + emit_expr(*l.value, ctx) + ";");
-  }
+RenderContext dart_context(const ir::Body& body) {
+  RenderContext ctx;
+  ctx.dart = [&body](int node) { return dart_name(body.nodes[static_cast<std::size_t>(node)]); };
+  return ctx;
 }
 
-void write_body(Writer& w, const std::vector<ast::Let>& lets,
-                const std::vector<ast::ExprPtr>& whens, const std::vector<ast::BodyStmt>& body,
-                const ExprContext& ctx, const std::string& on_fail) {
-  for (const ast::BodyStmt& st : body) {
-    if (st.kind == ast::BodyStmt::Kind::Let) {
-      const ast::Let& l = lets[st.index];
-      write_sourced(w, l.value->loc,
-                    "[[maybe_unused]] const " + cpp_type(ctx.types->of(*l.value)) + " " +
-                        let_name(l.name.text) + " = " + emit_expr(*l.value, ctx) + ";");
-    } else {
-      const ast::Expr& cond = *whens[st.index];
-      write_sourced(w, cond.loc, "if (!(" + emit_expr(cond, ctx) + ")) " + on_fail);
+void write_statements(Writer& w, const ir::Body& body, const RenderContext& ctx,
+                      const std::vector<ir::ExprId>& roots, const std::string* on_fail) {
+  std::vector<bool> wanted(body.lets.size(), false);
+  for (ir::ExprId root : roots)
+    lower::lets_read(body, root, wanted);
+  for (const ir::Stmt& st : body.stmts) {
+    if (st.kind == ir::Stmt::Kind::Let) {
+      const auto i = static_cast<std::size_t>(st.let);
+      if (!wanted[i]) continue;
+      const ir::Let& l = body.lets[i];
+      write_sourced(w, l.loc,
+                    "const " + cpp_type(body.graph[l.value].type) + " " + let_name(l.name) + " = " +
+                        render(body.graph, l.value, ctx) + ";");
+    } else if (on_fail) {
+      write_sourced(w, st.loc, "if (!(" + render(body.graph, st.cond, ctx) + ")) " + *on_fail);
     }
   }
 }

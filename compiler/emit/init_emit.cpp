@@ -7,36 +7,20 @@
 
 namespace rift::emit {
 
-namespace {
-
-ExprContext dart_context(const PackModel& model) {
-  ExprContext ctx;
-  ctx.dart = [](const std::string& node) { return dart_name(node); };
-  ctx.symbols = model.symbols;
-  ctx.types = model.types;
-  return ctx;
-}
-
-}  // namespace
-
-std::string constant_expr(const ast::Expr& e, ast::Type to, const check::ExprTypes& types) {
-  if (e.kind == ast::Expr::Kind::IntLit && to == ast::Type::Real) {
-    return real_literal(static_cast<double>(e.integer));
-  }
-  ExprContext ctx;
-  ctx.dart = [](const std::string&) { return std::string("rift::kNoDart"); };
-  ctx.types = &types;
-  return convert(emit_expr(e, ctx), types.of(e), to);
+std::string constant_expr(const ast::Expr& e, const PackModel& model) {
+  const lower::Constants& c = model.plan->constants;
+  RenderContext ctx;
+  ctx.dart = [](int) { return std::string("rift::kNoDart"); };
+  return render(c.graph, c.of.at(&e), ctx);
 }
 
 void declare_component_params(Writer& w, const std::string& name,
-                              const std::vector<ast::Param>& params,
-                              const check::ExprTypes& types) {
+                              const std::vector<ast::Param>& params, const PackModel& model) {
   w.line("/// Parameters given by the scene.");
   w.open("struct " + name + " {");
   for (const ast::Param& p : params) {
     const std::string value =
-        p.default_value ? constant_expr(*p.default_value, p.type, types) : zero_of(p.type);
+        p.default_value ? constant_expr(*p.default_value, model) : zero_of(p.type);
     w.line(cpp_type(p.type) + " " + member_name(p.name.text) + " = " + value + ";" +
            (p.description.empty() ? "" : "  ///< " + p.description));
   }
@@ -72,12 +56,12 @@ void emit_component_params_reader(Writer& w, const std::string& name, const std:
 }
 
 void write_param_specs(Writer& w, const std::vector<ast::Param>& params, bool from_scene,
-                       const check::ExprTypes& types) {
+                       const PackModel& model) {
   for (const ast::Param& p : params) {
     std::string def = "std::nullopt";
     if (from_scene && p.default_value) {
-      def = "rift::Value(" + storage_type(p.type) + "(" +
-            constant_expr(*p.default_value, p.type, types) + "))";
+      def = "rift::Value(" + storage_type(p.type) + "(" + constant_expr(*p.default_value, model) +
+            "))";
     }
     const bool positive = p.bound == ast::Param::Bound::Positive;
     const bool non_negative = p.bound == ast::Param::Bound::NonNegative;
@@ -91,24 +75,18 @@ void emit_initialisers(Writer& w, const PackModel& model) {
   w.open("void run_initialisers(rift::GMap& g, const Params& params) {");
   w.line("(void)g;");
   w.line("(void)params;");
-  const ExprContext ctx = dart_context(model);
-  for (const ast::File& file : model.program->files) {
-    for (const ast::Init& init : file.inits) {
-      const ast::Embedding* target = model.symbols->target(init);
-      std::set<std::string> used;
-      embeddings_read(*init.value, used);
-      used.insert(init.embedding.text);
-      w.open("{  // init " + init.embedding.text);
-      fetch_embeddings(w, used, *model.symbols, "init " + init.embedding.text);
-      w.open("g.for_each_cell(" + orbit_code(target->orbit.dims) + ", [&](rift::Dart " +
-             dart_name(init.dart.text) + ") {");
-      write_sourced(
-          w, init.value->loc,
-          embedding_var(init.embedding.text) + "[" + dart_name(init.dart.text) + "] = " +
-              convert(emit_expr(*init.value, ctx), ctx.types->of(*init.value), target->type) + ";");
-      w.close("});");
-      w.close();
-    }
+  for (const lower::InitialiserPlan& init : model.plan->initialisers) {
+    const lower::Write& a = init.write;
+    const RenderContext ctx = dart_context(init.body);
+    const std::string dart = ctx.dart(a.node);
+    w.open("{  // init " + a.embedding);
+    fetch_embeddings(w, init.embeddings, model, "init " + a.embedding);
+    w.open("g.for_each_cell(" + orbit_code(init.orbit) + ", [&](rift::Dart " + dart + ") {");
+    write_sourced(w, a.loc,
+                  embedding_var(a.embedding) + "[" + dart +
+                      "] = " + render(init.body.graph, a.value, ctx) + ";");
+    w.close("});");
+    w.close();
   }
   w.close();
   w.line();

@@ -328,9 +328,13 @@ std::string BodyRenderer::index(ExprId id) {
 }
 
 std::string BodyRenderer::place(const ir::Place& p) {
-  std::string d = ctx_.dart(p.node);
+  return render_place(p, ctx_);
+}
+
+std::string render_place(const ir::Place& p, const RenderContext& ctx) {
+  std::string d = ctx.dart(p.node);
   for (int h : p.hops)
-    d = ctx_.map + ".alpha(" + d + ", " + std::to_string(h) + ")";
+    d = ctx.map + ".alpha(" + d + ", " + std::to_string(h) + ")";
   return d;
 }
 

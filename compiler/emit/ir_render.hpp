@@ -119,6 +119,9 @@ class BodyRenderer {
 /// One expression of a body without sharing.
 std::string render(const ir::Graph& g, ir::ExprId id, const RenderContext& ctx);
 
+/// The dart a place stands for: `g.alpha(d_a, 1)` for `a@1`.
+std::string render_place(const ir::Place& p, const RenderContext& ctx);
+
 /// A real literal as C++ ("0.5", "2.0").
 std::string real_literal(double v);
 

@@ -118,7 +118,7 @@ int group_key_words(const Kernel& k, const PackModel& model) {
   for (const lower::SlotUse& u : k.plan->kernel.slots)
     if (u.vertex) ++words;
   for (const auto& [name, slot] : k.reads) {
-    const ast::Type t = model.symbols->embedding(name)->type;
+    const ast::Type t = model.plan->embedding_types.at(name);
     words += t == ast::Type::Vec3 ? 3 : t == ast::Type::Mat3 ? 9 : 1;
   }
   return words;
@@ -219,9 +219,8 @@ void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
   w.open("void " + k.cls + "::initialise(rift::GMap& g) {");
   w.line(model.pack_namespace + "::declare_embeddings(g);");
   for (const std::string& name : plan.embeddings) {
-    const ast::Embedding* emb = model.symbols->embedding(name);
-    w.line(embedding_var(name) + " = require_embedding<" + storage_type(emb->type) + ">(g, " +
-           quote(name) + ", " + quote(user) + ");");
+    w.line(embedding_var(name) + " = require_embedding<" + embedding_storage(model, name) +
+           ">(g, " + quote(name) + ", " + quote(user) + ");");
   }
   if (k.inter->tagged) {
     w.line("// §3.2: the dart each element is first matched from fixes the order of its corners.");
@@ -396,8 +395,11 @@ void write_add_forces_all(Writer& w, const Kernel& k) {
   std::set<std::string> stores;
   for (const ir::Force& f : b.forces)
     stores.insert(f.embedding);
+  // Not asked for unless storing: a column nothing reads has no storage
+  // (rift::ForceModel::set_store_forces), and values() would give it some.
   for (const std::string& e : stores)
-    w.line("rift::Vec3* const stored_" + e + " = " + embedding_var(e) + ".values().data();");
+    w.line("rift::Vec3* const stored_" + e + " = store ? " + embedding_var(e) +
+           ".values().data() : nullptr;");
   w.open("for (const Match& m : ms) {");
   w.line("Result r;");
   if (forces) {
@@ -756,7 +758,7 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
   const ast::Interaction& inter = *plan.interaction;
   const ir::Body& b = plan.body;
   const std::string params = component_params_struct(inter.name.text);
-  declare_component_params(w, params, inter.params, *model.types);
+  declare_component_params(w, params, inter.params, model);
   w.line("/// Interaction '" + inter.name.text + "' on " + orbit_text(inter.support.dims) +
          (inter.tagged ? ", tagged" : "") + ": a kernel for rift::CachedInteraction.");
   w.open("class " + k.cls + " {");
@@ -848,8 +850,7 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
   w.line("/// The columns the body reads, loaded once per pass.");
   w.open("struct Columns {");
   for (const std::string& name : k.columns) {
-    w.line("const " + storage_type(model.symbols->embedding(name)->type) + "* " +
-           member_name(name) + ";");
+    w.line("const " + embedding_storage(model, name) + "* " + member_name(name) + ";");
   }
   w.close("};");
   w.line("/// What one evaluation of the body gives.");
@@ -874,8 +875,7 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
   // Not every body reads a pack-level parameter; clang warns of an unused field.
   w.line("[[maybe_unused]] Params pack_;");
   for (const std::string& name : plan.embeddings) {
-    w.line("rift::Embedding<" + storage_type(model.symbols->embedding(name)->type) + "> " +
-           embedding_var(name) + ";");
+    w.line("rift::Embedding<" + embedding_storage(model, name) + "> " + embedding_var(name) + ";");
   }
   if (inter.tagged) w.line("rift::Embedding<rift::Bool> tag_;");
   w.close("};");

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <set>
 
-#include "check/kernels.hpp"
+#include "ast/camel_case.hpp"
 
 namespace rift::emit {
 
@@ -45,7 +45,7 @@ std::string storage_type(ast::Type t) {
 }
 
 std::string camel_name(std::string_view name) {
-  return check::camel_case(name);
+  return ast::camel_case(name);
 }
 
 std::string kernel_class(std::string_view interaction) {

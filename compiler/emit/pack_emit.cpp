@@ -28,18 +28,15 @@ void for_each_criterion(const PackModel& m, F&& f) {
   }
 }
 
-// Appends the embeddings `e` reads (Read and Collect nodes) that `names`
+// Appends the embeddings `root` reads (Read and Collect nodes) that `names`
 // does not hold yet, in order of first use.
-void add_embedding_reads(const ast::Expr& e, const resolve::Symbols& symbols,
-                         std::vector<std::string>& names) {
-  const ast::Embedding* embedding = symbols.binding(e).embedding;
-  if ((e.kind == ast::Expr::Kind::Read || e.kind == ast::Expr::Kind::Collect) && embedding &&
-      std::find(names.begin(), names.end(), embedding->name.text) == names.end()) {
-    names.push_back(embedding->name.text);
-  }
-  for (const ast::ExprPtr& a : e.args) {
-    if (a) add_embedding_reads(*a, symbols, names);
-  }
+void add_embedding_reads(const ir::Graph& g, ir::ExprId root, std::vector<std::string>& names) {
+  ir::visit(g, root, [&](const ir::Node& n) {
+    const bool reads = n.op == ir::Op::Read || n.op == ir::Op::Position ||
+                       n.op == ir::Op::Velocity || n.op == ir::Op::Collect;
+    if (reads && std::find(names.begin(), names.end(), n.embedding) == names.end())
+      names.push_back(n.embedding);
+  });
 }
 
 // `{"a", "b"}`: a list of names as C++ initialiser.
@@ -58,35 +55,11 @@ void for_each_script(const PackModel& m, F&& f) {
   }
 }
 
-/// Whether any expression, assignment or init of the pack reads or writes `e`.
-bool is_used(const PackModel& m, const ast::Embedding& e) {
-  const resolve::Symbols& s = *m.symbols;
-  for (const auto& [expr, binding] : s.bindings) {
-    if (binding.embedding == &e) return true;
-  }
-  for (const auto& [assign, target] : s.assign_targets) {
-    if (target == &e) return true;
-  }
-  for (const auto& [init, target] : s.init_targets) {
-    if (target == &e) return true;
-  }
-  return false;
-}
-
-/// Calls f on every embedding the pack declares on a map, in source order:
-/// its own (not their restatements of the simulator's state, which resolve
-/// checked against rift's), and those of the state that it reads or writes.
-/// The other state columns are the runtime's to create: a pack that does not
-/// read vertex_force must not make the simulator fill it every step.
+/// Calls f on every embedding the pack declares on a map (lower::PackPlan::declared).
 template <class F>
 void for_each_embedding(const PackModel& m, F&& f) {
-  for (const ast::File& file : m.program->files) {
-    for (const ast::Embedding& e : file.embeddings) {
-      if (m.symbols->embedding(e.name.text) != &e) continue;
-      if (file.builtin && !is_used(m, e)) continue;
-      f(e);
-    }
-  }
+  for (const ast::Embedding* e : m.plan->declared)
+    f(*e);
 }
 
 std::string register_function(const std::string& pack) {
@@ -120,7 +93,7 @@ void write_header(Writer& w, const PackModel& m) {
   for (const ast::File& f : m.program->files) {
     for (const ast::PackParam& p : f.params) {
       w.line(cpp_type(p.type) + " " + member_name(p.name.text) + " = " +
-             constant_expr(*p.value, p.type, *m.types) + ";");
+             constant_expr(*p.value, m) + ";");
     }
   }
   w.close("};");
@@ -132,7 +105,7 @@ void write_header(Writer& w, const PackModel& m) {
     }
     w.close("};");
   };
-  for (const check::CheckedRule& cr : *m.rules)
+  for (const lower::RulePlan& cr : m.plan->rules)
     args_struct(cr.rule->name.text, cr.rule->params);
   for_each_script(m, [&](const ast::Script& s) { args_struct(s.name.text, s.params); });
   w.line();
@@ -142,7 +115,7 @@ void write_header(Writer& w, const PackModel& m) {
   w.line("/// Runs the pack's initialisers, in the order they are written.");
   w.line("void run_initialisers(rift::GMap& g, const Params& params = {});");
   w.line();
-  for (const check::CheckedRule& cr : *m.rules) {
+  for (const lower::RulePlan& cr : m.plan->rules) {
     w.line("/// Rule '" + cr.rule->name.text +
            "': true when it matched at `hooks` and was applied; every dart it created,");
     w.line("/// relinked, deleted or moved to another embedding slot is appended to `touched`.");
@@ -158,11 +131,12 @@ void write_header(Writer& w, const PackModel& m) {
            "std::vector<rift::Dart>* touched = nullptr);");
   });
   w.line();
-  for (const lower::InteractionPlan& ip : *m.interaction_plans)
+  for (const lower::InteractionPlan& ip : m.plan->interactions)
     declare_kernel(w, ip, m);
-  for_each_criterion(m, [&](const ast::Criterion& c) { declare_criterion(w, c, m); });
-  for (const check::CheckedRule& cr : *m.rules)
-    declare_rule_class(w, cr.rule->name.text, cr.graph.hooks.size());
+  for (const lower::CriterionPlan& c : m.plan->criteria)
+    declare_criterion(w, c, m);
+  for (const lower::RulePlan& cr : m.plan->rules)
+    declare_rule_class(w, cr.rule->name.text, cr.hooks);
   for_each_script(
       m, [&](const ast::Script& s) { declare_rule_class(w, s.name.text, s.hooks.size()); });
   w.line("/// The pack as a simulator sees it: embeddings, catalog and factories.");
@@ -202,8 +176,8 @@ void write_header(Writer& w, const PackModel& m) {
   w.line("void " + register_function(m.pack) + "(rift::PackRegistry& registry);");
 }
 
-std::string default_of(const ast::Embedding& e, const check::ExprTypes& types) {
-  return e.default_value ? constant_expr(*e.default_value, e.type, types) : zero_of(e.type);
+std::string default_of(const ast::Embedding& e, const PackModel& m) {
+  return e.default_value ? constant_expr(*e.default_value, m) : zero_of(e.type);
 }
 
 void write_pack_class(Writer& w, const PackModel& m) {
@@ -213,23 +187,23 @@ void write_pack_class(Writer& w, const PackModel& m) {
   const std::string description =
       !doc.empty() ? doc
                    : "rule pack '" + m.pack + "' (" + std::to_string(m.program->dimension) +
-                         "D): " + std::to_string(m.interactions->size()) + " interaction(s), " +
-                         std::to_string(criteria) + " criterion(s), " +
-                         std::to_string(m.rules->size()) + " rule(s)";
+                         "D): " + std::to_string(m.plan->interactions.size()) +
+                         " interaction(s), " + std::to_string(criteria) + " criterion(s), " +
+                         std::to_string(m.plan->rules.size()) + " rule(s)";
   w.open("Pack::Pack(const Params& params) : params_(params), description_(" + quote(description) +
          ") {");
   for_each_embedding(m, [&](const ast::Embedding& e) {
     w.line("embeddings_.push_back({" + quote(e.name.text) + ", " + value_type_enum(e.type) + ", " +
            orbit_code(e.orbit.dims) + ", " + policy_of(e) + ", rift::Value(" +
-           storage_type(e.type) + "(" + default_of(e, *m.types) + "))});");
+           storage_type(e.type) + "(" + default_of(e, m) + "))});");
   });
-  for (const check::CheckedInteraction& ci : *m.interactions) {
+  for (const lower::InteractionPlan& ci : m.plan->interactions) {
     if (!ci.interaction->tagged) continue;
     w.line("embeddings_.push_back({" + quote(tag_embedding(ci.interaction->name.text)) +
            ", rift::ValueType::kBool, rift::Orbit(), rift::MergePolicy::kKeepFirst, "
            "rift::Value(rift::Bool(false))});");
   }
-  for (const check::CheckedInteraction& ci : *m.interactions) {
+  for (const lower::InteractionPlan& ci : m.plan->interactions) {
     const ast::Interaction& in = *ci.interaction;
     std::string forces;
     std::vector<std::string> stores;
@@ -242,26 +216,37 @@ void write_pack_class(Writer& w, const PackModel& m) {
                               (forces.empty() ? "" : "; forces stored in " + forces);
     w.open("catalog_.interactions.push_back({" + quote(in.name.text) + ", " +
            quote(in.description.empty() ? about : in.description + " (" + about + ")") + ", {");
-    write_param_specs(w, in.params, true, *m.types);
+    write_param_specs(w, in.params, true, m);
     w.close("}, kDimension, " + name_list(stores) + "});");
   }
-  for_each_criterion(m, [&](const ast::Criterion& c) {
+  for (const lower::CriterionPlan& plan : m.plan->criteria) {
+    const ast::Criterion& c = *plan.criterion;
     const std::string about = "on " + orbit_text(c.orbit.dims) + "; applies rule " + c.rule.text;
     w.open("catalog_.criteria.push_back({" + quote(c.name.text) + ", " +
            quote(c.description.empty() ? about : c.description + " (" + about + ")") + ", {");
-    write_param_specs(w, c.params, true, *m.types);
+    write_param_specs(w, c.params, true, m);
     std::vector<std::string> reads;
-    for (const ast::Let& l : c.lets) {
-      if (l.value) add_embedding_reads(*l.value, *m.symbols, reads);
+    for (const ir::Let& l : plan.body.lets)
+      add_embedding_reads(plan.body.graph, l.value, reads);
+    add_embedding_reads(plan.body.graph, plan.measure, reads);
+    add_embedding_reads(plan.body.graph, plan.threshold, reads);
+    // What its rule is given and what a script of this pack it applies
+    // reads: the set-up stores the forces any of them reads (scene_setup.hpp).
+    for (ir::ExprId arg : plan.args)
+      add_embedding_reads(plan.body.graph, arg, reads);
+    for (const lower::ScriptPlan& script : m.plan->scripts) {
+      if (script.script->name.text != c.rule.text) continue;
+      for (const std::string& e : script.embeddings) {
+        if (std::find(reads.begin(), reads.end(), e) == reads.end()) reads.push_back(e);
+      }
     }
-    if (c.measure) add_embedding_reads(*c.measure, *m.symbols, reads);
     w.close("}, kDimension, {}, " + name_list(reads) + "});");
-  });
+  }
   w.close();
   w.line();
   w.open("std::vector<std::string> Pack::rule_names() const {");
   std::string names;
-  for (const check::CheckedRule& cr : *m.rules)
+  for (const lower::RulePlan& cr : m.plan->rules)
     names += (names.empty() ? "" : ", ") + quote(cr.rule->name.text);
   for_each_script(
       m, [&](const ast::Script& s) { names += (names.empty() ? "" : ", ") + quote(s.name.text); });
@@ -276,7 +261,7 @@ void write_pack_class(Writer& w, const PackModel& m) {
   w.open(
       "std::unique_ptr<rift::ForceModel> Pack::make_interaction(const rift::ComponentUse& use) "
       "const {");
-  for (const check::CheckedInteraction& ci : *m.interactions) {
+  for (const lower::InteractionPlan& ci : m.plan->interactions) {
     const std::string& n = ci.interaction->name.text;
     w.open("if (use.name == " + quote(n) + ") {");
     w.line("return std::make_unique<" + interaction_class(n) + ">(" + component_params_struct(n) +
@@ -303,7 +288,7 @@ void write_pack_class(Writer& w, const PackModel& m) {
   w.line();
   w.open("std::unique_ptr<rift::Rule> Pack::make_rule(const std::string& name) const {");
   w.line("(void)name;");
-  for (const check::CheckedRule& cr : *m.rules) {
+  for (const lower::RulePlan& cr : m.plan->rules) {
     const std::string& n = cr.rule->name.text;
     w.line("if (name == " + quote(n) + ") return std::make_unique<" + rule_class(n) +
            ">(params_);");
@@ -320,7 +305,7 @@ void write_pack_class(Writer& w, const PackModel& m) {
 void write_declare(Writer& w, const PackModel& m) {
   bool any = false;
   for_each_embedding(m, [&](const ast::Embedding&) { any = true; });
-  for (const check::CheckedInteraction& ci : *m.interactions)
+  for (const lower::InteractionPlan& ci : m.plan->interactions)
     any = any || ci.interaction->tagged;
   // A pack may declare nothing: a topology pack that reads no embedding.
   w.open(any ? "void declare_embeddings(rift::GMap& g) {"
@@ -328,7 +313,7 @@ void write_declare(Writer& w, const PackModel& m) {
   for_each_embedding(m, [&](const ast::Embedding& e) {
     const std::string name = quote(e.name.text);
     const std::string orbit = orbit_code(e.orbit.dims);
-    const std::string def = default_of(e, *m.types);
+    const std::string def = default_of(e, m);
     w.open("if (!g.has_embedding(" + name + ")) {");
     w.line("g.declare_embedding<" + storage_type(e.type) + ">(" + name + ", " + orbit + ", " +
            policy_of(e) + ", " + storage_type(e.type) + "(" + def + "));");
@@ -343,7 +328,7 @@ void write_declare(Writer& w, const PackModel& m) {
            ");");
     w.close();
   });
-  for (const check::CheckedInteraction& ci : *m.interactions) {
+  for (const lower::InteractionPlan& ci : m.plan->interactions) {
     if (!ci.interaction->tagged) continue;
     const std::string name = quote(tag_embedding(ci.interaction->name.text));
     w.open("if (!g.has_embedding(" + name + ")) {");
@@ -382,7 +367,7 @@ GeneratedPack generate_pack(const PackModel& m, const diag::SourceManager& sourc
   w.line("using namespace rift::generated;");
   w.line();
   w.open("namespace {");
-  for (const check::CheckedInteraction& ci : *m.interactions) {
+  for (const lower::InteractionPlan& ci : m.plan->interactions) {
     const std::string& n = ci.interaction->name.text;
     emit_component_params_reader(w, component_params_struct(n), "interaction '" + n + "'",
                                  ci.interaction->params);
@@ -396,16 +381,17 @@ GeneratedPack generate_pack(const PackModel& m, const diag::SourceManager& sourc
   write_declare(w, m);
   w.line();
   emit_initialisers(w, m);
-  for (const check::CheckedRule& cr : *m.rules)
-    emit_rule(w, cr, m);
-  for_each_script(m, [&](const ast::Script& s) { emit_script(w, s, m); });
-  for (const lower::InteractionPlan& ip : *m.interaction_plans)
+  for (const lower::RulePlan& r : m.plan->rules)
+    emit_rule(w, r, m);
+  for (const lower::ScriptPlan& s : m.plan->scripts)
+    emit_script(w, s, m);
+  for (const lower::InteractionPlan& ip : m.plan->interactions)
     emit_kernel(w, ip, m);
-  for_each_criterion(m, [&](const ast::Criterion& c) { emit_criterion(w, c, m); });
-  for (const check::CheckedRule& cr : *m.rules)
-    emit_rule_class(w, cr.rule->name.text, cr.rule->params, *m.types);
-  for_each_script(
-      m, [&](const ast::Script& s) { emit_rule_class(w, s.name.text, s.params, *m.types); });
+  for (const lower::CriterionPlan& c : m.plan->criteria)
+    emit_criterion(w, c, m);
+  for (const lower::RulePlan& cr : m.plan->rules)
+    emit_rule_class(w, cr.rule->name.text, cr.rule->params, m);
+  for_each_script(m, [&](const ast::Script& s) { emit_rule_class(w, s.name.text, s.params, m); });
   write_pack_class(w, m);
   w.line("}  // namespace rift::packs::" + m.pack);
   w.line();

@@ -2,6 +2,8 @@
 // left node by its explicit arcs, verify links and injectivity, evaluate the
 // precondition and the right-node expressions on the match, then delete,
 // create, relink, fix embedding slots, write values and run the updates.
+#include <algorithm>
+
 #include "emit/emit_context.hpp"
 #include "emit/names.hpp"
 #include "lower/rule_plan.hpp"
@@ -24,29 +26,47 @@ std::string int_list(const std::vector<int>& v) {
   return out;
 }
 
-/// Opens the per-row loop and binds `d_<node>` for every node of a side.
-void open_row_loop(Writer& w, const check::PatternSide& side, bool right) {
+/// Opens the per-row loop and binds `d_<node>` for the nodes of a side
+/// (the first nodes of `body`) that `roots` read, directly or through the
+/// lets they read, or that `written` names.
+void open_row_loop(Writer& w, const std::vector<std::string>& side, bool right,
+                   const ir::Body& body, std::vector<ir::ExprId> roots,
+                   const std::vector<int>& written = {}) {
+  std::vector<bool> lets(body.lets.size(), false);
+  for (ir::ExprId root : roots)
+    lower::lets_read(body, root, lets);
+  for (std::size_t i = 0; i < lets.size(); ++i) {
+    if (lets[i]) roots.push_back(body.lets[i].value);
+  }
+  std::vector<bool> used(side.size(), false);
+  for (int v : written)
+    used[static_cast<std::size_t>(v)] = true;
+  for (ir::ExprId root : roots) {
+    ir::visit(body.graph, root, [&](const ir::Node& n) {
+      const bool placed = n.op == ir::Op::Position || n.op == ir::Op::Velocity ||
+                          n.op == ir::Op::Read || n.op == ir::Op::Collect || n.op == ir::Op::Fold;
+      const auto v = static_cast<std::size_t>(n.place.node);
+      if (placed && n.place.node >= 0 && v < used.size()) used[v] = true;
+    });
+  }
   w.open("for (std::size_t r = 0; r < rows; ++r) {");
-  for (std::size_t v = 0; v < side.nodes.size(); ++v) {
+  for (std::size_t v = 0; v < side.size(); ++v) {
+    if (!used[v]) continue;
     const int i = static_cast<int>(v);
-    w.line("[[maybe_unused]] const rift::Dart " + dart_name(side.nodes[v].name()) + " = " +
+    w.line("const rift::Dart " + dart_name(side[v]) + " = " +
            (right ? right_name(i) : left_name(i)) + "[r];");
   }
 }
 
-std::size_t nl_of(const check::RuleGraph& g) {
-  return g.left.nodes.size();
-}
-
 }  // namespace
 
-void emit_match(Writer& w, const check::RuleGraph& g, const lower::MatchPlan& match,
+void emit_match(Writer& w, const std::vector<std::string>& left, const lower::MatchPlan& match,
                 const std::string& fail) {
-  const std::size_t nl = g.left.nodes.size();
+  const std::size_t nl = left.size();
   w.line("s.left.resize(" + std::to_string(nl) + " * rows);");
   for (std::size_t v = 0; v < nl; ++v) {
     w.line("[[maybe_unused]] rift::Dart* const " + left_name(static_cast<int>(v)) +
-           " = s.left.data() + " + std::to_string(v) + " * rows;  // " + g.left.nodes[v].name());
+           " = s.left.data() + " + std::to_string(v) + " * rows;  // " + left[v]);
   }
   for (std::size_t j = 0; j < match.hooks.size(); ++j) {
     w.line("std::copy_n(s.rows.data() + " + std::to_string(j) + " * rows, rows, " +
@@ -71,40 +91,25 @@ void emit_match(Writer& w, const check::RuleGraph& g, const lower::MatchPlan& ma
   if (nl > 0) w.line("if (!distinct_darts(g, s.left.data(), s.left.size())) " + fail);
 }
 
-void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) {
-  const ast::Rule& rule = *cr.rule;
-  const check::RuleGraph& g = cr.graph;
-  const lower::MatchPlan match = lower::plan_match(g);
-  const lower::RewritePlan rewrite = lower::plan_rewrite(g);
+void emit_rule(Writer& w, const lower::RulePlan& plan, const PackModel& model) {
+  const ast::Rule& rule = *plan.rule;
+  const lower::RuleValues& values = plan.values;
+  const lower::MatchPlan& match = plan.match;
+  const lower::RewritePlan& rewrite = plan.rewrite;
   const std::string user = "rule '" + rule.name.text + "'";
-  ExprContext ctx;
-  ctx.dart = [](const std::string& node) { return dart_name(node); };
-  ctx.symbols = model.symbols;
-  ctx.types = model.types;
+  const RenderContext on_match = dart_context(values.match);
+  const RenderContext on_right = dart_context(values.rewritten);
 
-  std::set<std::string> used;
-  for (const auto& l : rule.lets)
-    embeddings_read(*l.value, used);
-  for (const auto& e : rule.whens)
-    embeddings_read(*e, used);
-  for (const auto& a : rule.right.assigns) {
-    embeddings_read(*a.value, used);
-    used.insert(a.embedding.text);
-  }
-  for (const auto& u : rule.updates) {
-    embeddings_read(*u.value, used);
-    used.insert(u.embedding.text);
-  }
-
-  w.line("// " + user + " (" + std::to_string(g.hooks.size()) + " hook(s))");
+  w.line("// " + user + " (" + std::to_string(plan.hooks) + " hook(s))");
   w.open("bool " + rule_function(rule.name.text) +
          "(rift::GMap& g, std::span<const rift::Dart> hooks, const " + rule.name.text +
          "_args& args, const Params& params, std::vector<rift::Dart>* touched) {");
   w.line("(void)args;");
   w.line("(void)params;");
-  w.line("if (g.dimension() != " + std::to_string(g.dimension) + ") throw std::invalid_argument(" +
-         quote(user + " needs a G-map of dimension " + std::to_string(g.dimension)) + ");");
-  w.line("if (hooks.size() != " + std::to_string(g.hooks.size()) + ") return false;");
+  w.line("if (g.dimension() != " + std::to_string(plan.dimension) +
+         ") throw std::invalid_argument(" +
+         quote(user + " needs a G-map of dimension " + std::to_string(plan.dimension)) + ");");
+  w.line("if (hooks.size() != " + std::to_string(plan.hooks) + ") return false;");
   w.open("for (rift::Dart h : hooks) {");
   w.line("if (!g.is_alive(h)) return false;");
   w.close();
@@ -119,48 +124,57 @@ void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) 
          std::to_string(match.hook_dims.size()) + ", s, rows)) return false;");
   w.line("[[maybe_unused]] const std::size_t label = " + std::to_string(match.hook_dims.size()) +
          ";");
-  fetch_embeddings(w, used, *model.symbols, user);
+  fetch_embeddings(w, values.embeddings, model, user);
 
-  emit_match(w, g, match, "return false;");
+  emit_match(w, plan.left, match, "return false;");
 
   // ---- precondition and values, on the match
-  if (!rule.whens.empty()) {
-    open_row_loop(w, g.left, false);
-    write_body(w, rule.lets, rule.whens, rule.body, ctx, "return false;");
+  const ir::Graph& mg = values.match.graph;
+  const bool guarded =
+      std::any_of(values.match.stmts.begin(), values.match.stmts.end(),
+                  [](const ir::Stmt& s) { return s.kind == ir::Stmt::Kind::When; });
+  if (guarded) {
+    const std::string fail = "return false;";
+    std::vector<ir::ExprId> conds;
+    for (const ir::Stmt& s : values.match.stmts) {
+      if (s.kind == ir::Stmt::Kind::When) conds.push_back(s.cond);
+    }
+    open_row_loop(w, plan.left, false, values.match, conds);
+    write_statements(w, values.match, on_match, conds, &fail);
     w.close();
   }
-  for (std::size_t k = 0; k < rule.right.assigns.size(); ++k) {
-    const ast::Assign& a = rule.right.assigns[k];
-    w.line("std::vector<" + cpp_type(model.symbols->target(a)->type) + "> value_" +
+  for (std::size_t k = 0; k < values.assigns.size(); ++k) {
+    w.line("std::vector<" + cpp_type(mg[values.assigns[k].value].type) + "> value_" +
            std::to_string(k) + "(rows);");
   }
-  if (!rule.right.assigns.empty()) {
-    open_row_loop(w, g.left, false);
-    write_lets(w, rule.lets, ctx);
-    for (std::size_t k = 0; k < rule.right.assigns.size(); ++k) {
-      const ast::Assign& a = rule.right.assigns[k];
-      write_sourced(w, a.value->loc,
-                    "value_" + std::to_string(k) + "[r] = " +
-                        convert(emit_expr(*a.value, ctx), ctx.types->of(*a.value),
-                                model.symbols->target(a)->type) +
-                        ";");
+  if (!values.assigns.empty()) {
+    std::vector<ir::ExprId> written;
+    written.reserve(values.assigns.size());
+    for (const lower::Write& a : values.assigns)
+      written.push_back(a.value);
+    open_row_loop(w, plan.left, false, values.match, written);
+    write_statements(w, values.match, on_match, written, nullptr);
+    for (std::size_t k = 0; k < values.assigns.size(); ++k) {
+      const lower::Write& a = values.assigns[k];
+      write_sourced(w, a.loc,
+                    "value_" + std::to_string(k) + "[r] = " + render(mg, a.value, on_match) + ";");
     }
     w.close();
   }
 
   // ---- rewrite: every dart of the match may change (relinked or deleted)
-  if (nl_of(g) > 0)
+  if (!plan.left.empty())
     w.line("if (touched) touched->insert(touched->end(), s.left.begin(), s.left.end());");
   for (int v : rewrite.deleted) {
     w.line("for (std::size_t r = 0; r < rows; ++r) g.delete_dart(" + left_name(v) + "[r]);");
   }
-  const std::size_t nr = g.right.nodes.size();
+  const std::size_t nr = plan.right.size();
   w.line("s.right.resize(" + std::to_string(nr) + " * rows);");
   for (std::size_t v = 0; v < nr; ++v) {
     const int l = rewrite.right_from_left[v];
     const std::string rv = right_name(static_cast<int>(v));
     w.line("[[maybe_unused]] rift::Dart* const " + rv + " = s.right.data() + " + std::to_string(v) +
-           " * rows;  // " + g.right.nodes[v].name() + (l < 0 ? " (created)" : ""));
+           " * rows;  // " + plan.right[v] + (l < 0 ? " (created)" : ""));
     if (l >= 0) {
       w.line("std::copy_n(" + left_name(l) + ", rows, " + rv + ");");
     } else {
@@ -195,18 +209,22 @@ void emit_rule(Writer& w, const check::CheckedRule& cr, const PackModel& model) 
   if (nr > 0) w.line("update_embedding_slots(g, s.right.data(), s.right.size(), s, touched);");
   for (std::size_t k = 0; k < rule.right.assigns.size(); ++k) {
     const ast::Assign& a = rule.right.assigns[k];
-    const int v = g.right.find(a.node.text);
+    const int v = plan.assign_nodes[k];
     w.line("for (std::size_t r = 0; r < rows; ++r) " + embedding_var(a.embedding.text) + "[" +
            right_name(v) + "[r]] = value_" + std::to_string(k) + "[r];");
   }
-  if (!rule.updates.empty()) {
-    open_row_loop(w, g.right, true);
-    for (const ast::Assign& u : rule.updates) {
-      write_sourced(w, u.value->loc,
-                    embedding_var(u.embedding.text) + "[" + dart_name(u.node.text) + "] = " +
-                        convert(emit_expr(*u.value, ctx), ctx.types->of(*u.value),
-                                model.symbols->target(u)->type) +
-                        ";");
+  if (!values.updates.empty()) {
+    std::vector<ir::ExprId> updated;
+    std::vector<int> targets;
+    for (const lower::Write& u : values.updates) {
+      updated.push_back(u.value);
+      targets.push_back(u.node);
+    }
+    open_row_loop(w, plan.right, true, values.rewritten, updated, targets);
+    for (const lower::Write& u : values.updates) {
+      write_sourced(w, u.loc,
+                    embedding_var(u.embedding) + "[" + on_right.dart(u.node) +
+                        "] = " + render(values.rewritten.graph, u.value, on_right) + ";");
     }
     w.close();
   }

@@ -11,52 +11,29 @@ namespace rift::emit {
 
 namespace {
 
-std::set<std::string> script_embeddings(const ast::Script& script) {
-  std::set<std::string> used;
-  for (const ast::ScriptStmt& st : script.stmts) {
-    if (st.kind == ast::ScriptStmt::Kind::Let) {
-      embeddings_read(*script.lets[st.let].value, used);
-      continue;
-    }
-    if (st.where) embeddings_read(*st.where, used);
-    if (st.kind == ast::ScriptStmt::Kind::Set) {
-      used.insert(st.set.embedding.text);
-      embeddings_read(*st.set.value, used);
-    }
-    for (const auto& a : st.args)
-      embeddings_read(*a.value, used);
-  }
-  return used;
-}
-
-const ast::Param* param_named(const std::vector<ast::Param>& params, const std::string& name) {
-  for (const ast::Param& p : params) {
-    if (p.name.text == name) return &p;
-  }
-  return nullptr;
-}
-
 /// Opens the loop of a statement: once (a do-while(false), so that a failed
 /// `where` can `continue`), or once per listed sub-orbit dart.
-void open_each(Writer& w, const ast::ScriptStmt& st, const ExprContext& ctx) {
-  if (!st.each.present) {
+void open_each(Writer& w, const lower::ScriptStep& st, const ir::Body& body,
+               const RenderContext& ctx) {
+  if (!st.each) {
     w.open("do {");
   } else {
+    const std::string var = ctx.dart(st.each_var);
     w.open("{");
     w.line("std::vector<rift::Dart> each;");
-    w.line("g.for_each_sub_orbit(" + emit_dart(*st.each.dart, ctx) + ", " +
-           orbit_code(st.each.outer.dims) + ", " + orbit_code(st.each.sub.dims) +
+    w.line("g.for_each_sub_orbit(" + render_place(st.each_dart, ctx) + ", " +
+           orbit_code(st.each_outer) + ", " + orbit_code(st.each_sub) +
            ", [&](rift::Dart x) { each.push_back(x); });");
-    w.open("for (const rift::Dart " + dart_name(st.each.var.text) + " : each) {");
-    w.line("if (!g.is_alive(" + dart_name(st.each.var.text) + ")) continue;");
+    w.open("for (const rift::Dart " + var + " : each) {");
+    w.line("if (!g.is_alive(" + var + ")) continue;");
   }
-  if (st.where) {
-    write_sourced(w, st.where->loc, "if (!(" + emit_expr(*st.where, ctx) + ")) continue;");
+  if (st.where != ir::kNoExpr) {
+    write_sourced(w, st.where_loc, "if (!(" + render(body.graph, st.where, ctx) + ")) continue;");
   }
 }
 
-void close_each(Writer& w, const ast::ScriptStmt& st) {
-  if (!st.each.present) {
+void close_each(Writer& w, const lower::ScriptStep& st) {
+  if (!st.each) {
     w.close("} while (false);");
     return;
   }
@@ -66,12 +43,11 @@ void close_each(Writer& w, const ast::ScriptStmt& st) {
 
 }  // namespace
 
-void emit_script(Writer& w, const ast::Script& script, const PackModel& model) {
+void emit_script(Writer& w, const lower::ScriptPlan& plan, const PackModel& model) {
+  const ast::Script& script = *plan.script;
+  const ir::Body& body = plan.body;
   const std::string user = "script '" + script.name.text + "'";
-  ExprContext ctx;
-  ctx.dart = [](const std::string& node) { return dart_name(node); };
-  ctx.symbols = model.symbols;
-  ctx.types = model.types;
+  const RenderContext ctx = dart_context(body);
   w.line("// " + user + " (" + std::to_string(script.hooks.size()) + " hook(s))");
   w.open("bool " + rule_function(script.name.text) +
          "(rift::GMap& g, std::span<const rift::Dart> hooks, const " + script.name.text +
@@ -90,49 +66,44 @@ void emit_script(Writer& w, const ast::Script& script, const PackModel& model) {
     w.line("[[maybe_unused]] const rift::Dart " + dart_name(script.hooks[k].text) + " = hooks[" +
            std::to_string(k) + "];");
   }
-  fetch_embeddings(w, script_embeddings(script), *model.symbols, user);
+  fetch_embeddings(w, plan.embeddings, model, user);
   w.line("bool applied = false;");
-  for (const ast::ScriptStmt& st : script.stmts) {
+  for (const lower::ScriptStep& st : plan.steps) {
     switch (st.kind) {
-      case ast::ScriptStmt::Kind::Let: {
-        const ast::Let& let = script.lets[st.let];
-        write_sourced(w, let.value->loc,
-                      "const " + cpp_type(ctx.types->of(*let.value)) + " " +
-                          let_name(let.name.text) + " = " + emit_expr(*let.value, ctx) + ";");
+      case lower::ScriptStep::Kind::Let: {
+        const ir::Let& let = body.lets[static_cast<std::size_t>(st.let)];
+        write_sourced(w, let.loc,
+                      "const " + cpp_type(body.graph[let.value].type) + " " + let_name(let.name) +
+                          " = " + render(body.graph, let.value, ctx) + ";");
         break;
       }
-      case ast::ScriptStmt::Kind::Set: {
-        open_each(w, st, ctx);
-        const ast::Assign& a = st.set;
-        write_sourced(w, a.value->loc,
-                      embedding_var(a.embedding.text) + "[" + dart_name(a.node.text) + "] = " +
-                          convert(emit_expr(*a.value, ctx), ctx.types->of(*a.value),
-                                  model.symbols->target(a)->type) +
-                          ";");
+      case lower::ScriptStep::Kind::Set: {
+        open_each(w, st, body, ctx);
+        const lower::Write& a = st.set;
+        const std::string dart = ctx.dart(a.node);
+        write_sourced(w, a.loc,
+                      embedding_var(a.embedding) + "[" + dart +
+                          "] = " + render(body.graph, a.value, ctx) + ";");
         // A value written in place is announced like a rewrite: interactions
         // that group identical matches by the values they read
         // (rift/sim/match_groups.hpp) re-key the matches around it.
-        w.line("if (touched) touched->push_back(" + dart_name(a.node.text) + ");");
+        w.line("if (touched) touched->push_back(" + dart + ");");
         close_each(w, st);
         break;
       }
-      case ast::ScriptStmt::Kind::Apply: {
-        open_each(w, st, ctx);
-        const std::vector<ast::Param>* params = model.symbols->callee_params(st.rule.text);
-        w.line(st.rule.text + "_args call;");
-        for (const ast::ApplyArg& a : st.args) {
-          const ast::Param* p = param_named(*params, a.name.text);
-          write_sourced(w, a.value->loc,
-                        "call." + member_name(a.name.text) + " = " +
-                            convert(emit_expr(*a.value, ctx), ctx.types->of(*a.value), p->type) +
-                            ";");
+      case lower::ScriptStep::Kind::Apply: {
+        open_each(w, st, body, ctx);
+        w.line(st.rule + "_args call;");
+        for (const lower::ScriptStep::Arg& a : st.args) {
+          write_sourced(
+              w, a.loc,
+              "call." + member_name(a.param) + " = " + render(body.graph, a.value, ctx) + ";");
         }
         std::string hooks;
         for (std::size_t k = 0; k < st.hooks.size(); ++k)
-          hooks += (k ? ", " : "") + emit_dart(*st.hooks[k], ctx);
+          hooks += (k ? ", " : "") + render_place(st.hooks[k], ctx);
         w.line("const rift::Dart at[] = {" + hooks + "};");
-        w.line("if (" + rule_function(st.rule.text) +
-               "(g, at, call, params, touched)) applied = true;");
+        w.line("if (" + rule_function(st.rule) + "(g, at, call, params, touched)) applied = true;");
         close_each(w, st);
         break;
       }

@@ -10,9 +10,8 @@
 #include <vector>
 
 #include "ast/decl.hpp"
-#include "check/expr_types.hpp"
 #include "ir/body.hpp"
-#include "resolve/symbols.hpp"
+#include "lower/checked.hpp"
 
 namespace rift::lower {
 

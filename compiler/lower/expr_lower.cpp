@@ -115,6 +115,16 @@ ExprId ExprLowering::binary(const Expr& e) {
   return g_.binary(op, types_.of(e), x, y);
 }
 
+ExprId ExprLowering::named(ExprId id, ExprId before, const std::string& name) {
+  // Only a node this let created takes its name (a let that only renames an
+  // argument or an earlier value adds nothing to name).
+  const ir::Node& n = g_[id];
+  if (id < before || !n.value_name.empty() || n.op == Op::Literal) return id;
+  ir::Node copy = n;
+  copy.value_name = name;
+  return g_.add(std::move(copy));
+}
+
 ExprId ExprLowering::inline_call(const Expr& e, const ast::Function& f) {
   Frame frame;
   for (std::size_t k = 0; k < e.args.size(); ++k)
@@ -122,15 +132,7 @@ ExprId ExprLowering::inline_call(const Expr& e, const ast::Function& f) {
   frames_.push_back(std::move(frame));
   for (const ast::Let& let : f.lets) {
     const auto before = static_cast<ExprId>(g_.size());
-    ExprId id = lower(*let.value);
-    // A node this let created takes its name (a let that only renames an
-    // argument or an earlier value adds nothing to name).
-    if (id >= before && g_[id].value_name.empty() && g_[id].op != Op::Literal) {
-      ir::Node named = g_[id];
-      named.value_name = f.name.text + "_" + let.name.text;
-      id = g_.add(std::move(named));
-    }
-    frames_.back().lets[&let] = id;
+    frames_.back().lets[&let] = named(lower(*let.value), before, f.name.text + "_" + let.name.text);
   }
   const ExprId result = lower_as(*f.value, f.result);
   frames_.pop_back();
@@ -168,6 +170,12 @@ ExprId ExprLowering::fold(const Expr& e) {
   n.outer = e.outer.dims;
   nodes_.push_back(e.var);
   n.var = static_cast<int>(nodes_.size() - 1);
+  // A let of the fold's body is its value's node (inlined, as a function's
+  // let is), named after it where the renderer computes it into a local.
+  for (const ast::Let& let : e.lets) {
+    const auto before = static_cast<ExprId>(g_.size());
+    fold_lets_[&let] = named(lower(*let.value), before, "fold_" + let.name.text);
+  }
   const Expr& body = *e.args[0];
   n.a = e.op == "count" ? lower(body) : lower_as(body, types_.of(e));
   // The variable stays in `nodes` (its index is taken) but no longer resolves.
@@ -189,6 +197,8 @@ ExprId ExprLowering::lower(const Expr& e) {
       break;
     case Expr::Kind::Name: {
       const resolve::Binding& b = symbols_.binding(e);
+      if (const auto it = fold_lets_.find(b.let); b.let && it != fold_lets_.end())
+        return it->second;
       if (b.function) {  // a parameter or a let of the function being inlined
         const Frame& frame = frames_.back();
         return b.let ? frame.lets.at(b.let) : frame.params.at(b.param);

@@ -37,6 +37,8 @@ class ExprLowering {
   ir::ExprId lower(const ast::Expr& e);
   /// `e` converted to `to` (only int -> real converts).
   ir::ExprId lower_as(const ast::Expr& e, ir::Type to);
+  /// The dart a path `node@i@j` stands for (the newest node of that name).
+  ir::Place place(const ast::Expr& e) const;
 
  private:
   ir::ExprId convert(ir::ExprId id, ir::Type to);
@@ -45,8 +47,10 @@ class ExprLowering {
   ir::ExprId call(const ast::Expr& e);
   ir::ExprId fold(const ast::Expr& e);
   ir::ExprId inline_call(const ast::Expr& e, const ast::Function& f);
+  /// `id`, or, when lowering a let created it (`id >= before`), a copy of it
+  /// carrying the let's `name` for the renderer (ir::Node::value_name).
+  ir::ExprId named(ir::ExprId id, ir::ExprId before, const std::string& name);
   int node_index(const std::string& name) const;
-  ir::Place place(const ast::Expr& e) const;
 
   ir::Graph& g_;
   std::vector<std::string>& nodes_;
@@ -61,6 +65,8 @@ class ExprLowering {
     std::map<const ast::Let*, ir::ExprId> lets;
   };
   std::vector<Frame> frames_;
+  /// The lets of the folds being lowered: the node each stands for.
+  std::map<const ast::Let*, ir::ExprId> fold_lets_;
 };
 
 }  // namespace rift::lower

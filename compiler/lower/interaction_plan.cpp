@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "check/kernels.hpp"
+#include "check/topology.hpp"
 #include "lower/expr_lower.hpp"
 #include "lower/share.hpp"
 

@@ -10,11 +10,9 @@
 #include <vector>
 
 #include "ast/decl.hpp"
-#include "check/expr_types.hpp"
-#include "check/topology.hpp"
 #include "ir/body.hpp"
+#include "lower/checked.hpp"
 #include "lower/kernel_plan.hpp"
-#include "resolve/symbols.hpp"
 
 namespace rift::lower {
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "check/kernels.hpp"
+#include "check/topology.hpp"
 
 namespace rift::lower {
 

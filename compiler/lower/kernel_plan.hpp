@@ -7,9 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "check/topology.hpp"
+#include "lower/checked.hpp"
 #include "lower/rule_plan.hpp"
-#include "resolve/symbols.hpp"
 
 namespace rift::lower {
 

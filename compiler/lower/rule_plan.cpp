@@ -2,6 +2,8 @@
 
 #include <set>
 
+#include "check/pattern_graph.hpp"
+
 namespace rift::lower {
 
 MatchPlan plan_match(const check::RuleGraph& g) {

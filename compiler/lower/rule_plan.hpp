@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "check/pattern_graph.hpp"
+#include "lower/checked.hpp"
 
 namespace rift::lower {
 

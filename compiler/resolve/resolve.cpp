@@ -25,6 +25,9 @@ struct Scope {
   const std::vector<ast::Let>* match_lets = nullptr;  // lets that exist but may not be read
   std::string match_lets_reason;
   const ast::Function* function = nullptr;  // the body of this `def`: no darts, no embeddings
+  /// The lets of the enclosing folds' bodies, innermost last, each with how
+  /// many of them are visible: they are seen before the lets of the body.
+  std::vector<std::pair<const std::vector<ast::Let>*, std::size_t>> fold_lets;
 };
 
 /// Calls between functions, for the recursion check: caller -> (callee, call site).
@@ -72,8 +75,19 @@ class Resolver {
       Scope inner = scope;
       inner.nodes.insert(e.var);
       inner.hidden_nodes.erase(e.var);
+      inner.fold_lets.emplace_back(&e.lets, 0);
+      for (std::size_t k = 0; k < e.lets.size(); ++k) {
+        inner.fold_lets.back().second = k;
+        fold_let(e.lets[k], inner);
+        expr(*e.lets[k].value, inner);
+      }
+      inner.fold_lets.back().second = e.lets.size();
       for (const auto& a : e.args)
         expr(*a, inner);
+      for (const ast::Let& l : e.lets) {
+        if (l.uses == 0)
+          diags_.warning("unused-variable", l.name.loc, "'" + l.name.text + "' is never used");
+      }
       return;
     }
     for (const auto& a : e.args)
@@ -147,8 +161,44 @@ class Resolver {
     if (scope.function) function_calls_[scope.function].emplace_back(f, e.op_loc);
   }
 
+  /// A let of a fold's body may not take the name of a let it could read
+  /// (each let is one C++ local of the function the fold is rendered in).
+  void fold_let(const ast::Let& let, const Scope& scope) {
+    const ast::Let* taken = visible_let(let.name.text, scope);
+    if (!taken) return;
+    diags_
+        .error(let.name.loc, "'" + let.name.text + "' is already a let here; give it another name")
+        .notes.push_back({taken->name.loc, "defined here"});
+  }
+
+  /// The let a name written in `scope` refers to, or nullptr.
+  static const ast::Let* visible_let(const std::string& name, const Scope& scope) {
+    for (auto f = scope.fold_lets.rbegin(); f != scope.fold_lets.rend(); ++f) {
+      for (std::size_t k = f->second; k-- > 0;) {
+        if ((*f->first)[k].name.text == name) return &(*f->first)[k];
+      }
+    }
+    if (scope.lets) {
+      // The latest visible let of that name wins.
+      for (std::size_t k = scope.visible_lets; k-- > 0;) {
+        if ((*scope.lets)[k].name.text == name) return &(*scope.lets)[k];
+      }
+    }
+    return nullptr;
+  }
+
   /// Binds a bare name (Symbols::binding) or reports why it cannot be read.
   void name(const Expr& e, const Scope& scope) {
+    for (auto f = scope.fold_lets.rbegin(); f != scope.fold_lets.rend(); ++f) {
+      for (std::size_t k = f->second; k-- > 0;) {
+        const ast::Let& let = (*f->first)[k];
+        if (let.name.text == e.name) {
+          symbols_.bindings[&e].let = &let;
+          ++let.uses;
+          return;
+        }
+      }
+    }
     if (scope.lets) {
       // The latest visible let of that name wins.
       for (std::size_t k = scope.visible_lets; k-- > 0;) {

@@ -18,6 +18,7 @@
 #include "rift/mesh/assemble.hpp"
 #include "rift/mesh/generators.hpp"
 #include "rift/pack/pack.hpp"
+#include "rift/scene/scene_setup.hpp"
 #include "rift/sim/simulation.hpp"
 
 namespace rift::physics_test {
@@ -58,6 +59,9 @@ struct SimSetup {
   std::function<void(Simulation&)> prepare;
   /// Where the components are looked up (null: the standard packs, packs()).
   const PackRegistry* registry = nullptr;
+  /// Interactions store only the forces the criteria read, as a scene's
+  /// set-up makes them (rift/scene/scene_setup.hpp); false: all store.
+  bool lean_forces = false;
 };
 
 /// Declares and initialises the packs the setup uses, then builds the simulation.
@@ -80,14 +84,28 @@ inline std::unique_ptr<Simulation> simulate(GMap map, const SimSetup& setup) {
     declare_embeddings(map, p->embeddings());
     p->initialise(map);
   }
+  std::vector<std::string> interaction_names, criterion_names, read;
+  for (const Use& u : setup.interactions)
+    interaction_names.push_back(u.name);
+  for (const Use& u : setup.criteria)
+    criterion_names.push_back(u.name);
+  const Catalog catalog = registry.catalog(n);
+  if (setup.lean_forces) {
+    read = stored_forces_read(catalog, criterion_names, {});
+    withhold_unstored_forces(map, catalog, interaction_names, read);
+  }
   auto sim = std::make_unique<Simulation>(std::move(map), setup.settings);
   if (setup.prepare) {
     setup.prepare(*sim);
   } else {
     sim->set_total_mass(1.0);
   }
-  for (const Use& u : setup.interactions)
-    sim->add_force_model(registry.pack_of_interaction(u.name, n)->make_interaction(u.component()));
+  for (const Use& u : setup.interactions) {
+    auto model = registry.pack_of_interaction(u.name, n)->make_interaction(u.component());
+    if (setup.lean_forces)
+      model->set_store_forces(interaction_stores_forces(catalog, u.name, read));
+    sim->add_force_model(std::move(model));
+  }
   for (const Use& u : setup.criteria)
     sim->add_criterion(registry.pack_of_criterion(u.name, n)->make_criterion(u.component()));
   sim->initialise();

@@ -205,5 +205,37 @@ TEST(Embedding, UnallocatedColumnsMergeLikeAllocatedOnes) {
   EXPECT_TRUE(t.map.is_valid());
 }
 
+// A withheld column (GMap::withhold_storage: stored forces nothing reads)
+// is handed out without storage: const reads give the default, tears cost it
+// nothing, and its first mutable use allocates it, holding the default.
+TEST(Embedding, WithheldColumnsGetStorageAtTheirFirstMutableUse) {
+  GMap map = assemble_gmap(make_grid(GridKind::Quad, 3, 3));
+  map.declare_embedding<Vec3>("force", Orbit{}, MergePolicy::kKeepFirst, Vec3(1, 2, 3));
+  EXPECT_FALSE(map.withhold_storage("no_such_column"));
+  ASSERT_TRUE(map.withhold_storage("force"));
+  const ColumnBase* column = map.find_column("force");
+  Embedding<Vec3> f = map.embedding<Vec3>("force");
+  ASSERT_TRUE(f);
+  EXPECT_FALSE(column->allocated());
+  const Embedding<Vec3>& read = f;
+  map.for_each_dart([&](Dart d) { EXPECT_EQ(read[d], Vec3(1, 2, 3)) << d; });
+  EXPECT_EQ(f.slot(7), f.attachment().slot(7));
+  Dart inner = kNoDart;
+  map.for_each_dart([&](Dart d) {
+    if (inner == kNoDart && !map.is_free(d, 2)) inner = d;
+  });
+  ASSERT_NE(inner, kNoDart);
+  map.unsew(inner, 2);
+  EXPECT_FALSE(column->allocated());
+  EXPECT_TRUE(map.is_valid());
+  f[inner] = Vec3(4, 5, 6);  // a write allocates
+  EXPECT_TRUE(column->allocated());
+  EXPECT_EQ(f.values().size(), f.attachment().slot_capacity());
+  EXPECT_EQ(read[inner], Vec3(4, 5, 6));
+  EXPECT_EQ(read[map.alpha(inner, 0)], Vec3(1, 2, 3));
+  // An allocated column cannot be withheld any more.
+  EXPECT_FALSE(map.withhold_storage("force"));
+}
+
 }  // namespace
 }  // namespace rift

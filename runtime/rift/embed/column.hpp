@@ -6,11 +6,17 @@
 // is unallocated every slot reads as the default, which is exactly what its
 // storage would hold, so topology changes (copy, merge, compaction) have
 // nothing to do for it.
+//
+// A column may also be *withheld* (GMap::withhold_storage): the scene's set-up
+// does so for the stored forces that nothing of the scene reads, and for the
+// ones that no interaction of the scene writes. GMap::embedding then hands out
+// the column without storage; const reads through the handle give the default,
+// and the first mutable access (values(), a write) allocates it.
 #pragma once
 
-#include <cassert>
-
+#include <atomic>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -34,9 +40,12 @@ class ColumnBase {
   MergePolicy policy() const { return policy_; }
 
   /// True once the column has storage (see the file comment).
-  bool allocated() const { return allocated_; }
+  bool allocated() const { return allocated_.load(std::memory_order_acquire); }
   /// Gives the column storage for every slot, holding the default value.
   virtual void allocate() = 0;
+  /// True when GMap::embedding leaves the column without storage (see the file comment).
+  bool withheld() const { return withheld_; }
+  void set_withheld(bool on) { withheld_ = on; }
 
   virtual void resize(std::size_t slots) = 0;
   virtual void copy_slot(Slot from, Slot to) = 0;
@@ -49,9 +58,13 @@ class ColumnBase {
   virtual std::unique_ptr<ColumnBase> clone() const = 0;
 
  protected:
-  bool allocated_ = false;
+  // Atomic, with allocate() under a lock: a withheld column may be allocated
+  // by its first mutable access, which a parallel pass could make.
+  std::atomic<bool> allocated_ = false;
+  std::mutex allocating_;
 
  private:
+  bool withheld_ = false;
   std::string name_;
   ValueType type_;
   MergePolicy policy_;
@@ -68,31 +81,36 @@ class Column final : public ColumnBase {
     default_survives_merge_ = merged == default_;
   }
 
-  /// The values by slot; only once allocated (GMap::embedding allocates).
+  /// The values by slot. GMap::embedding allocates a column that is not
+  /// withheld; a withheld one gets its storage here, at its first use.
   std::vector<T>& values() {
-    assert(allocated_);
+    if (!allocated()) allocate();
     return values_;
   }
   const std::vector<T>& values() const {
-    assert(allocated_);
+    if (!allocated()) const_cast<Column*>(this)->allocate();
     return values_;
   }
+  /// The value of slot s, the default while the column has no storage.
+  const T& read(Slot s) const { return allocated() ? values_[s] : default_; }
   const T& default_value() const { return default_; }
 
   void allocate() override {
-    if (allocated_) return;
+    if (allocated()) return;
+    const std::lock_guard<std::mutex> lock(allocating_);
+    if (allocated()) return;
     grow_huge(values_, slots_, default_);
-    allocated_ = true;
+    allocated_.store(true, std::memory_order_release);
   }
   void resize(std::size_t slots) override {
     slots_ = slots;
-    if (allocated_) grow_huge(values_, slots, default_);
+    if (allocated()) grow_huge(values_, slots, default_);
   }
   void copy_slot(Slot from, Slot to) override {
-    if (allocated_) values_[to] = values_[from];
+    if (allocated()) values_[to] = values_[from];
   }
   void merge_into(Slot into, Slot from) override {
-    if (!allocated_) {
+    if (!allocated()) {
       // Two defaults merge into the default under every policy but a sum of
       // non-zero defaults: only then does the merged value need storage.
       if (default_survives_merge_) return;
@@ -100,14 +118,14 @@ class Column final : public ColumnBase {
     }
     merge(values_[into], values_[from]);
   }
-  bool equal(Slot a, Slot b) const override { return !allocated_ || values_[a] == values_[b]; }
+  bool equal(Slot a, Slot b) const override { return !allocated() || values_[a] == values_[b]; }
   void set_default(Slot s) override {
-    if (allocated_) values_[s] = default_;
+    if (allocated()) values_[s] = default_;
   }
-  Value get(Slot s) const override { return allocated_ ? values_[s] : default_; }
+  Value get(Slot s) const override { return read(s); }
   void set(Slot s, const Value& v) override {
     const T& value = std::get<T>(v);
-    if (!allocated_) {
+    if (!allocated()) {
       if (value == default_) return;
       allocate();
     }
@@ -117,7 +135,8 @@ class Column final : public ColumnBase {
     auto c = std::make_unique<Column<T>>(name(), policy(), default_);
     c->values_ = values_;
     c->slots_ = slots_;
-    c->allocated_ = allocated_;
+    c->allocated_.store(allocated(), std::memory_order_relaxed);
+    c->set_withheld(withheld());
     return c;
   }
 

@@ -31,7 +31,8 @@ class Embedding {
 
   explicit operator bool() const { return column_ != nullptr; }
   T& operator[](Dart d) { return column_->values()[attachment_->slot(d)]; }
-  const T& operator[](Dart d) const { return column_->values()[attachment_->slot(d)]; }
+  /// Reads the default without allocating a withheld column (column.hpp).
+  const T& operator[](Dart d) const { return column_->read(attachment_->slot(d)); }
   Slot slot(Dart d) const { return attachment_->slot(d); }
   /// The dense value array, indexed by slot; dead slots hold stale values.
   std::vector<T>& values() { return column_->values(); }
@@ -175,6 +176,16 @@ class GMap {
   template <class T>
   Embedding<T> embedding(std::string_view name) const;
   bool has_embedding(std::string_view name) const { return find_column(name) != nullptr; }
+  /// Makes embedding(name) hand out the column without storage until its
+  /// first mutable use (column.hpp): for values nothing reads, or that
+  /// nothing writes and so read as the default. False when there is no such
+  /// column or it already has storage.
+  bool withhold_storage(std::string_view name) {
+    ColumnBase* c = find_column(name);
+    if (!c || c->allocated()) return false;
+    c->set_withheld(true);
+    return true;
+  }
   ColumnBase* find_column(std::string_view name) const;
   OrbitAttachment* attachment_of(std::string_view name) const;
   const std::vector<std::unique_ptr<OrbitAttachment>>& attachments() const { return attachments_; }
@@ -377,7 +388,7 @@ Embedding<T> GMap::embedding(std::string_view name) const {
         throw std::invalid_argument("embedding '" + std::string(name) + "' holds " +
                                     std::string(to_string(c->type())) + " values");
       }
-      c->allocate();
+      if (!c->withheld()) c->allocate();
       return Embedding<T>(att.get(), static_cast<Column<T>*>(c));
     }
   }

@@ -26,8 +26,8 @@ struct ComponentSpec {
   int dimension = 0;  ///< 2 or 3: the maps it runs on; 0: any
   /// Interactions: the force embeddings they store for criteria to read.
   std::vector<std::string> stores = {};
-  /// Criteria: the embeddings their measure reads (a criterion reading only
-  /// forces that no interaction of the scene stores can never fire).
+  /// Criteria: what their lets, measure, rule arguments and same-pack script read (the set-up
+  /// stores those forces; a criterion reading only forces nothing stores can never fire).
   std::vector<std::string> reads = {};
 
   const ParamSpec* find_param(const std::string& param) const {

@@ -1,6 +1,7 @@
 #include "rift/scene/scene_setup.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -217,6 +218,45 @@ void cut_notches(const Scene& scene, const PackRegistry& packs, std::vector<cons
 
 }  // namespace
 
+std::vector<std::string> stored_forces_read(const Catalog& catalog,
+                                            const std::vector<std::string>& criteria,
+                                            const std::vector<std::string>& output_arrays) {
+  std::vector<std::string> read = output_arrays;
+  for (const std::string& name : criteria) {
+    if (const ComponentSpec* spec = Catalog::find(catalog.criteria, name))
+      read.insert(read.end(), spec->reads.begin(), spec->reads.end());
+  }
+  return read;
+}
+
+bool interaction_stores_forces(const Catalog& catalog, const std::string& name,
+                               const std::vector<std::string>& read) {
+  const ComponentSpec* spec = Catalog::find(catalog.interactions, name);
+  // Unknown to the catalog: store, as a simulation built by hand does.
+  if (!spec) return true;
+  return std::any_of(spec->stores.begin(), spec->stores.end(), [&](const std::string& s) {
+    return std::find(read.begin(), read.end(), s) != read.end();
+  });
+}
+
+void withhold_unstored_forces(GMap& map, const Catalog& catalog,
+                              const std::vector<std::string>& interactions,
+                              const std::vector<std::string>& read) {
+  std::vector<std::string> written;
+  for (const std::string& name : interactions) {
+    const ComponentSpec* spec = Catalog::find(catalog.interactions, name);
+    if (!spec || !interaction_stores_forces(catalog, name, read)) continue;
+    written.insert(written.end(), spec->stores.begin(), spec->stores.end());
+  }
+  // Written by none, a column reads as its default, zero, and holds nothing.
+  for (const ComponentSpec& spec : catalog.interactions) {
+    for (const std::string& column : spec.stores) {
+      if (std::find(written.begin(), written.end(), column) == written.end())
+        map.withhold_storage(column);
+    }
+  }
+}
+
 void place_mesh(MeshData& mesh, const SceneMesh& placement) {
   const Real deg = std::numbers::pi / 180;
   const Mat3 rotation = (Eigen::AngleAxis<Real>(placement.rotate_degrees.z() * deg, Vec3::UnitZ()) *
@@ -278,6 +318,15 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
     declare_embeddings(m, p->embeddings());
     p->initialise(m);
   }
+  const Catalog catalog = packs.catalog(n);
+  std::vector<std::string> interaction_names, criterion_names;
+  for (const ComponentUse& u : scene.interactions)
+    interaction_names.push_back(u.name);
+  for (const ComponentUse& u : scene.criteria)
+    criterion_names.push_back(u.name);
+  const std::vector<std::string> read =
+      stored_forces_read(catalog, criterion_names, options.output_arrays);
+  withhold_unstored_forces(m, catalog, interaction_names, read);
   try {
     if (scene.density) {
       rep.total_mass = 0;
@@ -302,6 +351,7 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
                            "\" needs the Jacobians of interaction '" + u.name +
                            "', which has none: " + model->jacobian_unavailable_reason());
     }
+    model->set_store_forces(interaction_stores_forces(catalog, u.name, read));
     sim->add_force_model(std::move(model));
   }
   for (const ComponentUse& u : scene.criteria) {

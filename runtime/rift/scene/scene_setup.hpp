@@ -4,6 +4,8 @@
 #pragma once
 
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "rift/mesh/assemble.hpp"
 #include "rift/pack/pack.hpp"
@@ -27,7 +29,28 @@ struct SetupReport {
 
 struct SetupOptions {
   bool check_each_rewrite = false;
+  /// The embeddings the frame outputs write when they exist (FrameOptions'
+  /// point_arrays and cell_arrays): an interaction storing one of them keeps
+  /// storing it although no criterion reads it.
+  std::vector<std::string> output_arrays = {"velocity", "force", "point_index"};
 };
+
+/// The stored forces a scene reads: those its `criteria` read
+/// (ComponentSpec::reads) and `output_arrays`. An interaction of the scene
+/// stores its forces only when one of them is read, and a stored-force column
+/// that no storing interaction of the scene writes gets no storage: it reads
+/// as its default (issue 12, lean memory). build_simulation does both.
+std::vector<std::string> stored_forces_read(const Catalog& catalog,
+                                            const std::vector<std::string>& criteria,
+                                            const std::vector<std::string>& output_arrays);
+/// Whether interaction `name` stores its forces when `read` are read.
+bool interaction_stores_forces(const Catalog& catalog, const std::string& name,
+                               const std::vector<std::string>& read);
+/// Withholds the storage (GMap::withhold_storage) of every stored-force
+/// column of the catalog that none of `interactions` stores when `read` are read.
+void withhold_unstored_forces(GMap& map, const Catalog& catalog,
+                              const std::vector<std::string>& interactions,
+                              const std::vector<std::string>& read);
 
 /// Throws InputError (file and line of the scene) for a scene that cannot be
 /// set up: a component that no pack offers for the mesh's dimension, pins

@@ -121,7 +121,7 @@ class CachedInteraction final : public ForceModel {
       return kernel_.match(m, d, out);
     };
     auto lost = [&](const typename Kernel::Match& m, bool alive) {
-      if (alive) kernel_.reset_stored(m);
+      if (alive && store_forces_) kernel_.reset_stored(m);
     };
     if constexpr (kGroupable) {
       if (grouped_) {
@@ -143,6 +143,7 @@ class CachedInteraction final : public ForceModel {
   }
 
   void add_forces(const ForceInput& in, Vec3* f, bool store) override {
+    store = store && store_forces_;
     if constexpr (kGroupable) {
       if (grouped_) {
         add_forces_grouped(in, f, store);
@@ -159,6 +160,8 @@ class CachedInteraction final : public ForceModel {
   /// Before initialise: evaluate identical matches once (the default) or
   /// every match on its own.
   void set_grouping(bool on) override { group_requested_ = on; }
+  void set_store_forces(bool on) override { store_forces_ = on; }
+  bool stores_forces() const { return store_forces_; }
   /// True when this interaction's force pass runs over groups.
   bool grouped() const { return grouped_; }
   /// Groups the force pass evaluates (matches when not grouped).
@@ -436,6 +439,7 @@ class CachedInteraction final : public ForceModel {
   MatchGroups<typename Kernel::Match> groups_;
   bool group_requested_ = true;
   bool grouped_ = false;
+  bool store_forces_ = true;  ///< false: nothing reads the stored forces (set_store_forces)
 };
 
 }  // namespace rift

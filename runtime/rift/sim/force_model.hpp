@@ -38,6 +38,11 @@ class ForceModel {
   /// `store`, also writes them into the interaction's force embeddings so
   /// that criteria can read them (Table 1, last column).
   virtual void add_forces(const ForceInput& in, Vec3* f, bool store) = 0;
+  /// Before initialise: false when nothing reads this interaction's stored
+  /// forces (no criterion, no output: the scene's set-up decides), which it
+  /// then neither stores nor resets, leaving their columns without storage
+  /// (issue 12, lean memory). True by default.
+  virtual void set_store_forces(bool /*on*/) {}
 
   /// Elastic energy at the given state (0 when the interaction has none).
   virtual Real potential_energy(const ForceInput& /*in*/) const { return 0; }

@@ -317,13 +317,13 @@ bool apply_split_along_largest_force(rift::GMap& g, std::span<const rift::Dart> 
   auto e_f_stretch = require_embedding<rift::Vec3>(g, "f_stretch", "script 'split_along_largest_force'");
   auto e_position = require_embedding<rift::Vec3>(g, "position", "script 'split_along_largest_force'");
   bool applied = false;
-  const rift::Real l_largest = std::max<rift::Real>([&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc0 = std::max<rift::Real>(acc0, std::max<rift::Real>((e_f_membrane[d_c]).norm(), (e_f_shear[d_c]).norm())); }); return acc0; }(), [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&]([[maybe_unused]] rift::Dart d_x) { rift::throw_if_interrupted(); acc0 = std::max<rift::Real>(acc0, (e_f_stretch[d_x]).norm()); }); return acc0; }());
+  const rift::Real l_largest = std::max<rift::Real>([&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, std::max<rift::Real>((e_f_membrane[d_c]).norm(), (e_f_shear[d_c]).norm())); }); return acc0; }(), [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&](rift::Dart d_x) { acc0 = std::max<rift::Real>(acc0, (e_f_stretch[d_x]).norm()); }); return acc0; }());
   const rift::Vec3 l_zero = rift::Vec3(0.0, 0.0, 0.0);
-  const rift::Vec3 l_f = rift::Vec3([&]() { rift::Vec3 acc0 = rift::Vec3::Zero(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&]([[maybe_unused]] rift::Dart d_c) { rift::throw_if_interrupted(); acc0 = rift::Vec3(acc0 + rift::Vec3((((e_f_membrane[d_c]).norm() >= l_largest) ? rift::Vec3(e_f_membrane[d_c]) : rift::Vec3(l_zero)) + (((e_f_shear[d_c]).norm() >= l_largest) ? rift::Vec3(e_f_shear[d_c]) : rift::Vec3(l_zero)))); }); return acc0; }() + [&]() { rift::Vec3 acc0 = rift::Vec3::Zero(); g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&]([[maybe_unused]] rift::Dart d_x) { rift::throw_if_interrupted(); acc0 = rift::Vec3(acc0 + (((e_f_stretch[d_x]).norm() >= l_largest) ? rift::Vec3(e_f_stretch[d_x]) : rift::Vec3(l_zero))); }); return acc0; }());
+  const rift::Vec3 l_f = ([&]() { rift::Vec3 acc0 = rift::Vec3::Zero(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 += ((((e_f_membrane[d_c]).norm() >= l_largest) ? rift::Vec3(e_f_membrane[d_c]) : rift::Vec3(l_zero)) + (((e_f_shear[d_c]).norm() >= l_largest) ? rift::Vec3(e_f_shear[d_c]) : rift::Vec3(l_zero))); }); return acc0; }() + [&]() { rift::Vec3 acc0 = rift::Vec3::Zero(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&](rift::Dart d_x) { acc0 += (((e_f_stretch[d_x]).norm() >= l_largest) ? rift::Vec3(e_f_stretch[d_x]) : rift::Vec3(l_zero)); }); return acc0; }());
   do {
     if (!(((l_f).norm() > 0.0))) continue;
     split_vertex_args call;
-    call.normal = rift::Vec3((l_f).normalized());
+    call.normal = (l_f).normalized();
     call.point = e_position[d_v];
     const rift::Dart at[] = {d_v};
     if (apply_split_vertex(g, at, call, params, touched)) applied = true;
@@ -378,7 +378,7 @@ bool apply_split_vertex(rift::GMap& g, std::span<const rift::Dart> hooks, const 
     g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart x) { each.push_back(x); });
     for (const rift::Dart d_f : each) {
       if (!g.is_alive(d_f)) continue;
-      e_side[d_f] = ((rift::Vec3(collect_mean(g, e_position, d_f, rift::Orbit{0, 1}) - args.point)).dot(args.normal) >= 0.0);
+      e_side[d_f] = (((collect_mean(g, e_position, d_f, rift::Orbit{0, 1}) - args.point)).dot(args.normal) >= 0.0);
       if (touched) touched->push_back(d_f);
     }
   }
@@ -434,7 +434,7 @@ bool apply_split_edge_end(rift::GMap& g, std::span<const rift::Dart> hooks, cons
   bool applied = false;
   do {
     split_vertex_args call;
-    call.normal = rift::Vec3((rift::Vec3(e_position[g.alpha(d_e, 0)] - e_position[d_e])).normalized());
+    call.normal = ((e_position[g.alpha(d_e, 0)] - e_position[d_e])).normalized();
     call.point = e_position[d_e];
     const rift::Dart at[] = {d_e};
     if (apply_split_vertex(g, at, call, params, touched)) applied = true;
@@ -996,7 +996,7 @@ Pack::Pack(const Params& params) : params_(params), description_("2D tearing cri
   catalog_.criteria.push_back({"spring_split", "A stretch spring whose force passes the threshold splits its extremities, perpendicular to the force (§5.1, Fig. 9b). (on <0>; applies rule split_ends)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N", true, false},
     {"both_ends", rift::ValueType::kBool, rift::Value(rift::Bool(true)), "split both extremities (else the first only)", false, false},
-  }, kDimension, {}, {"f_stretch"}});
+  }, kDimension, {}, {"f_stretch", "position"}});
   catalog_.criteria.push_back({"shear_force", "A linear shear spring whose force passes the threshold removes its face (§5.1). (on <0,1>; applies rule remove_element)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N", true, false},
   }, kDimension, {}, {"f_shear"}});
@@ -1008,16 +1008,16 @@ Pack::Pack(const Params& params) : params_(params), description_("2D tearing cri
   }, kDimension, {}, {"position", "f_membrane"}});
   catalog_.criteria.push_back({"interaction_force", "The largest force a single interaction exerts on a vertex passes the threshold: the vertex splits perpendicular to it (§5.1, Fig. 9a). (on <1,2>; applies rule split_along_largest_force)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N", true, false},
-  }, kDimension, {}, {"f_membrane", "f_shear", "f_stretch"}});
+  }, kDimension, {}, {"f_membrane", "f_shear", "f_stretch", "position"}});
   catalog_.criteria.push_back({"vertex_stress", "The vertex stress tensor (mass-weighted mean of its elements', eq. 1-2) has an eigenvalue past the threshold: split perpendicular to its eigenvector (§5.2). (on <1,2>; applies rule split_vertex)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(100.0)), "N/m", true, false},
-  }, kDimension, {}, {"corner_mass", "f_membrane", "position"}});
+  }, kDimension, {}, {"corner_mass", "position", "f_membrane", "side"}});
   catalog_.criteria.push_back({"vertex_energy", "Griffith at the mesh scale: the strain energy of a vertex's share of its membrane triangles per unit of its size passes the toughness: split perpendicular to the largest principal stress. (on <1,2>; applies rule split_vertex)", {
     {"toughness", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N/m (energy release rate times thickness)", true, false},
-  }, kDimension, {}, {"membrane_mu", "position", "f_membrane", "membrane_lambda", "corner_mass"}});
+  }, kDimension, {}, {"membrane_mu", "position", "f_membrane", "membrane_lambda", "corner_mass", "side"}});
   catalog_.criteria.push_back({"vertex_sum", "The sum of the internal forces on a vertex passes the threshold: split perpendicular to it (§5.2, Fig. 9c). (on <1,2>; applies rule split_vertex)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N", true, false},
-  }, kDimension, {}, {"vertex_force"}});
+  }, kDimension, {}, {"vertex_force", "position", "side"}});
   catalog_.criteria.push_back({"atomic_edge", "Atomic edge criterion, eq. (4): |(f1 - f2) . n| past the threshold, both faces contracting, separates them (§5.3, Fig. 9e). (on <0,2>; applies rule separate_faces)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N", true, false},
   }, kDimension, {}, {"position", "f_stretch", "f_shear", "f_membrane"}});

@@ -39,7 +39,7 @@ namespace {
 
 void declare_embeddings(rift::GMap& g) {
   if (!g.has_embedding("fem_b")) {
-    g.declare_embedding<rift::Mat3>("fem_b", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Mat3(rift::Mat3(rift::Mat3::Identity())));
+    g.declare_embedding<rift::Mat3>("fem_b", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Mat3(rift::Mat3::Identity()));
   } else if (g.find_column("fem_b")->type() != rift::ValueType::kMat3 || !(g.attachment_of("fem_b")->orbit() == rift::Orbit{0, 1, 2}) || g.find_column("fem_b")->policy() != rift::MergePolicy::kKeepFirst) {
     throw std::invalid_argument("the map's embedding 'fem_b' is not the pack's mat3 on <0,1,2> merged by 'keep'");
   }
@@ -396,7 +396,7 @@ inline bool CorotationalKernel::evaluate(const Match& m, const rift::ForceInput&
 
 void CorotationalKernel::add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store) {
   const Columns c = columns();
-  rift::Vec3* const stored_f_fem = e_f_fem.values().data();
+  rift::Vec3* const stored_f_fem = store ? e_f_fem.values().data() : nullptr;
   for (const Match& m : ms) {
     Result r;
     if (!evaluate<true>(m, in, c, r)) {
@@ -594,7 +594,7 @@ void CorotationalKernel::vertex_slots(const Match& m, rift::Slot* out) const {
 }
 
 Pack::Pack(const Params& params) : params_(params), description_("Co-rotational FEM (Müller and Gross 2004) on the tetrahedra of 3D meshes.") {
-  embeddings_.push_back({"fem_b", rift::ValueType::kMat3, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Mat3(rift::Mat3(rift::Mat3::Identity())))});
+  embeddings_.push_back({"fem_b", rift::ValueType::kMat3, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Mat3(rift::Mat3::Identity()))});
   embeddings_.push_back({"fem_volume", rift::ValueType::kReal, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"fem_mu", rift::ValueType::kReal, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"fem_lambda", rift::ValueType::kReal, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});

@@ -232,7 +232,7 @@ inline bool StretchKernel::evaluate(const Match& m, const rift::ForceInput& in, 
 
 void StretchKernel::add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store) {
   const Columns c = columns();
-  rift::Vec3* const stored_f_stretch = e_f_stretch.values().data();
+  rift::Vec3* const stored_f_stretch = store ? e_f_stretch.values().data() : nullptr;
   for (const Match& m : ms) {
     Result r;
     if (!evaluate<true>(m, in, c, r)) {
@@ -507,7 +507,7 @@ inline bool ShearKernel::evaluate(const Match& m, const rift::ForceInput& in, co
 
 void ShearKernel::add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store) {
   const Columns c = columns();
-  rift::Vec3* const stored_f_shear = e_f_shear.values().data();
+  rift::Vec3* const stored_f_shear = store ? e_f_shear.values().data() : nullptr;
   for (const Match& m : ms) {
     Result r;
     if (!evaluate<true>(m, in, c, r)) {
@@ -2085,7 +2085,7 @@ inline bool VolumeShearKernel::evaluate(const Match& m, const rift::ForceInput& 
 
 void VolumeShearKernel::add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store) {
   const Columns c = columns();
-  rift::Vec3* const stored_f_volume_shear = e_f_volume_shear.values().data();
+  rift::Vec3* const stored_f_volume_shear = store ? e_f_volume_shear.values().data() : nullptr;
   for (const Match& m : ms) {
     Result r;
     if (!evaluate<true>(m, in, c, r)) {

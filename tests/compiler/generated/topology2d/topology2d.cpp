@@ -213,7 +213,7 @@ bool apply_split_vertex(rift::GMap& g, std::span<const rift::Dart> hooks, const 
     g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart x) { each.push_back(x); });
     for (const rift::Dart d_f : each) {
       if (!g.is_alive(d_f)) continue;
-      e_side[d_f] = ((rift::Vec3(collect_mean(g, e_position, d_f, rift::Orbit{0, 1}) - args.point)).dot(args.normal) >= 0.0);
+      e_side[d_f] = (((collect_mean(g, e_position, d_f, rift::Orbit{0, 1}) - args.point)).dot(args.normal) >= 0.0);
       if (touched) touched->push_back(d_f);
     }
   }
@@ -269,7 +269,7 @@ bool apply_split_edge_end(rift::GMap& g, std::span<const rift::Dart> hooks, cons
   bool applied = false;
   do {
     split_vertex_args call;
-    call.normal = rift::Vec3((rift::Vec3(e_position[g.alpha(d_e, 0)] - e_position[d_e])).normalized());
+    call.normal = ((e_position[g.alpha(d_e, 0)] - e_position[d_e])).normalized();
     call.point = e_position[d_e];
     const rift::Dart at[] = {d_e};
     if (apply_split_vertex(g, at, call, params, touched)) applied = true;

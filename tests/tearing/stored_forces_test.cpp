@@ -1,0 +1,139 @@
+// Interactions store their forces only when the scene reads them (issue 12,
+// lean memory): a criterion reading a stored force (ComponentSpec::reads) or
+// an output array naming it makes the interactions that write it store;
+// otherwise they store nothing and the column keeps no storage, and a
+// stored-force column that no storing interaction of the scene writes reads
+// as its default without storage. Nothing else may change: the same motion,
+// the same tears, the same stored values where they are read.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <fstream>
+
+#include "rift/output/frame_mesh.hpp"
+#include "rift/scene/scene.hpp"
+#include "rift/scene/scene_setup.hpp"
+#include "tearing_support.hpp"
+
+namespace rift::tearing_test {
+namespace {
+
+constexpr const char* kSprings =
+    "[[interaction]]\nname = \"stretch\"\n"
+    "[[interaction]]\nname = \"shear\"\n"
+    "[[interaction]]\nname = \"bend\"\n";
+
+// Every stored force of the 2D mass-spring pack read by an output: the
+// interactions store as a simulation built by hand does.
+const std::vector<std::string> kEveryForce = {"f_stretch", "f_shear", "f_bend", "f_membrane"};
+
+std::unique_ptr<Simulation> build(const std::string& name, const std::string& toml,
+                                  const std::vector<std::string>* output_arrays = nullptr) {
+  const std::string path =
+      ::testing::TempDir() + "rift_stored_" + name + "_" + std::to_string(::getpid()) + ".toml";
+  std::ofstream(path) << toml;
+  const Scene scene = read_scene(path, standard_packs().catalog());
+  SetupOptions options;
+  options.check_each_rewrite = true;
+  if (output_arrays) options.output_arrays = *output_arrays;
+  return build_simulation(scene, standard_packs(), options);
+}
+
+bool has_storage(const Simulation& sim, const char* column) {
+  const ColumnBase* c = sim.map().find_column(column);
+  return c != nullptr && c->allocated();
+}
+
+Vec3 stretched(const Vec3& p) {
+  return Vec3(1.25 * p.x(), 1.1 * p.y(), p.z() + 0.05 * p.x());
+}
+
+// Runs `steps` steps of both simulations from the same deformed state and
+// expects the same motion and tears, bit for bit.
+void expect_same_run(Simulation& lean, Simulation& full, int steps) {
+  deform(lean, stretched);
+  deform(full, stretched);
+  for (int s = 0; s < steps; ++s) {
+    lean.step();
+    full.step();
+    ASSERT_EQ(lean.tears(), full.tears()) << "step " << s;
+    ASSERT_EQ(lean.position().values(), full.position().values()) << "step " << s;
+    ASSERT_EQ(lean.velocity().values(), full.velocity().values()) << "step " << s;
+  }
+  EXPECT_TRUE(lean.map().check_validity().empty());
+}
+
+TEST(StoredForces, WithoutCriterionNothingIsStoredAndTheMotionIsTheSame) {
+  const std::string toml = static_scene("grid:quad:4x4", "1.0", 1.0, kSprings);
+  auto lean = build("none_lean", toml);
+  auto full = build("none_full", toml, &kEveryForce);
+  expect_same_run(*lean, *full, 3);
+  for (const char* column : {"f_stretch", "f_shear", "f_bend", "f_membrane"})
+    EXPECT_FALSE(has_storage(*lean, column)) << column;
+  // The reference stores (else this test could not fail).
+  for (const char* column : {"f_stretch", "f_shear", "f_bend"})
+    EXPECT_TRUE(has_storage(*full, column)) << column;
+  EXPECT_FALSE(has_storage(*full, "f_membrane"));  // no interaction of the scene writes it
+}
+
+TEST(StoredForces, ACriterionSeesTheForcesItReadsExactlyThroughTears) {
+  // spring_split reads f_stretch (its measure and its split plane): stretch
+  // stores, bend and shear do not; the tears and the stored stretch forces
+  // are those of a simulation where every interaction stores.
+  const std::string toml = static_scene(
+      "grid:quad:4x4", "1.0", 1.0,
+      std::string(kSprings) + "[[criterion]]\nname = \"spring_split\"\nthreshold = 2.0\n");
+  auto lean = build("split_lean", toml);
+  auto full = build("split_full", toml, &kEveryForce);
+  expect_same_run(*lean, *full, 3);
+  EXPECT_GT(lean->tears(), 0u);
+  EXPECT_TRUE(has_storage(*lean, "f_stretch"));
+  EXPECT_FALSE(has_storage(*lean, "f_bend"));
+  EXPECT_FALSE(has_storage(*lean, "f_shear"));
+  EXPECT_TRUE(has_storage(*full, "f_bend"));
+  const auto& a = lean->map().embedding<Vec3>("f_stretch").values();
+  const auto& b = full->map().embedding<Vec3>("f_stretch").values();
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_EQ(a, b);
+  EXPECT_TRUE(std::any_of(a.begin(), a.end(), [](const Vec3& f) { return f.norm() > 0; }));
+}
+
+TEST(StoredForces, AColumnNoInteractionWritesReadsAsZeroWithoutStorage) {
+  // atomic_edge reads f_stretch, f_shear and f_membrane; no interaction of
+  // this scene writes f_membrane: it stays without storage and reads zero.
+  const std::string toml = static_scene(
+      "grid:quad:4x4", "1.0", 1.0,
+      std::string(kSprings) + "[[criterion]]\nname = \"atomic_edge\"\nthreshold = 0.5\n");
+  auto lean = build("edge_lean", toml);
+  auto full = build("edge_full", toml, &kEveryForce);
+  expect_same_run(*lean, *full, 2);
+  EXPECT_TRUE(has_storage(*lean, "f_stretch"));
+  EXPECT_TRUE(has_storage(*lean, "f_shear"));
+  EXPECT_FALSE(has_storage(*lean, "f_bend"));
+  EXPECT_FALSE(has_storage(*lean, "f_membrane"));
+  const Embedding<Vec3> membrane = std::as_const(lean->map()).embedding<Vec3>("f_membrane");
+  const Embedding<Vec3>& read = membrane;
+  EXPECT_EQ(read[0], Vec3::Zero());
+  EXPECT_FALSE(has_storage(*lean, "f_membrane"));
+}
+
+TEST(StoredForces, AnOutputArrayNamingAStoredForceIsStored) {
+  const std::string toml = static_scene("grid:quad:4x4", "1.0", 1.0, kSprings);
+  const std::vector<std::string> bend = {"f_bend"};
+  auto sim = build("output", toml, &bend);
+  deform(*sim, stretched);
+  sim->step();
+  EXPECT_TRUE(has_storage(*sim, "f_bend"));
+  EXPECT_FALSE(has_storage(*sim, "f_stretch"));
+  const auto& f = sim->map().embedding<Vec3>("f_bend").values();
+  EXPECT_TRUE(std::any_of(f.begin(), f.end(), [](const Vec3& v) { return v.norm() > 0; }));
+  // The set-up's default names what the frame outputs write.
+  const FrameOptions frame;
+  std::vector<std::string> written = frame.point_arrays;
+  written.insert(written.end(), frame.cell_arrays.begin(), frame.cell_arrays.end());
+  EXPECT_EQ(SetupOptions{}.output_arrays, written);
+}
+
+}  // namespace
+}  // namespace rift::tearing_test
