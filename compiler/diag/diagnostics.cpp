@@ -7,7 +7,7 @@ namespace rift::diag {
 
 const std::vector<std::string>& known_warnings() {
   static const std::vector<std::string> kNames = {"unused-variable", "unused-parameter",
-                                                  "float-equality"};
+                                                  "unused-function", "float-equality"};
   return kNames;
 }
 
