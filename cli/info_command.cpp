@@ -5,8 +5,8 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
+#include "rift/io/load_map.hpp"
 #include "rift/mesh/generators.hpp"
-#include "rift/mesh/load_map.hpp"
 #include "rift/mesh/map_statistics.hpp"
 
 namespace rift::cli {

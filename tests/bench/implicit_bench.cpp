@@ -11,7 +11,7 @@
 
 #include "../physics/physics_setup.hpp"
 #include "rift/core/parallel.hpp"
-#include "rift/mesh/load_map.hpp"
+#include "rift/io/load_map.hpp"
 #include "rift/sim/element_matrix.hpp"
 #include "rift/sim/preconditioner.hpp"
 

@@ -16,7 +16,7 @@
 
 #include "paper_cloth_sim.hpp"
 #include "rift/core/parallel.hpp"
-#include "rift/mesh/load_map.hpp"
+#include "rift/io/load_map.hpp"
 
 namespace {
 

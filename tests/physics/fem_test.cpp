@@ -11,7 +11,7 @@
 #include <random>
 
 #include "physics_setup.hpp"
-#include "rift/mesh/load_map.hpp"
+#include "rift/io/load_map.hpp"
 
 namespace rift::physics_test {
 namespace {

@@ -7,7 +7,7 @@
 #include <Eigen/Dense>
 
 #include "physics_setup.hpp"
-#include "rift/mesh/load_map.hpp"
+#include "rift/io/load_map.hpp"
 
 namespace rift::physics_test {
 namespace {

@@ -13,7 +13,7 @@
 
 #include "given_jacobians.hpp"
 #include "physics_setup.hpp"
-#include "rift/mesh/load_map.hpp"
+#include "rift/io/load_map.hpp"
 
 namespace rift::physics_test {
 namespace {

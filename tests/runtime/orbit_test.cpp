@@ -1,4 +1,4 @@
-#include "rift/gmap/orbit.hpp"
+#include "rift/core/orbit.hpp"
 
 #include <gtest/gtest.h>
 

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "rift/core/huge_pages.hpp"
+#include "rift/core/orbit.hpp"
 #include "rift/embed/column.hpp"
-#include "rift/gmap/orbit.hpp"
 
 namespace rift {
 

@@ -13,7 +13,7 @@
 #include "rift/core/parallel.hpp"
 #include "rift/gmap/cell_list.hpp"
 #include "rift/gmap/gmap.hpp"
-#include "rift/pack/criterion.hpp"
+#include "rift/sim/criterion.hpp"
 
 namespace rift::generated {
 

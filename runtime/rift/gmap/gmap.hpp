@@ -12,9 +12,9 @@
 #include <string_view>
 #include <vector>
 
+#include "rift/core/orbit.hpp"
 #include "rift/core/types.hpp"
 #include "rift/embed/attachment.hpp"
-#include "rift/gmap/orbit.hpp"
 
 namespace rift {
 

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "rift/pack/criterion.hpp"
+#include "rift/pack/catalog.hpp"
+#include "rift/pack/component_use.hpp"
 #include "rift/pack/rule.hpp"
-#include "rift/scene/catalog.hpp"
-#include "rift/scene/scene.hpp"
+#include "rift/sim/criterion.hpp"
 #include "rift/sim/force_model.hpp"
 
 namespace rift {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "rift/gmap/gmap.hpp"
-#include "rift/scene/catalog.hpp"
+#include "rift/pack/catalog.hpp"
 
 namespace rift {
 

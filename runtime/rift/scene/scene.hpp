@@ -9,7 +9,8 @@
 #include <vector>
 
 #include "rift/embed/value.hpp"
-#include "rift/scene/catalog.hpp"
+#include "rift/pack/catalog.hpp"
+#include "rift/pack/component_use.hpp"
 #include "rift/scene/selection.hpp"
 #include "rift/sim/handles.hpp"
 #include "rift/sim/implicit_euler.hpp"
@@ -18,24 +19,6 @@
 #include "rift/sim/obstacles.hpp"
 
 namespace rift {
-
-struct SceneParam {
-  Value value;
-  int line = 0;
-};
-
-/// One [[interaction]] or [[criterion]] table: a name from the catalog and
-/// every parameter resolved (given, or its default).
-struct ComponentUse {
-  std::string name;
-  int line = 0;
-  std::map<std::string, SceneParam> params;
-
-  Real real(const std::string& param) const;
-  Vec3 vec3(const std::string& param) const;
-  std::int64_t integer(const std::string& param) const;
-  bool boolean(const std::string& param) const;
-};
 
 struct SceneMesh {
   std::string source;  ///< generator spelling, or a file path resolved against the scene's folder

@@ -746,21 +746,6 @@ class SceneReader {
 
 }  // namespace
 
-Real ComponentUse::real(const std::string& param) const {
-  const Value& v = params.at(param).value;
-  if (auto* i = std::get_if<std::int64_t>(&v)) return static_cast<Real>(*i);
-  return std::get<Real>(v);
-}
-Vec3 ComponentUse::vec3(const std::string& param) const {
-  return std::get<Vec3>(params.at(param).value);
-}
-std::int64_t ComponentUse::integer(const std::string& param) const {
-  return std::get<std::int64_t>(params.at(param).value);
-}
-bool ComponentUse::boolean(const std::string& param) const {
-  return std::get<Bool>(params.at(param).value);
-}
-
 Scene read_scene(const std::string& path, const Catalog& catalog) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, 0, "no such scene file");

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "rift/gmap/gmap.hpp"
-#include "rift/pack/criterion.hpp"
 #include "rift/sim/bdf2.hpp"
+#include "rift/sim/criterion.hpp"
 #include "rift/sim/divergence.hpp"
 #include "rift/sim/external_force.hpp"
 #include "rift/sim/force_model.hpp"

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "fold_lets.hpp"
-#include "rift/mesh/load_map.hpp"
+#include "rift/io/load_map.hpp"
 
 namespace {
 

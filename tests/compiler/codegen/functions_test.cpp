@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "functions.hpp"
-#include "rift/mesh/load_map.hpp"
+#include "rift/io/load_map.hpp"
 #include "rift/sim/simulation.hpp"
 
 namespace {

@@ -9,7 +9,7 @@
 
 #include "../../sim/test_spring_model.hpp"
 #include "gen2d.hpp"
-#include "rift/mesh/load_map.hpp"
+#include "rift/io/load_map.hpp"
 #include "rift/sim/simulation.hpp"
 
 namespace {

@@ -10,7 +10,7 @@
 #include "criteria2d.hpp"
 #include "mass_spring2d.hpp"
 #include "rift/gmap/state_columns.hpp"
-#include "rift/mesh/load_map.hpp"
+#include "rift/io/load_map.hpp"
 #include "rift/mesh/map_statistics.hpp"
 #include "rift/sim/mass_model.hpp"
 

@@ -28,7 +28,7 @@
 #include "construction2d.hpp"
 #include "random2d.hpp"
 #include "random3d.hpp"
-#include "rift/mesh/load_map.hpp"
+#include "rift/io/load_map.hpp"
 #include "rift/pack/pack.hpp"
 #include "shared_test_data.hpp"
 #include "topology2d.hpp"

@@ -1,5 +1,7 @@
-// A compiled tearing criterion (§5): evaluated on every orbit of its type
-// after forces are known; where it holds, it proposes to apply its rule.
+// The interface between the simulation loop and a tearing criterion (§5), as
+// ForceModel is for an interaction: evaluated on every orbit of its type after
+// forces are known; where it holds, it proposes to apply its rule. riftc
+// generates the criteria; the loop knows none of them in particular.
 #pragma once
 
 #include <span>

@@ -1,4 +1,4 @@
-#include "rift/mesh/load_map.hpp"
+#include "rift/io/load_map.hpp"
 
 #include "rift/io/read_mesh.hpp"
 #include "rift/mesh/generators.hpp"
