@@ -58,7 +58,6 @@ struct Param {
   Bound bound = Bound::None;
   Location bound_loc;
   std::string description;
-  mutable int uses = 0;  // counted by resolve/ for -Wunused-parameter
 };
 
 struct Rule {

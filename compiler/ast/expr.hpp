@@ -32,7 +32,6 @@ struct Ident {
 struct Let {
   Ident name;
   ExprPtr value;
-  mutable int uses = 0;  // counted by resolve/ for -Wunused-variable
 };
 
 struct Expr {

@@ -6,18 +6,20 @@ namespace rift::check {
 
 namespace {
 
-void unused_lets(const std::vector<ast::Let>& lets, diag::Diagnostics& diags) {
+void unused_lets(const std::vector<ast::Let>& lets, const resolve::Symbols& symbols,
+                 diag::Diagnostics& diags) {
   for (const ast::Let& l : lets) {
-    if (l.uses == 0) {
+    if (symbols.uses(l) == 0) {
       diags.warning("unused-variable", l.name.loc, "'" + l.name.text + "' is never used");
     }
   }
 }
 
 void unused_params(const std::vector<ast::Param>& params, const char* kind,
-                   const std::string& owner, diag::Diagnostics& diags) {
+                   const std::string& owner, const resolve::Symbols& symbols,
+                   diag::Diagnostics& diags) {
   for (const ast::Param& p : params) {
-    if (p.uses == 0) {
+    if (symbols.uses(p) == 0) {
       diags.warning(
           "unused-parameter", p.name.loc,
           "parameter '" + p.name.text + "' of " + kind + " '" + owner + "' is never used");
@@ -31,8 +33,8 @@ void check_unused(const ast::Program& program, const resolve::Symbols& symbols,
                   diag::Diagnostics& diags) {
   for (const ast::File& file : program.files) {
     for (const ast::Function& f : file.functions) {
-      unused_lets(f.lets, diags);
-      unused_params(f.params, "function", f.name.text, diags);
+      unused_lets(f.lets, symbols, diags);
+      unused_params(f.params, "function", f.name.text, symbols, diags);
       // An included pack, or a pack of functions only, is a library: its
       // users need not call all of it.
       const bool library = file.included || ast::declares_only_functions(file);
@@ -45,9 +47,9 @@ void check_unused(const ast::Program& program, const resolve::Symbols& symbols,
       }
     }
     for (const ast::Rule& r : file.rules) {
-      unused_lets(r.lets, diags);
+      unused_lets(r.lets, symbols, diags);
       for (const ast::Param& p : r.params) {
-        if (p.uses == 0) {
+        if (symbols.uses(p) == 0) {
           diags.warning(
               "unused-parameter", p.name.loc,
               "parameter '" + p.name.text + "' of rule '" + r.name.text + "' is never used");
@@ -55,13 +57,13 @@ void check_unused(const ast::Program& program, const resolve::Symbols& symbols,
       }
     }
     for (const ast::Interaction& i : file.interactions) {
-      unused_lets(i.lets, diags);
-      unused_params(i.params, "interaction", i.name.text, diags);
+      unused_lets(i.lets, symbols, diags);
+      unused_params(i.params, "interaction", i.name.text, symbols, diags);
     }
     for (const ast::Script& sc : file.scripts) {
-      unused_lets(sc.lets, diags);
+      unused_lets(sc.lets, symbols, diags);
       for (const ast::Param& p : sc.params) {
-        if (p.uses == 0) {
+        if (symbols.uses(p) == 0) {
           diags.warning(
               "unused-parameter", p.name.loc,
               "parameter '" + p.name.text + "' of script '" + sc.name.text + "' is never used");
@@ -69,8 +71,8 @@ void check_unused(const ast::Program& program, const resolve::Symbols& symbols,
       }
     }
     for (const ast::Criterion& c : file.criteria) {
-      unused_lets(c.lets, diags);
-      unused_params(c.params, "criterion", c.name.text, diags);
+      unused_lets(c.lets, symbols, diags);
+      unused_params(c.params, "criterion", c.name.text, symbols, diags);
     }
   }
 }

@@ -85,7 +85,7 @@ class Resolver {
       for (const auto& a : e.args)
         expr(*a, inner);
       for (const ast::Let& l : e.lets) {
-        if (l.uses == 0)
+        if (symbols_.uses(l) == 0)
           diags_.warning("unused-variable", l.name.loc, "'" + l.name.text + "' is never used");
       }
       return;
@@ -122,6 +122,10 @@ class Resolver {
   }
 
   diag::Diagnostics& diags() { return diags_; }
+  /// A name read a let or a parameter, or a duplicate was reported (which
+  /// must not be reported again as unused): Symbols::uses.
+  void count_use(const ast::Let& let) { ++symbols_.let_uses[&let]; }
+  void count_use(const ast::Param& param) { ++symbols_.param_uses[&param]; }
 
   /// Each `when` of a body sees the lets written before it, and no later one.
   void whens(const std::vector<ast::Let>& lets, const std::vector<ast::ExprPtr>& whens,
@@ -194,7 +198,7 @@ class Resolver {
         const ast::Let& let = (*f->first)[k];
         if (let.name.text == e.name) {
           symbols_.bindings[&e].let = &let;
-          ++let.uses;
+          count_use(let);
           return;
         }
       }
@@ -206,7 +210,7 @@ class Resolver {
         if (let.name.text == e.name) {
           symbols_.bindings[&e].let = &let;
           symbols_.bindings[&e].function = scope.function;
-          ++let.uses;
+          count_use(let);
           return;
         }
       }
@@ -216,7 +220,7 @@ class Resolver {
         if (p.name.text == e.name) {
           symbols_.bindings[&e].param = &p;
           symbols_.bindings[&e].function = scope.function;
-          ++p.uses;
+          count_use(p);
           return;
         }
       }
@@ -247,7 +251,7 @@ class Resolver {
     if (scope.match_lets) {
       for (const ast::Let& let : *scope.match_lets) {
         if (let.name.text != e.name) continue;
-        ++let.uses;  // reported here; no second report as unused
+        count_use(let);  // reported here; no second report as unused
         diags_.error(e.loc, "'" + e.name + "' " + scope.match_lets_reason)
             .notes.push_back({let.name.loc, "defined here"});
         return;
@@ -310,7 +314,7 @@ void component_params(const std::vector<ast::Param>& params, Resolver& r, const 
     if (params[k].default_value) r.expr(*params[k].default_value, constant);
     for (std::size_t j = 0; j < k; ++j) {
       if (params[j].name.text != params[k].name.text) continue;
-      ++params[k].uses;  // reported here; no second report as unused
+      r.count_use(params[k]);  // reported here; no second report as unused
       r.diags()
           .error(params[k].name.loc, "parameter '" + params[k].name.text + "' is declared twice")
           .notes.push_back({params[j].name.loc, "first declared here"});
@@ -401,7 +405,7 @@ void resolve_function(const ast::Function& f, Resolver& r) {
   for (std::size_t k = 0; k < f.params.size(); ++k) {
     for (std::size_t j = 0; j < k; ++j) {
       if (f.params[j].name.text != f.params[k].name.text) continue;
-      ++f.params[k].uses;  // reported here; no second report as unused
+      r.count_use(f.params[k]);  // reported here; no second report as unused
       r.diags()
           .error(f.params[k].name.loc, "parameter '" + f.params[k].name.text + "' of function '" +
                                            f.name.text + "' is declared twice")

@@ -191,6 +191,16 @@ const ast::Embedding* Symbols::target(const ast::Init& init) const {
   return it == init_targets.end() ? nullptr : it->second;
 }
 
+int Symbols::uses(const ast::Let& let) const {
+  const auto it = let_uses.find(&let);
+  return it == let_uses.end() ? 0 : it->second;
+}
+
+int Symbols::uses(const ast::Param& param) const {
+  const auto it = param_uses.find(&param);
+  return it == param_uses.end() ? 0 : it->second;
+}
+
 const Binding& Symbols::binding(const ast::Expr& e) const {
   static const Binding kUnresolved;
   const auto it = bindings.find(&e);

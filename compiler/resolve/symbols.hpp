@@ -57,6 +57,14 @@ struct Symbols {
 
   /// How many calls name each function (for -Wunused-function).
   std::unordered_map<const ast::Function*, int> calls;
+
+  /// How many names read each let and each parameter (for -Wunused-variable
+  /// and -Wunused-parameter), counted by resolve_names here rather than in
+  /// the AST; a duplicate declaration counts as used, being reported already.
+  int uses(const ast::Let& let) const;
+  int uses(const ast::Param& param) const;
+  std::unordered_map<const ast::Let*, int> let_uses;
+  std::unordered_map<const ast::Param*, int> param_uses;
 };
 
 /// Collects every declaration; a name declared twice is an error with a note
