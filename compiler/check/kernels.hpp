@@ -11,12 +11,14 @@
 #include "ast/program.hpp"
 #include "diag/diagnostics.hpp"
 #include "resolve/symbols.hpp"
+#include "rift/core/state_embeddings.hpp"
 
 namespace rift::check {
 
-/// Names the integrator passes as stage arrays (ForceInput::x and ::v).
-inline constexpr const char* kPositionEmbedding = "position";
-inline constexpr const char* kVelocityEmbedding = "velocity";
+/// Names the integrator passes as stage arrays (ForceInput::x and ::v), from
+/// the one table of the simulator's state embeddings.
+inline constexpr std::string_view kPositionEmbedding = state::kPosition;
+inline constexpr std::string_view kVelocityEmbedding = state::kVelocity;
 
 void check_kernels(const ast::Program& program, const resolve::Symbols& symbols,
                    diag::Diagnostics& diags);

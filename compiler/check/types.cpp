@@ -4,6 +4,7 @@
 #include <set>
 
 #include "check/builtins.hpp"
+#include "rift/core/state_embeddings.hpp"
 
 namespace rift::check {
 
@@ -314,6 +315,20 @@ void check_assign(const ast::Assign& a, const resolve::Symbols& symbols, TypeChe
   tc.expect(*a.value, target->type, std::string(what) + " '" + a.embedding.text + "'");
 }
 
+/// The masses are the simulator's state: it sets corner_mass from the scene's
+/// [mass] (by area or volume) and sums vertex_mass from it after the pack's
+/// inits have run, and again after every rewrite, so a value an init gave
+/// them would be overwritten without a word. An init of either is an error.
+void reject_mass_init(const ast::Init& init, diag::Diagnostics& diags) {
+  const std::string& name = init.embedding.text;
+  if (name != state::kCornerMass && name != state::kVertexMass) return;
+  diags.error(init.embedding.loc,
+              "an init cannot set '" + name +
+                  "': the simulator computes the masses from the scene's [mass] section "
+                  "(by area or volume) after the pack's inits, and would overwrite this value; "
+                  "remove this init");
+}
+
 void check_component_params(const std::vector<ast::Param>& params, TypeChecker& tc,
                             diag::Diagnostics& diags) {
   for (const ast::Param& p : params) {
@@ -432,6 +447,7 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols, E
         continue;
       }
       tc.expect(*init.value, emb->type, "the initial value of '" + init.embedding.text + "'");
+      reject_mass_init(init, diags);
       auto [it, fresh] = initialised.emplace(init.embedding.text, init.embedding.loc);
       if (!fresh) {
         diags.error(init.embedding.loc, "'" + init.embedding.text + "' is initialised twice")
@@ -458,6 +474,7 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols, E
           continue;
         }
         tc.expect(*init.value, target->type, "the initial value of '" + init.embedding.text + "'");
+        reject_mass_init(init, diags);
         auto [it, fresh] = initialised.emplace(init.embedding.text, init.embedding.loc);
         if (!fresh) {
           diags.error(init.embedding.loc, "'" + init.embedding.text + "' is initialised twice")

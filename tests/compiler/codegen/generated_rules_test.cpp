@@ -13,8 +13,9 @@
 
 #include "gen2d.hpp"
 #include "gen3d.hpp"
-#include "rift/mesh/load_map.hpp"
+#include "rift/io/load_map.hpp"
 #include "rift/mesh/map_statistics.hpp"
+#include "rift/sim/mass_model.hpp"
 
 namespace {
 
@@ -24,10 +25,16 @@ using rift::Dart;
 using rift::GMap;
 using rift::Vec3;
 
+/// A grid with the pack's embeddings, a mass of 0.25 on every corner and the
+/// vertex masses summed from them, as the runtime sets masses (an init cannot).
 GMap grid(const char* spec) {
   GMap g = rift::load_map(spec);
   g2::declare_embeddings(g);
   g2::run_initialisers(g);
+  auto corner = g.embedding<rift::Real>("corner_mass");
+  g.for_each_dart([&](Dart d) { corner[d] = 0.25; });
+  auto vertex = g.embedding<rift::Real>("vertex_mass");
+  rift::update_all_vertex_masses(g, corner, vertex);
   return g;
 }
 
