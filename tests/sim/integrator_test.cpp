@@ -116,11 +116,11 @@ struct HangingSpring {
   }
 };
 
-Real force_step_error(Real dt, Real T) {
+Real force_step_error(Real dt, Real duration) {
   const HangingSpring spring;
   Integrator rk4(IntegratorKind::kRK4);
   std::vector<Vec3> x{Vec3(1, 0, 0), Vec3(0.5, 0.25, 0)}, v(2, Vec3::Zero());
-  const int steps = static_cast<int>(std::lround(T / dt));
+  const int steps = static_cast<int>(std::lround(duration / dt));
   for (int s = 0; s < steps; ++s)
     rk4.step(spring.forces(), spring.to_a(), x, v, dt, spring.accelerations(x));
   // The pinned vertex never moves, whatever its force.
@@ -130,9 +130,10 @@ Real force_step_error(Real dt, Real T) {
 }
 
 TEST(Integrators, Rk4FromForcesConvergesAtFourthOrder) {
-  const Real T = 1.0;
-  EXPECT_LT(force_step_error(0.01, T), 1e-7);
-  EXPECT_NEAR(std::log2(force_step_error(0.02, T) / force_step_error(0.01, T)), 4.0, 0.15);
+  const Real duration = 1.0;
+  EXPECT_LT(force_step_error(0.01, duration), 1e-7);
+  EXPECT_NEAR(std::log2(force_step_error(0.02, duration) / force_step_error(0.01, duration)), 4.0,
+              0.15);
 }
 
 TEST(Integrators, Rk4FromForcesGivesTheBitsOfRk4FromAccelerations) {
