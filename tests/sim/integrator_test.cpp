@@ -89,6 +89,74 @@ TEST(Integrators, SymplecticEulerKeepsEnergyBounded) {
   EXPECT_GT(osc.energy(x[0], v[0]), e0 * 1.005);
 }
 
+// The step from forces (what Simulation runs): a spring of stiffness k
+// holding a mass m under gravity g along x, beside a pinned vertex (inverse
+// mass 0). x'' = -(k/m) x + g, so x(t) = g/w² + (x0 - g/w²) cos(w t), w² = k/m.
+struct HangingSpring {
+  Real k = 8, m = 2, g = -3;
+  std::vector<Real> inverse_mass{1 / m, 0};
+  ForceFn forces() const {
+    return [k = k](const std::vector<Vec3>& x, const std::vector<Vec3>&, std::vector<Vec3>& f) {
+      for (std::size_t i = 0; i < x.size(); ++i)
+        f[i] += -k * x[i];  // the pinned vertex feels a force too, and must not move
+    };
+  }
+  ForceToAcceleration to_a() const { return {inverse_mass.data(), Vec3(g, 0, 0)}; }
+  // a(x, v) as Simulation forms it: w f + g where w > 0, else 0.
+  std::vector<Vec3> accelerations(const std::vector<Vec3>& x) const {
+    std::vector<Vec3> f(x.size(), Vec3::Zero()), a(x.size());
+    forces()(x, x, f);
+    for (std::size_t i = 0; i < x.size(); ++i)
+      a[i] = inverse_mass[i] > 0 ? Vec3(f[i] * inverse_mass[i] + to_a().gravity) : Vec3::Zero();
+    return a;
+  }
+  Real exact(Real x0, Real t) const {
+    const Real w2 = k / m, rest = g / w2;
+    return rest + (x0 - rest) * std::cos(std::sqrt(w2) * t);
+  }
+};
+
+Real force_step_error(Real dt, Real duration) {
+  const HangingSpring spring;
+  Integrator rk4(IntegratorKind::kRK4);
+  std::vector<Vec3> x{Vec3(1, 0, 0), Vec3(0.5, 0.25, 0)}, v(2, Vec3::Zero());
+  const int steps = static_cast<int>(std::lround(duration / dt));
+  for (int s = 0; s < steps; ++s)
+    rk4.step(spring.forces(), spring.to_a(), x, v, dt, spring.accelerations(x));
+  // The pinned vertex never moves, whatever its force.
+  EXPECT_EQ(x[1], Vec3(0.5, 0.25, 0));
+  EXPECT_EQ(v[1], Vec3::Zero());
+  return std::abs(x[0].x() - spring.exact(1, steps * dt));
+}
+
+TEST(Integrators, Rk4FromForcesConvergesAtFourthOrder) {
+  const Real duration = 1.0;
+  EXPECT_LT(force_step_error(0.01, duration), 1e-7);
+  EXPECT_NEAR(std::log2(force_step_error(0.02, duration) / force_step_error(0.01, duration)), 4.0,
+              0.15);
+}
+
+TEST(Integrators, Rk4FromForcesGivesTheBitsOfRk4FromAccelerations) {
+  // The force path forms accelerations inside its sweeps; the same
+  // arithmetic as an acceleration function that forms them itself.
+  const HangingSpring spring;
+  const std::vector<Vec3> x0{Vec3(1, 0.1, -0.2), Vec3(0.5, 0.25, 0)};
+  const std::vector<Vec3> v0{Vec3(0.3, -0.7, 0.1), Vec3::Zero()};
+  std::vector<Vec3> xf = x0, vf = v0, xa = x0, va = v0;
+  Integrator from_forces(IntegratorKind::kRK4), from_accelerations(IntegratorKind::kRK4);
+  const AccelerationFn accel = [&](const std::vector<Vec3>& x, const std::vector<Vec3>&,
+                                   std::vector<Vec3>& a) { a = spring.accelerations(x); };
+  for (int s = 0; s < 100; ++s) {
+    from_forces.step(spring.forces(), spring.to_a(), xf, vf, 0.03, spring.accelerations(xf));
+    from_accelerations.step(accel, xa, va, 0.03);
+  }
+  EXPECT_NE(xf[0], x0[0]);
+  for (std::size_t i = 0; i < x0.size(); ++i) {
+    EXPECT_EQ(xf[i], xa[i]) << i;
+    EXPECT_EQ(vf[i], va[i]) << i;
+  }
+}
+
 TEST(Integrators, ParseNames) {
   EXPECT_EQ(parse_integrator("rk4"), IntegratorKind::kRK4);
   EXPECT_EQ(parse_integrator("euler"), IntegratorKind::kExplicitEuler);

@@ -32,6 +32,17 @@ std::string_view to_string(IntegratorKind kind);
 using AccelerationFn = std::function<void(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
                                           std::vector<Vec3>& a)>;
 
+/// Adds forces f(x, v) into f, which arrives zeroed and of the arrays' length.
+using ForceFn = std::function<void(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                                   std::vector<Vec3>& f)>;
+
+/// How a vertex's acceleration follows from its force: a = w f + g where its
+/// inverse mass w > 0, else 0 (pinned, held and dead vertices do not move).
+struct ForceToAcceleration {
+  const Real* inverse_mass;  ///< by vertex slot, as long as the state
+  Vec3 gravity;
+};
+
 /// Advances (x, v) by dt. Keeps its stage buffers between steps, so a step
 /// allocates nothing unless the number of vertices grew.
 class Integrator {
@@ -44,9 +55,22 @@ class Integrator {
   void step(const AccelerationFn& accel, std::vector<Vec3>& x, std::vector<Vec3>& v, Real dt,
             const std::vector<Vec3>* a0 = nullptr);
 
+  /// The same step from forces: the stages' accelerations are formed inside
+  /// the integrator's own sweeps (`to_a`), and the force buffer is zeroed
+  /// there too, so a stage costs the force pass and one sweep over the
+  /// vertices instead of three (zero, forces to accelerations, update).
+  /// The same bits as step(AccelerationFn) given a = w f + g.
+  /// `a0` holds a(x, v) (see above).
+  void step(const ForceFn& forces, const ForceToAcceleration& to_a, std::vector<Vec3>& x,
+            std::vector<Vec3>& v, Real dt, const std::vector<Vec3>& a0);
+
  private:
+  template <class StageFn, class ToA>
+  void rk4(const StageFn& stage, const ToA& to_a, std::vector<Vec3>& x, std::vector<Vec3>& v,
+           Real dt, const std::vector<Vec3>& a);
+
   IntegratorKind kind_;
-  std::vector<Vec3> a_, k2x_, k2v_, k4v_, xs_, vs_;
+  std::vector<Vec3> a_, x_sum_, v_sum_, stage_f_, xs_, vs_;
 };
 
 }  // namespace rift

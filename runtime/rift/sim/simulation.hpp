@@ -141,6 +141,13 @@ class Simulation {
  private:
   void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& a,
                      bool store);
+  /// Adds the interactions' and external forces at a stage (x, v) into f,
+  /// storing none (the integrator's stages after the first).
+  void add_stage_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                        std::vector<Vec3>& f);
+  /// True when the step accounts the work of external forces and handles
+  /// (then it keeps the positions before the step).
+  bool tracks_external_work() const { return !external_.empty() || handles_ != nullptr; }
   void refresh_inverse_masses();
   void refresh_inverse_masses(std::span<const Dart> region);
   void refresh_inverse_mass(Slot s);

@@ -34,7 +34,7 @@ void Simulation::implicit_step() {
     for (std::size_t s = 0; s < n; ++s)
       if (is_free_[s]) f[s] += mass[s] * g;
   };
-  a0_.assign(forces_.begin(), forces_.end());  // forces at (x, v), computed by step()
+  a0_.assign(start_forces_.begin(), start_forces_.end());  // forces at (x, v), from step()
   add_external(a0_);
   const ImplicitEuler::ForceFn force = [&](const std::vector<Vec3>& xs, const std::vector<Vec3>& vs,
                                            std::vector<Vec3>& f) {
