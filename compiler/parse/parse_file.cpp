@@ -1,7 +1,7 @@
 #include "parse/parse_file.hpp"
 
-#include "lexer.hpp"
-#include "parser.hpp"
+#include "parse/lexer.hpp"
+#include "parse/parser.hpp"
 
 namespace rift::parse {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "diag/diagnostics.hpp"
-#include "lexer.hpp"
+#include "parse/lexer.hpp"
 
 namespace {
 

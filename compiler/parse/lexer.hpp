@@ -5,7 +5,7 @@
 #include <string>
 
 #include "diag/diagnostics.hpp"
-#include "parser.hpp"
+#include "parse/parser.hpp"
 
 namespace rift::grammar {
 

@@ -1,7 +1,7 @@
 // re2c lexer of the rule language. The buffer is a std::string: its terminating
 // NUL is the sentinel, and YYLIMIT tells a real end from a NUL byte inside the
 // file (reported as an unexpected character, never read past).
-#include "lexer.hpp"
+#include "parse/lexer.hpp"
 
 #include <cerrno>
 #include <cstdlib>

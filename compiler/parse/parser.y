@@ -43,7 +43,7 @@
 }
 
 %code {
-#include "lexer.hpp"
+#include "parse/lexer.hpp"
 
 namespace rift::grammar {
 
