@@ -93,42 +93,68 @@ void Preconditioner::update(const ElementMatrix* blocks, const std::vector<Real>
 void Preconditioner::build_pattern(const ElementMatrix& blocks, std::size_t n) {
   // Whole-matrix rebuild: only the incomplete Cholesky preconditioner needs a
   // global pattern, and only after a tear (the element blocks themselves
-  // follow the match cache without one).
-  using Triplet = Eigen::Triplet<Real>;
-  std::vector<Triplet> triplets;
-  triplets.reserve(3 * n);
-  for (std::size_t i = 0; i < 3 * n; ++i)
-    triplets.emplace_back(static_cast<int>(i), static_cast<int>(i), 0.0);
+  // follow the match cache without one). Built vertex by vertex, not entry by
+  // entry: the lower triangle of A is made of the 3×3 blocks (r, c) of the
+  // vertex pairs r > c some element couples, and the lower triangles of the
+  // diagonal blocks. So the pairs are collected once per block (not nine
+  // scalar triplets), sorted, and A's compressed columns written directly;
+  // each scalar entry's index follows from its block's place in its column.
+  // (Scalar triplets through Eigen's setFromTriplets cost 10x more: about
+  // 2 implicit steps of the 19,200-tetrahedron beam, docs/physics.md.)
+  pairs_.clear();
   for (const ElementBlocks& e : blocks.elements()) {
     const std::size_t k = static_cast<std::size_t>(e.k);
     for (std::size_t m = 0; m < e.matches; ++m) {
       const Slot* s = e.slots.data() + m * k;
       for (std::size_t i = 0; i < k; ++i) {
         for (std::size_t j = 0; j < k; ++j) {
-          if (s[i] == kNoSlot || s[j] == kNoSlot) continue;
-          for (int a = 0; a < 3; ++a) {
-            for (int b = 0; b < 3; ++b) {
-              const int row = static_cast<int>(3 * s[i]) + a, col = static_cast<int>(3 * s[j]) + b;
-              if (row >= col) triplets.emplace_back(row, col, 0.0);
-            }
-          }
+          if (s[i] == kNoSlot || s[j] == kNoSlot || s[i] <= s[j]) continue;
+          pairs_.push_back((std::uint64_t{s[j]} << 32) | s[i]);  // column s[j], row s[i]
         }
       }
     }
   }
+  std::sort(pairs_.begin(), pairs_.end());
+  pairs_.erase(std::unique(pairs_.begin(), pairs_.end()), pairs_.end());
+  // first_pair_[c]: where vertex c's rows below the diagonal start in pairs_.
+  first_pair_.assign(n + 1, 0);
+  for (const std::uint64_t p : pairs_)
+    ++first_pair_[(p >> 32) + 1];
+  for (std::size_t c = 0; c < n; ++c)
+    first_pair_[c + 1] += first_pair_[c];
   const int dofs = static_cast<int>(3 * n);
+  const std::size_t nonzeros = 6 * n + 9 * pairs_.size();
   a_.resize(dofs, dofs);
-  a_.setFromTriplets(triplets.begin(), triplets.end());
-  a_.makeCompressed();
-  auto index_of = [&](int row, int col) {
-    const int* rows = a_.innerIndexPtr();
-    const int begin = a_.outerIndexPtr()[col], end = a_.outerIndexPtr()[col + 1];
-    const int* at = std::lower_bound(rows + begin, rows + end, row);
-    return static_cast<int>(at - rows);
-  };
+  a_.resizeNonZeros(static_cast<Eigen::Index>(nonzeros));
+  int* outer = a_.outerIndexPtr();
+  int* inner = a_.innerIndexPtr();
+  int at = 0;
+  for (std::size_t c = 0; c < n; ++c) {
+    for (int b = 0; b < 3; ++b) {
+      outer[3 * c + static_cast<std::size_t>(b)] = at;
+      for (int a = b; a < 3; ++a)
+        inner[at++] = static_cast<int>(3 * c) + a;  // the diagonal block's lower triangle
+      for (std::size_t q = first_pair_[c]; q < first_pair_[c + 1]; ++q) {
+        const int r = static_cast<int>(pairs_[q] & 0xffffffffU);
+        for (int a = 0; a < 3; ++a)
+          inner[at++] = 3 * r + a;
+      }
+    }
+  }
+  outer[dofs] = at;
   diagonal_index_.resize(3 * n);
-  for (int i = 0; i < dofs; ++i)
-    diagonal_index_[static_cast<std::size_t>(i)] = index_of(i, i);
+  for (std::size_t i = 0; i < 3 * n; ++i)
+    diagonal_index_[i] = outer[i];  // each column starts at its diagonal
+  // Index in A's values of entry (3 r + a, 3 c + b), r >= c, r coupled with c.
+  auto index_of = [&](Slot r, Slot c, int a, int b) {
+    const int col = outer[3 * std::size_t{c} + static_cast<std::size_t>(b)];
+    if (r == c) return col + (a - b);
+    const std::uint64_t key = (std::uint64_t{c} << 32) | r;
+    const auto begin = pairs_.begin() + static_cast<std::ptrdiff_t>(first_pair_[c]);
+    const auto end = pairs_.begin() + static_cast<std::ptrdiff_t>(first_pair_[c + 1]);
+    const auto p = static_cast<int>(std::lower_bound(begin, end, key) - begin);
+    return col + (3 - b) + 3 * p + a;
+  };
   scatter_.clear();
   for (const ElementBlocks& e : blocks.elements()) {
     const std::size_t k = static_cast<std::size_t>(e.k);
@@ -136,14 +162,11 @@ void Preconditioner::build_pattern(const ElementMatrix& blocks, std::size_t n) {
       const Slot* s = e.slots.data() + m * k;
       for (std::size_t i = 0; i < k; ++i) {
         for (std::size_t j = 0; j < k; ++j) {
+          const bool below = s[i] != kNoSlot && s[j] != kNoSlot && s[i] >= s[j];
           for (int a = 0; a < 3; ++a) {
             for (int b = 0; b < 3; ++b) {
-              if (s[i] == kNoSlot || s[j] == kNoSlot) {
-                scatter_.push_back(-1);
-                continue;
-              }
-              const int row = static_cast<int>(3 * s[i]) + a, col = static_cast<int>(3 * s[j]) + b;
-              scatter_.push_back(row >= col ? index_of(row, col) : -1);
+              scatter_.push_back(below && (s[i] > s[j] || a >= b) ? index_of(s[i], s[j], a, b)
+                                                                  : -1);
             }
           }
         }

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <Eigen/Sparse>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string_view>
@@ -52,6 +53,10 @@ class Preconditioner {
   Eigen::SparseMatrix<Real> a_;
   std::vector<int> scatter_;
   std::vector<int> diagonal_index_;
+  // The pattern's vertex pairs (column << 32 | row, row > column), sorted,
+  // and where each column's start: kept to rebuild without reallocating.
+  std::vector<std::uint64_t> pairs_;
+  std::vector<std::size_t> first_pair_;
   struct Factor;
   std::unique_ptr<Factor> factor_;
   mutable Eigen::VectorXd rhs_, sol_;
