@@ -4,7 +4,7 @@
 #
 #   scripts/fuzz.sh TARGET|all [SECONDS] [libFuzzer flags...]
 #   scripts/fuzz.sh gmsh 600            # ten minutes on the Gmsh reader
-#   scripts/fuzz.sh all 20 -seed=1      # what CI runs
+#   scripts/fuzz.sh all 10 -seed=1      # what CI runs
 #
 # Targets run one per core at a time (RIFT_FUZZ_PARALLEL to change it).
 # Targets: rules obj gmsh medit vtu vtk scene. The fuzzers are built with

@@ -30,6 +30,6 @@ if [ "${RIFT_RELIABILITY:-1}" != 0 ]; then
   # The clang ASan+UBSan build is shared by the sanitizer tests and the
   # fuzzers; clang-tidy reads the compile commands of build/release.
   job sanitizers ./scripts/sanitize-tests.sh
-  job fuzz ./scripts/fuzz.sh all "${RIFT_FUZZ_SECONDS:-20}" -seed=1
+  job fuzz ./scripts/fuzz.sh all "${RIFT_FUZZ_SECONDS:-10}" -seed=1
   job clang-tidy ./scripts/clang-tidy.sh build/release
 fi

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+
 namespace rift {
 namespace {
 
@@ -41,6 +43,16 @@ TEST(Orbit, FirstAndSecondDimensions) {
   EXPECT_EQ((Orbit{1, 2, 3}).size(), 3);
   EXPECT_TRUE((Orbit{1, 2}).fits(2));
   EXPECT_FALSE((Orbit{1, 3}).fits(2));
+}
+
+TEST(Orbit, SizeCountsTheDimensionsOfEveryMask) {
+  static_assert(Orbit::from_mask(0xFF).size() == 8);
+  for (unsigned mask = 0; mask < 256; ++mask) {
+    int dimensions = 0;
+    for (int i = 0; i < 8; ++i)
+      dimensions += static_cast<int>((mask >> i) & 1u);
+    EXPECT_EQ(Orbit::from_mask(static_cast<std::uint8_t>(mask)).size(), dimensions) << mask;
+  }
 }
 
 }  // namespace

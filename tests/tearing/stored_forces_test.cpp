@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include <cstdio>
 #include <fstream>
 
 #include "rift/output/frame_mesh.hpp"
@@ -34,6 +35,7 @@ std::unique_ptr<Simulation> build(const std::string& name, const std::string& to
       ::testing::TempDir() + "rift_stored_" + name + "_" + std::to_string(::getpid()) + ".toml";
   std::ofstream(path) << toml;
   const Scene scene = read_scene(path, standard_packs().catalog());
+  std::remove(path.c_str());  // the scene is read: leave no file per process behind
   SetupOptions options;
   options.check_each_rewrite = true;
   if (output_arrays) options.output_arrays = *output_arrays;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <string>
@@ -25,6 +26,7 @@ std::unique_ptr<Simulation> simulate(const std::string& name, const std::string&
       ::testing::TempDir() + "rift_tearing_" + name + "_" + std::to_string(::getpid()) + ".toml";
   std::ofstream(path) << toml;
   const Scene scene = read_scene(path, standard_packs().catalog());
+  std::remove(path.c_str());  // the scene is read: leave no file per process behind
   SetupOptions options;
   options.check_each_rewrite = check_each_rewrite;
   return build_simulation(scene, standard_packs(), options, report);

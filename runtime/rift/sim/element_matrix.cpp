@@ -10,34 +10,35 @@ namespace rift {
 
 namespace {
 
-// The projection, on whichever matrix type project_on_stack chooses.
-template <class Matrix, class Cholesky, class Eigensolver>
-bool project(Mat3* blocks, int k, Matrix& s, Cholesky& cholesky, Eigensolver& eigen) {
-  const int dofs = 3 * k;
-  // s = -(J + Jᵀ)/2: CG needs a symmetric matrix, and the forces of a
-  // potential have a symmetric Jacobian already.
+// The symmetric part s = -(J + Jᵀ)/2 of an element's blocks: CG needs a
+// symmetric matrix, and the forces of a potential have a symmetric Jacobian
+// already.
+template <class Matrix>
+void symmetric_part(const Mat3* blocks, int k, Matrix& s) {
   for (int i = 0; i < k; ++i)
     for (int j = 0; j < k; ++j)
       s.template block<3, 3>(3 * i, 3 * j) = -blocks[i * k + j];
+  const int dofs = 3 * k;
   for (int a = 0; a < dofs; ++a) {
     for (int b = a + 1; b < dofs; ++b) {
       const Real mean = 0.5 * (s(a, b) + s(b, a));
       s(a, b) = s(b, a) = mean;
     }
   }
-  const Real scale = s.diagonal().cwiseAbs().maxCoeff();
-  if (scale == 0) return false;
-  // A cheap test first: a Cholesky factorisation exists exactly when the
-  // matrix is positive definite, so most elements stop here. Element
-  // matrices are singular (rigid translations cost nothing): the test
-  // factors s + tiny·I, positive definite whenever s is semidefinite up to
-  // rounding.
-  const Real tiny = 1e-10 * scale;
-  s.diagonal().array() += tiny;
-  cholesky.compute(s);
-  s.diagonal().array() -= tiny;
-  if (cholesky.info() == Eigen::Success) return false;
-  eigen.compute(s);
+}
+
+// Clips the negative eigenvalues of s and writes -s back into the blocks.
+// Only indefinite elements get here, after the Cholesky screen, so one
+// eigensolver of bounded size serves every element type: each fixed-size
+// SelfAdjointEigenSolver instantiation cost about ten seconds of compile
+// time and bought nothing measurable on this rare path.
+template <int kMaxDofs>
+bool clip_negative_eigenvalues(Mat3* blocks, int k, const Real* symmetric, Real tiny) {
+  using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxDofs, kMaxDofs>;
+  const int dofs = 3 * k;
+  Matrix s =
+      Eigen::Map<const Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>>(symmetric, dofs, dofs);
+  Eigen::SelfAdjointEigenSolver<Matrix> eigen(s);
   const auto& lambda = eigen.eigenvalues();
   const auto& q = eigen.eigenvectors();
   if (lambda.minCoeff() >= -tiny) return false;  // semidefinite after all
@@ -57,9 +58,22 @@ template <int kDofs, int kMaxDofs = kDofs>
 bool project_on_stack(Mat3* blocks, int k) {
   using Matrix = Eigen::Matrix<Real, kDofs, kDofs, 0, kMaxDofs, kMaxDofs>;
   Matrix s(3 * k, 3 * k);
-  Eigen::LLT<Matrix> cholesky(3 * k);
-  Eigen::SelfAdjointEigenSolver<Matrix> eigen(3 * k);
-  return project(blocks, k, s, cholesky, eigen);
+  symmetric_part(blocks, k, s);
+  const Real scale = s.diagonal().cwiseAbs().maxCoeff();
+  if (scale == 0) return false;
+  // A cheap test first: a Cholesky factorisation exists exactly when the
+  // matrix is positive definite, so most elements stop here. Element
+  // matrices are singular (rigid translations cost nothing): the test
+  // factors s + tiny·I, positive definite whenever s is semidefinite up to
+  // rounding.
+  const Real tiny = 1e-10 * scale;
+  s.diagonal().array() += tiny;
+  const Eigen::LLT<Matrix> cholesky(s);
+  s.diagonal().array() -= tiny;
+  if (cholesky.info() == Eigen::Success) return false;
+  if (3 * k <= 48) return clip_negative_eigenvalues<48>(blocks, k, s.data(), tiny);
+  // Larger patterns are rare enough to allocate their scratch.
+  return clip_negative_eigenvalues<Eigen::Dynamic>(blocks, k, s.data(), tiny);
 }
 
 }  // namespace
@@ -74,7 +88,6 @@ bool project_to_semidefinite(Mat3* blocks, int k) {
       return project_on_stack<12>(blocks, k);  // tetrahedra, quads, hinges
     default:
       if (k <= 16) return project_on_stack<Eigen::Dynamic, 48>(blocks, k);  // hexahedra...
-      // Larger patterns are rare enough to allocate their scratch.
       return project_on_stack<Eigen::Dynamic, Eigen::Dynamic>(blocks, k);
   }
 }
