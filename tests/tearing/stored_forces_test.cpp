@@ -7,13 +7,7 @@
 // the same tears, the same stored values where they are read.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
-#include <cstdio>
-#include <fstream>
-
 #include "rift/output/frame_mesh.hpp"
-#include "rift/scene/scene.hpp"
 #include "rift/scene/scene_setup.hpp"
 #include "tearing_support.hpp"
 
@@ -31,15 +25,10 @@ const std::vector<std::string> kEveryForce = {"f_stretch", "f_shear", "f_bend", 
 
 std::unique_ptr<Simulation> build(const std::string& name, const std::string& toml,
                                   const std::vector<std::string>* output_arrays = nullptr) {
-  const std::string path =
-      ::testing::TempDir() + "rift_stored_" + name + "_" + std::to_string(::getpid()) + ".toml";
-  std::ofstream(path) << toml;
-  const Scene scene = read_scene(path, standard_packs().catalog());
-  std::remove(path.c_str());  // the scene is read: leave no file per process behind
   SetupOptions options;
   options.check_each_rewrite = true;
   if (output_arrays) options.output_arrays = *output_arrays;
-  return build_simulation(scene, standard_packs(), options);
+  return simulate("stored_" + name, toml, options);
 }
 
 bool has_storage(const Simulation& sim, const char* column) {

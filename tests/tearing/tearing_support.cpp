@@ -20,6 +20,13 @@ namespace rift::tearing_test {
 
 std::unique_ptr<Simulation> simulate(const std::string& name, const std::string& toml,
                                      bool check_each_rewrite, SetupReport* report) {
+  SetupOptions options;
+  options.check_each_rewrite = check_each_rewrite;
+  return simulate(name, toml, options, report);
+}
+
+std::unique_ptr<Simulation> simulate(const std::string& name, const std::string& toml,
+                                     const SetupOptions& options, SetupReport* report) {
   // The process id keeps tests that CTest runs at the same time (one process
   // each) from writing the same file while another reads it.
   const std::string path =
@@ -27,8 +34,6 @@ std::unique_ptr<Simulation> simulate(const std::string& name, const std::string&
   std::ofstream(path) << toml;
   const Scene scene = read_scene(path, standard_packs().catalog());
   std::remove(path.c_str());  // the scene is read: leave no file per process behind
-  SetupOptions options;
-  options.check_each_rewrite = check_each_rewrite;
   return build_simulation(scene, standard_packs(), options, report);
 }
 

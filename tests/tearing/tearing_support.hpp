@@ -22,6 +22,9 @@ using test_support::standard_packs;
 /// (a test that checks it itself).
 std::unique_ptr<Simulation> simulate(const std::string& name, const std::string& toml,
                                      bool check_each_rewrite = true, SetupReport* report = nullptr);
+/// The same with set-up options of the test's choosing.
+std::unique_ptr<Simulation> simulate(const std::string& name, const std::string& toml,
+                                     const SetupOptions& options, SetupReport* report = nullptr);
 
 /// The TOML of a static scene: no gravity, a tiny dt (one step barely moves
 /// anything), `total_mass` spread over `mesh` scaled by `scale`, then the
