@@ -29,4 +29,15 @@ std::optional<Type> parse_type(std::string_view name) {
   return std::nullopt;
 }
 
+std::size_t payload_reals(Type t) {
+  switch (t) {
+    case Type::Vec3:
+      return 3;
+    case Type::Mat3:
+      return 9;
+    default:
+      return 1;
+  }
+}
+
 }  // namespace rift::ast

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "check/builtins.hpp"
+#include "rift/core/candidate_payload.hpp"
 #include "rift/core/state_embeddings.hpp"
 
 namespace rift::check {
@@ -376,6 +377,32 @@ void check_call_args(const ast::Ident& callee, const resolve::Symbols& symbols,
   }
 }
 
+/// A criterion's apply arguments travel with its candidates, in a payload of
+/// fixed capacity (rift/core/candidate_payload.hpp): they must fit in it.
+void check_payload_size(const ast::Criterion& crit, const resolve::Symbols& symbols,
+                        diag::Diagnostics& diags) {
+  const std::vector<ast::Param>* params = symbols.callee_params(crit.rule.text);
+  if (!params) return;
+  std::size_t total = 0;
+  std::string sizes;
+  for (const auto& arg : crit.apply_args) {
+    for (const auto& p : *params) {
+      if (p.name.text != arg.name.text) continue;
+      const std::size_t n = ast::payload_reals(p.type);
+      total += n;
+      sizes += (sizes.empty() ? "'" : ", '") + arg.name.text + "': " + std::to_string(n) +
+               " for a " + str(p.type);
+    }
+  }
+  if (total <= kCandidatePayloadReals) return;
+  const std::string kind = symbols.script(crit.rule.text) ? "script" : "rule";
+  diags.error(crit.apply_loc, "criterion '" + crit.name.text + "' passes " + std::to_string(total) +
+                                  " reals to " + kind + " '" + crit.rule.text + "' (" + sizes +
+                                  "), but a tear candidate carries at most " +
+                                  std::to_string(kCandidatePayloadReals) +
+                                  " (rift/core/candidate_payload.hpp)");
+}
+
 void check_script(const ast::Script& script, const resolve::Symbols& symbols, int dimension,
                   TypeChecker& tc, diag::Diagnostics& diags) {
   for (const ast::ScriptStmt& st : script.stmts) {
@@ -517,6 +544,7 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols, E
       }
       if (crit.has_apply) {
         check_call_args(crit.rule, symbols, crit.apply_args, crit.apply_loc, tc, diags);
+        check_payload_size(crit, symbols, diags);
       }
     }
   }

@@ -40,17 +40,9 @@ std::vector<std::string> criterion_embeddings(const lower::CriterionPlan& plan) 
     lower::embeddings_read(g, l.value, used);
   lower::embeddings_read(g, plan.measure, used);
   lower::embeddings_read(g, plan.threshold, used);
-  for (ir::ExprId a : plan.args)
-    lower::embeddings_read(g, a, used);
+  for (const lower::PayloadField& f : plan.payload)
+    lower::embeddings_read(g, f.value, used);
   return used;
-}
-
-/// Whether the candidate carries apply argument k (vec3 arguments named
-/// `normal` and `point`).
-bool carried(const lower::CriterionPlan& plan, std::size_t k) {
-  const std::string& name = plan.criterion->apply_args[k].name.text;
-  return plan.body.graph[plan.args[k]].type == ast::Type::Vec3 &&
-         (name == "normal" || name == "point");
 }
 
 }  // namespace
@@ -105,8 +97,7 @@ void emit_criterion(Writer& w, const lower::CriterionPlan& plan, const PackModel
   const std::string cls = criterion_class(crit.name.text);
   const std::string user = "criterion '" + crit.name.text + "'";
   const ir::Body& b = plan.body;
-  const RenderContext ctx = criterion_context(b);
-  RenderContext collect_ctx = ctx;
+  RenderContext collect_ctx = criterion_context(b);
   collect_ctx.memos = &plan.memos;
   const std::string d = dart_name(crit.dart.text);
   w.line("// ---- criterion '" + crit.name.text + "' on " + orbit_code(crit.orbit.dims));
@@ -144,10 +135,9 @@ void emit_criterion(Writer& w, const lower::CriterionPlan& plan, const PackModel
     // Two segments: what every cell computes, and what only a candidate does
     // (values are shared across both, folds are walked together within each).
     std::vector<ir::ExprId> roots = {plan.measure, plan.threshold}, payload;
-    for (std::size_t k = 0; k < crit.apply_args.size(); ++k) {
-      if (!carried(plan, k)) continue;
-      lower::lets_read(b, plan.args[k], for_payload);
-      payload.push_back(plan.args[k]);
+    for (const lower::PayloadField& f : plan.payload) {
+      lower::lets_read(b, f.value, for_payload);
+      payload.push_back(f.value);
     }
     for (std::size_t i = 0; i < b.lets.size(); ++i) {
       if (wanted[i]) roots.push_back(b.lets[i].value);
@@ -169,10 +159,13 @@ void emit_criterion(Writer& w, const lower::CriterionPlan& plan, const PackModel
     w.line(std::string("c.measure = ") + (above ? "measure - threshold;" : "threshold - measure;"));
     r.segment(payload);
     write_wanted_lets(w, r, b, for_payload, written);
-    for (std::size_t k = 0; k < crit.apply_args.size(); ++k) {
-      const ast::ApplyArg& a = crit.apply_args[k];
-      if (!carried(plan, k)) continue;
-      write_rendered(w, r, a.value->loc, "c." + a.name.text + " = ", plan.args[k], ";");
+    // Every argument is the value at detection: an earlier tear of the step
+    // may change what the criterion reads before this candidate applies.
+    for (const lower::PayloadField& f : plan.payload) {
+      write_rendered(w, r, f.loc,
+                     "rift::generated::put_payload<" + cpp_type(f.type) + ">(c, " +
+                         std::to_string(f.offset) + ", ",
+                     f.value, ");  // " + f.param);
     }
   }
   w.line("found.push_back(c);");
@@ -180,36 +173,17 @@ void emit_criterion(Writer& w, const lower::CriterionPlan& plan, const PackModel
   w.close();
   w.line();
 
-  // apply: the rule is matched again at the candidate's dart; `normal` and
-  // `point` come from the candidate, other arguments are evaluated now.
-  std::vector<bool> wanted(b.lets.size(), false), written(b.lets.size(), false);
-  std::vector<ir::ExprId> roots;
-  for (std::size_t k = 0; k < crit.apply_args.size(); ++k) {
-    if (carried(plan, k)) continue;
-    lower::lets_read(b, plan.args[k], wanted);
-    roots.push_back(plan.args[k]);
-  }
-  const bool reads_dart = !roots.empty();
-  for (std::size_t i = 0; i < b.lets.size(); ++i) {
-    if (wanted[i]) roots.push_back(b.lets[i].value);
-  }
+  // apply: the rule is matched again at the candidate's dart, with the
+  // arguments the candidate carries.
   w.open("bool " + cls +
          "::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& "
          "touched) {");
   w.line("if (!g.is_alive(candidate.at)) return false;");
-  w.line(std::string(reads_dart ? "" : "[[maybe_unused]] ") + "const rift::Dart " + d +
-         " = candidate.at;");
-  BodyRenderer r(b.graph, b.sharing, ctx, roots);
-  write_wanted_lets(w, r, b, wanted, written);
+  w.line("const rift::Dart " + d + " = candidate.at;");
   w.line(crit.rule.text + "_args args;");
-  for (std::size_t k = 0; k < crit.apply_args.size(); ++k) {
-    const ast::ApplyArg& a = crit.apply_args[k];
-    const std::string field = "args." + member_name(a.name.text);
-    if (carried(plan, k)) {
-      w.line(field + " = candidate." + a.name.text + ";");
-      continue;
-    }
-    write_rendered(w, r, a.value->loc, field + " = ", plan.args[k], ";");
+  for (const lower::PayloadField& f : plan.payload) {
+    w.line("args." + member_name(f.param) + " = rift::generated::payload_as<" + cpp_type(f.type) +
+           ">(candidate, " + std::to_string(f.offset) + ");");
   }
   std::string hooks;
   for (std::size_t k = 0; k < crit.apply_hooks.size(); ++k)

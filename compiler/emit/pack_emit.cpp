@@ -232,8 +232,8 @@ void write_pack_class(Writer& w, const PackModel& m) {
     add_embedding_reads(plan.body.graph, plan.threshold, reads);
     // What its rule is given and what a script of this pack it applies
     // reads: the set-up stores the forces any of them reads (scene_setup.hpp).
-    for (ir::ExprId arg : plan.args)
-      add_embedding_reads(plan.body.graph, arg, reads);
+    for (const lower::PayloadField& f : plan.payload)
+      add_embedding_reads(plan.body.graph, f.value, reads);
     for (const lower::ScriptPlan& script : m.plan->scripts) {
       if (script.script->name.text != c.rule.text) continue;
       for (const std::string& e : script.embeddings) {

@@ -143,8 +143,10 @@ void emit_rule(Writer& w, const lower::RulePlan& plan, const PackModel& model) {
     write_statements(w, values.match, on_match, conds, &fail);
     w.close();
   }
+  // Stored as the embedding stores them: a bool as rift::Bool, which a
+  // std::vector<bool> element (a proxy) would not convert to.
   for (std::size_t k = 0; k < values.assigns.size(); ++k) {
-    w.line("std::vector<" + cpp_type(mg[values.assigns[k].value].type) + "> value_" +
+    w.line("std::vector<" + storage_type(mg[values.assigns[k].value].type) + "> value_" +
            std::to_string(k) + "(rows);");
   }
   if (!values.assigns.empty()) {

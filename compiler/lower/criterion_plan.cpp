@@ -30,11 +30,13 @@ CriterionPlan plan_criterion(const ast::Criterion& crit, const std::vector<ast::
     for (const ast::Param& p : rule_params) {
       if (p.name.text == a.name.text) to = p.type;
     }
-    plan.args.push_back(lowering.lower_as(*a.value, to));
+    plan.payload.push_back(
+        {a.name.text, to, plan.payload_reals, lowering.lower_as(*a.value, to), a.value->loc});
+    plan.payload_reals += ast::payload_reals(to);
   }
   std::vector<ir::ExprId*> roots = {&plan.measure, &plan.threshold};
-  for (ir::ExprId& a : plan.args)
-    roots.push_back(&a);
+  for (PayloadField& f : plan.payload)
+    roots.push_back(&f.value);
   share_common_subexpressions(body, roots);
   std::vector<ir::ExprId> values;
   values.reserve(roots.size() + body.lets.size());

@@ -7,6 +7,8 @@
 // (lower/orbit_memo.hpp).
 #pragma once
 
+#include <cstddef>
+#include <string>
 #include <vector>
 
 #include "ast/decl.hpp"
@@ -15,15 +17,27 @@
 
 namespace rift::lower {
 
+/// One argument of a criterion's `apply`: computed by collect() where the
+/// criterion holds and carried by the candidate to apply(), in the candidate's
+/// payload (rift/core/candidate_payload.hpp).
+struct PayloadField {
+  std::string param;               ///< the parameter of the rule (or script) it fills
+  ir::Type type = ir::Type::Real;  ///< the parameter's type; the value is converted to it
+  std::size_t offset = 0;          ///< where it starts in the payload, in reals
+  ir::ExprId value = ir::kNoExpr;
+  diag::Location loc;  ///< of the value, for line directives
+};
+
 struct CriterionPlan {
   const ast::Criterion* criterion = nullptr;
   /// nodes: the criterion's dart; lets in source order (no whens, forces, energy).
   ir::Body body;
   ir::ExprId measure = ir::kNoExpr;    // the left-hand side of the comparison, a real
   ir::ExprId threshold = ir::kNoExpr;  // the right-hand side, a real
-  /// One per apply argument, parallel to Criterion::apply_args, of the type of
-  /// the rule parameter it fills (`rule_params`, by name).
-  std::vector<ir::ExprId> args;
+  /// The apply arguments in the order written, laid out one after the other
+  /// (ast::payload_reals reals each); check/types.cpp proved they fit.
+  std::vector<PayloadField> payload;
+  std::size_t payload_reals = 0;  ///< the reals `payload` takes
   /// What collect() computes once per orbit and collection (lower/orbit_memo.hpp).
   std::vector<ir::OrbitMemo> memos;
   /// Whether collect() may evaluate several cells at once on several threads:

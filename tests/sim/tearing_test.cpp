@@ -21,7 +21,7 @@ class LongEdgeCriterion final : public Criterion {
     map.for_each_cell(Orbit{0, 2}, [&](Dart d) {
       if (map.is_free(d, 2)) return;
       const Real len = (position_[map.alpha(d, 0)] - position_[d]).norm();
-      if (len > limit_) out.push_back({0, d, len, Vec3::Zero(), Vec3::Zero()});
+      if (len > limit_) out.push_back({0, d, len, {}, 0});
     });
   }
   bool apply(GMap& map, const TearCandidate& c, std::vector<Dart>& touched) override {

@@ -8,6 +8,7 @@
 //   slot_upkeep.hpp    embedding slots after a rewrite (merge, split, new)
 //   orbit_values.hpp   aggregates over an orbit (sum, count, mean, min, max)
 //   orbit_memo.hpp     values a criterion computes once per orbit and collection
+//   candidate_payload.hpp  a criterion's apply arguments, carried by its candidates
 //   sub_orbits.hpp     the sub-orbits a fold walks, by slot where it can
 //   pack_values.hpp    parameter values, required embeddings, tagged darts
 //   core/polar.hpp, core/symmetric_eigen.hpp   the matrix built-ins
@@ -15,6 +16,7 @@
 
 #include "rift/core/polar.hpp"
 #include "rift/core/symmetric_eigen.hpp"
+#include "rift/generated/candidate_payload.hpp"
 #include "rift/generated/collect_cells.hpp"
 #include "rift/generated/match_rows.hpp"
 #include "rift/generated/orbit_memo.hpp"

@@ -4,10 +4,12 @@
 // generates the criteria; the loop knows none of them in particular.
 #pragma once
 
+#include <array>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "rift/core/candidate_payload.hpp"
 #include "rift/gmap/gmap.hpp"
 
 namespace rift {
@@ -20,8 +22,12 @@ struct TearCandidate {
   /// >=, threshold - measure for < and <=): larger is more critical, and
   /// candidates are applied largest first.
   Real measure = 0;
-  Vec3 normal = Vec3::Zero();  ///< rule arguments, when the rule takes a plane
-  Vec3 point = Vec3::Zero();
+  /// The values of the criterion's `apply` arguments at detection, laid out
+  /// by riftc (rift/core/candidate_payload.hpp; read and written through
+  /// rift/generated/candidate_payload.hpp): the rule applies with the state
+  /// that made the criterion hold, not one an earlier tear of the step left.
+  std::array<Real, kCandidatePayloadReals> payload{};
+  std::uint32_t payload_reals = 0;  ///< how many of `payload` the criterion filled
 };
 
 class Criterion {

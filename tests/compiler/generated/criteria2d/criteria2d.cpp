@@ -496,7 +496,7 @@ void StretchStrainCriterion::collect(const rift::GMap& g, std::vector<rift::Tear
 
 bool StretchStrainCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
-  [[maybe_unused]] const rift::Dart d_a = candidate.at;
+  const rift::Dart d_a = candidate.at;
   remove_edge_elements_args args;
   const rift::Dart hooks[] = {d_a};
   return apply_remove_edge_elements(g, hooks, args, pack_, &touched);
@@ -524,7 +524,7 @@ void StretchForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
 
 bool StretchForceCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
-  [[maybe_unused]] const rift::Dart d_a = candidate.at;
+  const rift::Dart d_a = candidate.at;
   remove_edge_elements_args args;
   const rift::Dart hooks[] = {d_a};
   return apply_remove_edge_elements(g, hooks, args, pack_, &touched);
@@ -546,7 +546,8 @@ void SpringSplitCriterion::collect(const rift::GMap& g, std::vector<rift::TearCa
     rift::TearCandidate c;
     c.at = d_a;
     c.measure = measure - threshold;
-    c.normal = (e_f_stretch[d_a]).normalized();
+    rift::generated::put_payload<rift::Vec3>(c, 0, (e_f_stretch[d_a]).normalized());  // normal
+    rift::generated::put_payload<bool>(c, 3, p_.both_ends);  // both
     found.push_back(c);
   });
 }
@@ -555,8 +556,8 @@ bool SpringSplitCriterion::apply(rift::GMap& g, const rift::TearCandidate& candi
   if (!g.is_alive(candidate.at)) return false;
   const rift::Dart d_a = candidate.at;
   split_ends_args args;
-  args.normal = candidate.normal;
-  args.both = p_.both_ends;
+  args.normal = rift::generated::payload_as<rift::Vec3>(candidate, 0);
+  args.both = rift::generated::payload_as<bool>(candidate, 3);
   const rift::Dart hooks[] = {d_a};
   return apply_split_ends(g, hooks, args, pack_, &touched);
 }
@@ -583,7 +584,7 @@ void ShearForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCan
 
 bool ShearForceCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
-  [[maybe_unused]] const rift::Dart d_f = candidate.at;
+  const rift::Dart d_f = candidate.at;
   remove_element_args args;
   const rift::Dart hooks[] = {d_f};
   return apply_remove_element(g, hooks, args, pack_, &touched);
@@ -612,7 +613,7 @@ void BendForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCand
 
 bool BendForceCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
-  [[maybe_unused]] const rift::Dart d_d = candidate.at;
+  const rift::Dart d_d = candidate.at;
   separate_faces_args args;
   const rift::Dart hooks[] = {d_d};
   return apply_separate_faces(g, hooks, args, pack_, &touched);
@@ -643,7 +644,7 @@ void ElementStressCriterion::collect(const rift::GMap& g, std::vector<rift::Tear
 
 bool ElementStressCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
-  [[maybe_unused]] const rift::Dart d_f = candidate.at;
+  const rift::Dart d_f = candidate.at;
   remove_element_args args;
   const rift::Dart hooks[] = {d_f};
   return apply_remove_element(g, hooks, args, pack_, &touched);
@@ -673,7 +674,7 @@ void InteractionForceCriterion::collect(const rift::GMap& g, std::vector<rift::T
 
 bool InteractionForceCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
-  [[maybe_unused]] const rift::Dart d_v = candidate.at;
+  const rift::Dart d_v = candidate.at;
   split_along_largest_force_args args;
   const rift::Dart hooks[] = {d_v};
   return apply_split_along_largest_force(g, hooks, args, pack_, &touched);
@@ -705,18 +706,18 @@ void VertexStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
     rift::TearCandidate c;
     c.at = d_v;
     c.measure = measure - threshold;
-    c.normal = symmetric_max_eigenvector(l_s);
-    c.point = e_position[d_v];
+    rift::generated::put_payload<rift::Vec3>(c, 0, symmetric_max_eigenvector(l_s));  // normal
+    rift::generated::put_payload<rift::Vec3>(c, 3, e_position[d_v]);  // point
     found.push_back(c);
   });
 }
 
 bool VertexStressCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
-  [[maybe_unused]] const rift::Dart d_v = candidate.at;
+  const rift::Dart d_v = candidate.at;
   split_vertex_args args;
-  args.normal = candidate.normal;
-  args.point = candidate.point;
+  args.normal = rift::generated::payload_as<rift::Vec3>(candidate, 0);
+  args.point = rift::generated::payload_as<rift::Vec3>(candidate, 3);
   const rift::Dart hooks[] = {d_v};
   return apply_split_vertex(g, hooks, args, pack_, &touched);
 }
@@ -749,18 +750,18 @@ void VertexEnergyCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
     c.measure = measure - threshold;
     const rift::Mat3 s8 = (rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished();
     const rift::Mat3 l_weighted = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s5 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s6 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Real { return collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}); }); const rift::Mat3 s7 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); acc0 += ((s5 > 0.0) ? rift::Mat3((((s6 * 2.0) / s5) * s7)) : rift::Mat3(s8)); }); return acc0; }();
-    c.normal = symmetric_max_eigenvector(((-0.5) * (l_weighted + (l_weighted).transpose())));
-    c.point = e_position[d_v];
+    rift::generated::put_payload<rift::Vec3>(c, 0, symmetric_max_eigenvector(((-0.5) * (l_weighted + (l_weighted).transpose()))));  // normal
+    rift::generated::put_payload<rift::Vec3>(c, 3, e_position[d_v]);  // point
     found.push_back(c);
   });
 }
 
 bool VertexEnergyCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
-  [[maybe_unused]] const rift::Dart d_v = candidate.at;
+  const rift::Dart d_v = candidate.at;
   split_vertex_args args;
-  args.normal = candidate.normal;
-  args.point = candidate.point;
+  args.normal = rift::generated::payload_as<rift::Vec3>(candidate, 0);
+  args.point = rift::generated::payload_as<rift::Vec3>(candidate, 3);
   const rift::Dart hooks[] = {d_v};
   return apply_split_vertex(g, hooks, args, pack_, &touched);
 }
@@ -782,18 +783,18 @@ void VertexSumCriterion::collect(const rift::GMap& g, std::vector<rift::TearCand
     rift::TearCandidate c;
     c.at = d_v;
     c.measure = measure - threshold;
-    c.normal = (e_vertex_force[d_v]).normalized();
-    c.point = e_position[d_v];
+    rift::generated::put_payload<rift::Vec3>(c, 0, (e_vertex_force[d_v]).normalized());  // normal
+    rift::generated::put_payload<rift::Vec3>(c, 3, e_position[d_v]);  // point
     found.push_back(c);
   });
 }
 
 bool VertexSumCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
-  [[maybe_unused]] const rift::Dart d_v = candidate.at;
+  const rift::Dart d_v = candidate.at;
   split_vertex_args args;
-  args.normal = candidate.normal;
-  args.point = candidate.point;
+  args.normal = rift::generated::payload_as<rift::Vec3>(candidate, 0);
+  args.point = rift::generated::payload_as<rift::Vec3>(candidate, 3);
   const rift::Dart hooks[] = {d_v};
   return apply_split_vertex(g, hooks, args, pack_, &touched);
 }
@@ -833,7 +834,7 @@ void AtomicEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCan
 
 bool AtomicEdgeCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
-  [[maybe_unused]] const rift::Dart d_a = candidate.at;
+  const rift::Dart d_a = candidate.at;
   separate_faces_args args;
   const rift::Dart hooks[] = {d_a};
   return apply_separate_faces(g, hooks, args, pack_, &touched);
@@ -865,7 +866,7 @@ void GlobalEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCan
 
 bool GlobalEdgeCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
-  [[maybe_unused]] const rift::Dart d_a = candidate.at;
+  const rift::Dart d_a = candidate.at;
   separate_faces_args args;
   const rift::Dart hooks[] = {d_a};
   return apply_separate_faces(g, hooks, args, pack_, &touched);
