@@ -121,12 +121,24 @@ struct ApplyArg {
   ExprPtr value;
 };
 
+/// `node NAME = FROM@i@j...;` of a criterion: a pattern node, the dart that
+/// path reaches from the criterion's dart or an earlier node. The criterion
+/// holds only where every link the path crosses is sewn and the nodes are
+/// pairwise distinct darts (an injective match, as Jerboa's).
+struct CriterionNode {
+  Ident name;
+  Ident from;
+  std::vector<int> hops;
+  Location path_loc;  // the whole path `FROM@i@j`
+};
+
 struct Criterion {
   Ident name;
   std::string description;  // the `///` comment above it
   Label orbit;
   Ident dart;
-  std::vector<Param> params;  // given by the scene
+  std::vector<Param> params;         // given by the scene
+  std::vector<CriterionNode> nodes;  // in source order, before every let
   std::vector<Let> lets;
   ExprPtr measure;  // a comparison: measure OP threshold
   bool has_apply = false;

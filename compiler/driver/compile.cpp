@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "check/criterion_nodes.hpp"
 #include "check/embeddings.hpp"
 #include "check/jacobian_blocks.hpp"
 #include "check/kernels.hpp"
@@ -64,6 +65,7 @@ void run_checks(const ast::Program& program, diag::Diagnostics& diags, Checked& 
   check::check_applies(program, out.rules, diags);
   check::check_kernels(program, out.symbols, diags);
   check::check_jacobian_blocks(program, diags);
+  check::check_criterion_nodes(program, diags);
   check::check_generated_names(program, out.symbols, diags);
   check::check_embeddings(out.rules, out.symbols, diags);
   check::check_unused(program, out.symbols, diags);

@@ -53,6 +53,52 @@ bool carried(const lower::CriterionPlan& plan, std::size_t k) {
          (name == "normal" || name == "point");
 }
 
+/// Which of the body's nodes the code rendering `roots` reads (hooks aside).
+std::vector<bool> nodes_read(const ir::Body& body, const std::vector<ir::ExprId>& roots) {
+  std::vector<bool> read(body.nodes.size(), false);
+  for (ir::ExprId root : roots) {
+    if (root == ir::kNoExpr) continue;
+    ir::visit(body.graph, root,
+              [&](const ir::Node& n) { read[static_cast<std::size_t>(n.place.node)] = true; });
+  }
+  return read;
+}
+
+/// The criterion's pattern nodes, before anything else of the cell: each
+/// dart from its path where every link crossed is sewn, and none of the
+/// earlier nodes (an injective match); `fail` runs where the pattern does not
+/// match. `read`: the nodes the code after it reads (the others are tested,
+/// not named, when nothing else reads them).
+void write_pattern(Writer& w, const lower::CriterionPlan& plan, std::vector<bool> read,
+                   const std::string& fail) {
+  const ir::Body& b = plan.body;
+  for (const lower::PatternNode& n : plan.pattern) {
+    read[static_cast<std::size_t>(n.from)] = true;
+    for (int k : n.distinct_from)
+      read[static_cast<std::size_t>(k)] = true;
+  }
+  for (std::size_t k = 0; k < plan.pattern.size(); ++k) {
+    const lower::PatternNode& n = plan.pattern[k];
+    const std::string name = dart_name(b.nodes[k + 1]);
+    std::string at = dart_name(b.nodes[static_cast<std::size_t>(n.from)]);
+    std::string free;
+    for (int h : n.hops) {
+      free += (free.empty() ? "" : " || ") + std::string("g.is_free(") + at + ", " +
+              std::to_string(h) + ")";
+      at = "g.alpha(" + at + ", " + std::to_string(h) + ")";
+    }
+    write_sourced(w, n.loc, "if (" + free + ") " + fail);
+    const bool named = read[k + 1];
+    std::string same;
+    for (int other : n.distinct_from) {
+      same += (same.empty() ? "" : " || ") + (named ? name : at) +
+              " == " + dart_name(b.nodes[static_cast<std::size_t>(other)]);
+    }
+    if (named) write_sourced(w, n.loc, "const rift::Dart " + name + " = " + at + ";");
+    if (!same.empty()) write_sourced(w, n.loc, "if (" + same + ") " + fail);
+  }
+}
+
 }  // namespace
 
 void declare_criterion(Writer& w, const lower::CriterionPlan& plan, const PackModel& model) {
@@ -153,6 +199,11 @@ void emit_criterion(Writer& w, const lower::CriterionPlan& plan, const PackModel
       if (wanted[i]) roots.push_back(b.lets[i].value);
       if (for_payload[i] && !wanted[i]) payload.push_back(b.lets[i].value);
     }
+    if (!plan.pattern.empty()) {
+      std::vector<ir::ExprId> all = roots;
+      all.insert(all.end(), payload.begin(), payload.end());
+      write_pattern(w, plan, nodes_read(b, all), "return;");
+    }
     BodyRenderer r(b.graph, b.sharing, collect_ctx, roots);
     write_wanted_lets(w, r, b, wanted, written);
     write_rendered(w, r, crit.measure->args[0]->loc, "const rift::Real measure = ", plan.measure,
@@ -197,8 +248,19 @@ void emit_criterion(Writer& w, const lower::CriterionPlan& plan, const PackModel
          "::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& "
          "touched) {");
   w.line("if (!g.is_alive(candidate.at)) return false;");
-  w.line(std::string(reads_dart ? "" : "[[maybe_unused]] ") + "const rift::Dart " + d +
-         " = candidate.at;");
+  w.line(std::string(reads_dart || !plan.pattern.empty() ? "" : "[[maybe_unused]] ") +
+         "const rift::Dart " + d + " = candidate.at;");
+  if (!plan.pattern.empty()) {
+    // The map may have changed since collect(): the candidate is applied only
+    // where the criterion's pattern still matches.
+    std::vector<bool> read = nodes_read(b, roots);
+    for (const ast::Ident& h : crit.apply_hooks) {
+      for (std::size_t k = 0; k < b.nodes.size(); ++k) {
+        if (b.nodes[k] == h.text) read[k] = true;
+      }
+    }
+    write_pattern(w, plan, read, "return false;");
+  }
   BodyRenderer r(b.graph, b.sharing, ctx, roots);
   write_wanted_lets(w, r, b, wanted, written);
   w.line(crit.rule.text + "_args args;");

@@ -12,6 +12,24 @@ CriterionPlan plan_criterion(const ast::Criterion& crit, const std::vector<ast::
   plan.criterion = &crit;
   ir::Body& body = plan.body;
   body.nodes.push_back(crit.dart.text);
+  for (const ast::CriterionNode& n : crit.nodes) {
+    PatternNode node;
+    // The latest node of that name (resolve/ reports a duplicate).
+    for (std::size_t k = body.nodes.size(); k-- > 0;) {
+      if (body.nodes[k] == n.from.text) {
+        node.from = static_cast<int>(k);
+        break;
+      }
+    }
+    node.hops = n.hops;
+    node.loc = n.path_loc;
+    for (std::size_t k = 0; k < body.nodes.size(); ++k) {
+      if (static_cast<int>(k) != node.from || node.hops.size() != 1)
+        node.distinct_from.push_back(static_cast<int>(k));
+    }
+    plan.pattern.push_back(std::move(node));
+    body.nodes.push_back(n.name.text);
+  }
   ExprLowering lowering(body.graph, body.nodes, nullptr, symbols, types);
   for (const ast::Let& let : crit.lets) {
     const int index = static_cast<int>(body.lets.size());

@@ -15,10 +15,27 @@
 
 namespace rift::lower {
 
+/// A pattern node of a criterion (`node b = a@2@1;`): the dart reached from
+/// an earlier node by crossing links. The criterion holds at a cell only where
+/// every link crossed is sewn (not free) and the node is none of the earlier
+/// nodes (an injective match); both are tested before anything else.
+struct PatternNode {
+  int from = 0;           // index into Body::nodes: the criterion's dart or an earlier node
+  std::vector<int> hops;  // at least one
+  /// Indices into Body::nodes of the earlier nodes this one must differ from;
+  /// `from` is left out when the path is a single link, whose being sewn
+  /// already makes the two darts distinct.
+  std::vector<int> distinct_from;
+  diag::Location loc;  // the path
+};
+
 struct CriterionPlan {
   const ast::Criterion* criterion = nullptr;
-  /// nodes: the criterion's dart; lets in source order (no whens, forces, energy).
+  /// nodes: the criterion's dart, then its pattern nodes (node k + 1 is
+  /// pattern[k]), then fold variables; lets in source order (no whens,
+  /// forces, energy).
   ir::Body body;
+  std::vector<PatternNode> pattern;
   ir::ExprId measure = ir::kNoExpr;    // the left-hand side of the comparison, a real
   ir::ExprId threshold = ir::kNoExpr;  // the right-hand side, a real
   /// One per apply argument, parallel to Criterion::apply_args, of the type of

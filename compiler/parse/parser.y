@@ -538,6 +538,22 @@ criterion_stmt
       ctx.criterion.apply_args = $5;
       ctx.criterion.apply_loc = @$;
     }
+  /* `node` is a word of this statement only, not a keyword: names may be `node`. */
+  | ident ident ASSIGN node_path SEMI {
+      const rift::ast::Ident word = $1;
+      const rift::ast::Ident name = $2;
+      const ExprPtr path = $4;
+      if (word.text != "node") {
+        ctx.diags.error(@1, "expected 'node', 'let', 'measure' or 'apply' in a criterion, not '" +
+                                word.text + "'");
+      } else if (!ctx.criterion.lets.empty()) {
+        ctx.diags.error(@1, "node '" + name.text + "' comes after a 'let'; a criterion's nodes "
+                                "are its pattern and come first")
+            .notes.push_back({ctx.criterion.lets.front().name.loc, "first let"});
+      }
+      ctx.criterion.nodes.push_back(rift::ast::CriterionNode{
+          name, rift::ast::Ident{path->node, path->node_loc}, path->hops, @4});
+    }
   | body_stmt
   | error SEMI
   ;

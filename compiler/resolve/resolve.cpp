@@ -323,6 +323,55 @@ void component_params(const std::vector<ast::Param>& params, Resolver& r, const 
   }
 }
 
+/// A criterion's pattern nodes (`node b = a@2;`): each path starts at the
+/// criterion's dart or an earlier node and crosses at least one link; a node
+/// takes a name no other node, parameter or let of the criterion has. Adds
+/// the nodes to `s`.
+void criterion_nodes(const ast::Criterion& crit, Resolver& r, Scope& s) {
+  for (std::size_t k = 0; k < crit.nodes.size(); ++k) {
+    const ast::CriterionNode& n = crit.nodes[k];
+    Scope path = s;
+    for (std::size_t j = k; j < crit.nodes.size(); ++j) {
+      if (!path.nodes.count(crit.nodes[j].name.text))
+        path.hidden_nodes.insert(crit.nodes[j].name.text);
+    }
+    path.hidden_reason =
+        "is not declared yet; a node's path starts at the criterion's dart or an earlier node";
+    r.node(n.from.text, n.from.loc, path);
+    if (n.hops.empty()) {
+      r.diags().error(n.path_loc, "node '" + n.name.text + "' is '" + n.from.text +
+                                      "' itself; its path crosses at least one link, as in '" +
+                                      n.from.text + "@0'");
+    }
+    if (n.name.text == crit.dart.text) {
+      r.diags()
+          .error(n.name.loc, "node '" + n.name.text + "' is declared twice")
+          .notes.push_back({crit.dart.loc, "the criterion's dart"});
+    }
+    for (std::size_t j = 0; j < k; ++j) {
+      if (crit.nodes[j].name.text != n.name.text) continue;
+      r.diags()
+          .error(n.name.loc, "node '" + n.name.text + "' is declared twice")
+          .notes.push_back({crit.nodes[j].name.loc, "first declared here"});
+      break;
+    }
+    for (const ast::Param& p : crit.params) {
+      if (p.name.text != n.name.text) continue;
+      r.diags()
+          .error(n.name.loc,
+                 "node '" + n.name.text + "' has the name of a parameter of the criterion")
+          .notes.push_back({p.name.loc, "parameter declared here"});
+    }
+    for (const ast::Let& l : crit.lets) {
+      if (l.name.text != n.name.text) continue;
+      r.diags()
+          .error(l.name.loc, "let '" + l.name.text + "' has the name of a node of the criterion")
+          .notes.push_back({n.name.loc, "node declared here"});
+    }
+    s.nodes.insert(n.name.text);
+  }
+}
+
 /// Scripts: statements see the hooks, the parameters and the lets written
 /// before them; `for each` binds its dart variable for the statement only.
 /// Script calls, for the recursion check: caller -> (callee, call site).
@@ -521,6 +570,7 @@ void resolve_names(const ast::Program& program, Symbols& symbols, diag::Diagnost
       Scope s;
       s.params = &crit.params;
       s.nodes.insert(crit.dart.text);
+      criterion_nodes(crit, r, s);
       r.lets(crit.lets, s);
       s.lets = &crit.lets;
       s.visible_lets = crit.lets.size();

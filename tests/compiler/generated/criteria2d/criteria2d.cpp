@@ -811,12 +811,14 @@ void AtomicEdgeCriterion::initialise(rift::GMap& g) {
 void AtomicEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   cells_.collect(g, rift::Orbit{0, 2}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_a, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
+    if (g.is_free(d_a, 2)) return;
+    const rift::Dart d_b = g.alpha(d_a, 2);
     const rift::Vec3 s0 = e_position[g.alpha(d_a, 0)];
     const rift::Vec3 l_ab = (s0 - e_position[d_a]);
     const rift::Vec3 l_p1 = e_position[g.alpha(g.alpha(d_a, 1), 0)];
-    const rift::Vec3 l_p2 = e_position[g.alpha(g.alpha(g.alpha(d_a, 2), 1), 0)];
+    const rift::Vec3 l_p2 = e_position[g.alpha(g.alpha(d_b, 1), 0)];
     const rift::Vec3 l_f1 = (((((collect_sum(g, e_f_stretch, d_a, rift::Orbit{1}) + collect_sum(g, e_f_stretch, g.alpha(d_a, 0), rift::Orbit{1})) + e_f_shear[d_a]) + e_f_shear[g.alpha(d_a, 0)]) + e_f_membrane[d_a]) + e_f_membrane[g.alpha(d_a, 0)]);
-    const rift::Vec3 l_f2 = (((((collect_sum(g, e_f_stretch, g.alpha(d_a, 2), rift::Orbit{1}) + collect_sum(g, e_f_stretch, g.alpha(g.alpha(d_a, 2), 0), rift::Orbit{1})) + e_f_shear[g.alpha(d_a, 2)]) + e_f_shear[g.alpha(g.alpha(d_a, 2), 0)]) + e_f_membrane[g.alpha(d_a, 2)]) + e_f_membrane[g.alpha(g.alpha(d_a, 2), 0)]);
+    const rift::Vec3 l_f2 = (((((collect_sum(g, e_f_stretch, d_b, rift::Orbit{1}) + collect_sum(g, e_f_stretch, g.alpha(d_b, 0), rift::Orbit{1})) + e_f_shear[d_b]) + e_f_shear[g.alpha(d_b, 0)]) + e_f_membrane[d_b]) + e_f_membrane[g.alpha(d_b, 0)]);
     const rift::Vec3 l_mid = (0.5 * (e_position[d_a] + s0));
     const bool l_contract = (((l_f1).dot((l_p1 - l_mid)) > 0.0) && ((l_f2).dot((l_p2 - l_mid)) > 0.0));
     const rift::Vec3 l_across = (l_ab).cross(((l_ab).cross((l_p1 - e_position[d_a])) + ((l_p2 - e_position[d_a])).cross(l_ab)));
@@ -833,7 +835,8 @@ void AtomicEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCan
 
 bool AtomicEdgeCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
-  [[maybe_unused]] const rift::Dart d_a = candidate.at;
+  const rift::Dart d_a = candidate.at;
+  if (g.is_free(d_a, 2)) return false;
   separate_faces_args args;
   const rift::Dart hooks[] = {d_a};
   return apply_separate_faces(g, hooks, args, pack_, &touched);
@@ -850,8 +853,10 @@ void GlobalEdgeCriterion::initialise(rift::GMap& g) {
 void GlobalEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   cells_.collect(g, rift::Orbit{0, 2}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_a, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
+    if (g.is_free(d_a, 2)) return;
+    const rift::Dart d_b = g.alpha(d_a, 2);
     const rift::Vec3 l_ab = (e_position[g.alpha(d_a, 0)] - e_position[d_a]);
-    const rift::Vec3 l_n = (l_ab).cross(((l_ab).cross((e_position[g.alpha(g.alpha(d_a, 1), 0)] - e_position[d_a])) + ((e_position[g.alpha(g.alpha(g.alpha(d_a, 2), 1), 0)] - e_position[d_a])).cross(l_ab)));
+    const rift::Vec3 l_n = (l_ab).cross(((l_ab).cross((e_position[g.alpha(g.alpha(d_a, 1), 0)] - e_position[d_a])) + ((e_position[g.alpha(g.alpha(d_b, 1), 0)] - e_position[d_a])).cross(l_ab)));
     const rift::Real l_l = (l_n).norm();
     const rift::Real measure = ((l_l > 0.0) ? (std::abs(((e_vertex_force[d_a] + e_vertex_force[g.alpha(d_a, 0)])).dot(l_n)) / l_l) : 0.0);
     const rift::Real threshold = p_.threshold;
@@ -865,7 +870,8 @@ void GlobalEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCan
 
 bool GlobalEdgeCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
-  [[maybe_unused]] const rift::Dart d_a = candidate.at;
+  const rift::Dart d_a = candidate.at;
+  if (g.is_free(d_a, 2)) return false;
   separate_faces_args args;
   const rift::Dart hooks[] = {d_a};
   return apply_separate_faces(g, hooks, args, pack_, &touched);
