@@ -14,11 +14,10 @@ namespace {
 /// hook links along which its rows are joined by implicit arcs.
 struct OrbitClasses {
   std::vector<int> cls;                    // class id per node
-  std::map<int, std::set<int>> row_links;  // class id -> hook dimensions
+  std::map<int, std::set<int>> row_links;  // class id -> label positions of the row links
 };
 
-OrbitClasses classes(const PatternSide& side, const std::vector<int>& hook_label,
-                     const std::set<int>& orbit) {
+OrbitClasses classes(const PatternSide& side, const std::set<int>& orbit) {
   OrbitClasses out;
   out.cls.resize(side.nodes.size());
   std::iota(out.cls.begin(), out.cls.end(), 0);
@@ -34,8 +33,8 @@ OrbitClasses classes(const PatternSide& side, const std::vector<int>& hook_label
     out.cls[v] = root(static_cast<int>(v));
     const std::vector<int>& label = side.nodes[v].label();
     std::set<int>& links = out.row_links[out.cls[v]];
-    for (std::size_t p = 0; p < label.size() && p < hook_label.size(); ++p) {
-      if (orbit.count(label[p])) links.insert(hook_label[p]);
+    for (std::size_t p = 0; p < label.size(); ++p) {
+      if (orbit.count(label[p])) links.insert(static_cast<int>(p));
     }
   }
   return out;
@@ -45,8 +44,8 @@ void check_rule_embedding(const CheckedRule& cr, const ast::Embedding& emb,
                           const resolve::Symbols& symbols, diag::Diagnostics& diags) {
   const RuleGraph& g = cr.graph;
   const std::set<int> orbit(emb.orbit.dims.begin(), emb.orbit.dims.end());
-  const OrbitClasses left = classes(g.left, g.hook_label, orbit);
-  const OrbitClasses right = classes(g.right, g.hook_label, orbit);
+  const OrbitClasses left = classes(g.left, orbit);
+  const OrbitClasses right = classes(g.right, orbit);
   const std::string& e = emb.name.text;
 
   // Expressions for this embedding, per right class.

@@ -54,8 +54,7 @@ PatternSide build_side(const ast::Pattern& pattern, int dimension, diag::Diagnos
   return side;
 }
 
-std::optional<Step> step(const PatternSide& side, const std::vector<int>& hook_label, int v,
-                         int dim) {
+std::optional<Step> step(const PatternSide& side, int v, int dim) {
   for (const GraphArc& arc : side.arcs) {
     if (arc.dim != dim) continue;
     if (arc.a == v) return Step{arc.b, -1};
@@ -63,7 +62,7 @@ std::optional<Step> step(const PatternSide& side, const std::vector<int>& hook_l
   }
   const std::vector<int>& label = side.nodes[static_cast<std::size_t>(v)].label();
   for (std::size_t p = 0; p < label.size(); ++p) {
-    if (label[p] == dim && p < hook_label.size()) return Step{v, hook_label[p]};
+    if (label[p] == dim) return Step{v, static_cast<int>(p)};
   }
   return std::nullopt;
 }

@@ -31,20 +31,25 @@ struct PatternSide {
 };
 
 /// Where a node's darts go along one dimension: to `node` in the same row
-/// (explicit arc or loop, hook_dim = -1) or to itself in the row reached by
-/// the hook's `hook_dim` link (implicit arc).
+/// (explicit arc or loop, pos = -1) or to itself in the row reached by the
+/// hooks' link at label position `pos` (implicit arc). Rows are named by label
+/// positions, not dimensions: hooks may have different labels, and their
+/// orbits correspond position by position.
 struct Step {
   int node = -1;
-  int hook_dim = -1;
-  bool operator==(const Step& o) const { return node == o.node && hook_dim == o.hook_dim; }
+  int pos = -1;
+  bool operator==(const Step& o) const { return node == o.node && pos == o.pos; }
 };
 
 struct RuleGraph {
   int dimension = 2;
   PatternSide left;
   PatternSide right;
-  std::vector<int> hooks;       // left node indices, in hook order
-  std::vector<int> hook_label;  // H: the instantiation orbit's dimensions, position by position
+  std::vector<int> hooks;  // left node indices, in hook order
+  /// Per hook (in hook order), its label: the dimensions of its instantiation
+  /// orbit, position by position. Hooks may have different labels (Jerboa:
+  /// their orbits must be isomorphic after renaming, checked when matching).
+  std::vector<std::vector<int>> hook_labels;
   int label_length = 0;
 };
 
@@ -53,8 +58,7 @@ struct RuleGraph {
 PatternSide build_side(const ast::Pattern& pattern, int dimension, diag::Diagnostics& diags);
 
 /// Step of node v along dimension `dim` on one side, if it has an arc there.
-std::optional<Step> step(const PatternSide& side, const std::vector<int>& hook_label, int v,
-                         int dim);
+std::optional<Step> step(const PatternSide& side, int v, int dim);
 
 /// Connected components of a side through explicit arcs: component id per node.
 std::vector<int> components(const PatternSide& side);

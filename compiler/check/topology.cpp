@@ -92,18 +92,13 @@ class RuleChecker {
       hook_of[c] = chosen;
       g_.hooks.push_back(chosen);
     }
-    if (!g_.hooks.empty()) {
-      const GraphNode& first = g_.left.nodes[static_cast<std::size_t>(g_.hooks.front())];
-      g_.hook_label = first.label();
-      for (int h : g_.hooks) {
-        const GraphNode& other = g_.left.nodes[static_cast<std::size_t>(h)];
-        if (other.label() != first.label() && other.label().size() == first.label().size()) {
-          fail(other.decl->label.loc, "hooks '" + first.name() + "' and '" + other.name() +
-                                          "' have different labels; rift requires one hook label")
-              .notes.push_back({first.decl->label.loc, "label of '" + first.name() + "'"});
-        }
-      }
-    } else if (g_.left.nodes.empty() && g_.label_length > 0) {
+    // Hooks may have different labels of one length (Jerboa's "isomorphic
+    // after renaming"): the matcher walks each hook's orbit with its own
+    // label and applies the rule only where they correspond position by
+    // position.
+    for (int h : g_.hooks)
+      g_.hook_labels.push_back(g_.left.nodes[static_cast<std::size_t>(h)].label());
+    if (g_.hooks.empty() && g_.left.nodes.empty() && g_.label_length > 0) {
       // A generator has a single row: implicit arcs would have nothing to follow.
       const GraphNode& n = g_.right.nodes.front();
       fail(n.decl->label.loc,
@@ -204,23 +199,35 @@ class RuleChecker {
   /// Walks i, j, i, j from v and tells whether it closes on v in the same row.
   bool on_cycle(const PatternSide& side, int v, int i, int j) const {
     int cur = v;
-    std::vector<int> word;  // hook links crossed, reduced as we go
+    std::vector<int> word;  // label positions of the hook links crossed, reduced as we go
     for (int d : {i, j, i, j}) {
-      const auto s = step(side, g_.hook_label, cur, d);
+      const auto s = step(side, cur, d);
       if (!s) return false;
       cur = s->node;
-      if (s->hook_dim < 0) continue;
-      if (!word.empty() && word.back() == s->hook_dim) {
-        word.pop_back();  // alpha_h is an involution
+      if (s->pos < 0) continue;
+      if (!word.empty() && word.back() == s->pos) {
+        word.pop_back();  // each hook link is an involution
       } else {
-        word.push_back(s->hook_dim);
+        word.push_back(s->pos);
       }
     }
     if (cur != v) return false;
     if (word.empty()) return true;
-    // a b a b is the identity on the matched orbit when |a - b| >= 2 (G-map condition).
     return word.size() == 4 && word[0] == word[2] && word[1] == word[3] &&
-           (word[0] - word[1] >= 2 || word[1] - word[0] >= 2);
+           rows_commute(word[0], word[1]);
+  }
+
+  /// The hook links at label positions p and q commute on the rows: a hook's
+  /// alpha_a alpha_b alpha_a alpha_b is the identity when |a - b| >= 2 (the
+  /// G-map condition), and every hook's orbit corresponds to the first's
+  /// position by position, so one hook with such a pair is enough.
+  bool rows_commute(int p, int q) const {
+    for (const std::vector<int>& label : g_.hook_labels) {
+      const int a = label[static_cast<std::size_t>(p)];
+      const int b = label[static_cast<std::size_t>(q)];
+      if (a - b >= 2 || b - a >= 2) return true;
+    }
+    return false;
   }
 
   void cycles(int i, int j) {
@@ -247,8 +254,8 @@ class RuleChecker {
         continue;
       }
       for (int d : {i, j}) {
-        const auto before = step(g_.left, g_.hook_label, l, d);
-        const auto after = step(g_.right, g_.hook_label, static_cast<int>(v), d);
+        const auto before = step(g_.left, l, d);
+        const auto after = step(g_.right, static_cast<int>(v), d);
         if (same_step(before, after)) continue;
         fail(rn.decl->name.loc, "node '" + rn.name() + "' lies on no " + ij + "-" + ij +
                                     " cycle in the left pattern, so its " + dim_str(d) +
@@ -261,7 +268,7 @@ class RuleChecker {
   /// Same arc before and after: same kind, same target (compared by name).
   bool same_step(const std::optional<Step>& a, const std::optional<Step>& b) const {
     if (!a || !b) return !a && !b;
-    if (a->hook_dim != b->hook_dim) return false;
+    if (a->pos != b->pos) return false;
     return g_.left.nodes[static_cast<std::size_t>(a->node)].name() ==
            g_.right.nodes[static_cast<std::size_t>(b->node)].name();
   }

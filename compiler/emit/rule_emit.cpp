@@ -121,9 +121,8 @@ void emit_rule(Writer& w, const lower::RulePlan& plan, const PackModel& model) {
   }
   w.line("std::size_t rows = 1;");
   w.line("if (!build_rows(g, hooks.data(), hooks.size(), hook_dims, " +
-         std::to_string(match.hook_dims.size()) + ", s, rows)) return false;");
-  w.line("[[maybe_unused]] const std::size_t label = " + std::to_string(match.hook_dims.size()) +
-         ";");
+         std::to_string(match.label_length) + ", s, rows)) return false;");
+  w.line("[[maybe_unused]] const std::size_t label = " + std::to_string(match.label_length) + ";");
   fetch_embeddings(w, values.embeddings, model, user);
 
   emit_match(w, plan.left, match, "return false;");

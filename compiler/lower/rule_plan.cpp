@@ -9,7 +9,9 @@ namespace rift::lower {
 MatchPlan plan_match(const check::RuleGraph& g) {
   MatchPlan plan;
   plan.hooks = g.hooks;
-  plan.hook_dims = g.hook_label;
+  plan.label_length = g.hooks.empty() ? 0 : static_cast<int>(g.hook_labels.front().size());
+  for (const std::vector<int>& label : g.hook_labels)
+    plan.hook_dims.insert(plan.hook_dims.end(), label.begin(), label.end());
   const std::size_t n = g.left.nodes.size();
   std::vector<bool> reached(n, false);
   std::vector<bool> arc_used(g.left.arcs.size(), false);

@@ -32,8 +32,11 @@ struct LabelLink {
 };
 
 struct MatchPlan {
-  std::vector<int> hooks;      // left node indices, in hook order
-  std::vector<int> hook_dims;  // H
+  std::vector<int> hooks;  // left node indices, in hook order
+  int label_length = 0;    // entries of every label of the rule
+  /// Hook j's label at [j * label_length, (j + 1) * label_length): the links
+  /// that walk its instantiation orbit, position by position.
+  std::vector<int> hook_dims;
   std::vector<Follow> follows;
   std::vector<ArcCheck> arc_checks;
   std::vector<LabelLink> label_checks;

@@ -32,7 +32,7 @@ TEST(MatchRows, OneRowPerDartOfTheHookOrbitAndTheSameWalkFromEveryHook) {
   const Dart quad1 = test::make_polygon(g, 4);
   const Dart quad2 = test::make_polygon(g, 4);
   const Dart hooks[] = {quad1, quad2 + 2};  // any dart of the second face
-  const int dims[] = {0, 1};
+  const int dims[] = {0, 1, 0, 1};          // each hook's label
   Scratch& s = scratch();
   std::size_t rows = 0;
   ASSERT_TRUE(build_rows(g, hooks, 2, dims, 2, s, rows));
@@ -58,12 +58,36 @@ TEST(MatchRows, HooksOnOrbitsOfDifferentShapesDoNotMatch) {
   const Dart quad = test::make_polygon(g, 4);
   const Dart triangle = test::make_polygon(g, 3);
   const Dart hooks[] = {quad, triangle};
-  const int dims[] = {0, 1};
+  const int dims[] = {0, 1, 0, 1};
   std::size_t rows = 0;
   EXPECT_FALSE(build_rows(g, hooks, 2, dims, 2, scratch(), rows));
   // No hook: a generator, one row.
   EXPECT_TRUE(build_rows(g, hooks, 0, dims, 2, scratch(), rows));
   EXPECT_EQ(rows, 1u);
+}
+
+TEST(MatchRows, AHookWithARenamedLabelWalksItsOrbitWithItsOwnLinks) {
+  // Hooks labelled <0,1> and <1,0>: row r of the second face is reached from
+  // its hook by the first's walk with 0 and 1 swapped.
+  GMap g(2);
+  const Dart quad1 = test::make_polygon(g, 4);
+  const Dart quad2 = test::make_polygon(g, 4);
+  const Dart hooks[] = {quad1, quad2};
+  const int dims[] = {0, 1, 1, 0};
+  Scratch& s = scratch();
+  std::size_t rows = 0;
+  ASSERT_TRUE(build_rows(g, hooks, 2, dims, 2, s, rows));
+  ASSERT_EQ(rows, 8u);
+  const std::set<Dart> second(s.rows.begin() + 8, s.rows.end());
+  EXPECT_EQ(second, orbit_of(g, quad2, Orbit{0, 1}));
+  for (std::size_t r = 0; r < rows; ++r) {
+    for (std::size_t k = 0; k < 2; ++k) {
+      EXPECT_EQ(g.alpha(s.rows[r], dims[k]), s.rows[s.nbr[r * 2 + k]]);
+      EXPECT_EQ(g.alpha(s.rows[rows + r], dims[2 + k]), s.rows[rows + s.nbr[r * 2 + k]]);
+    }
+  }
+  // The row the first hook reaches by alpha_0 is the one the second reaches by alpha_1.
+  EXPECT_EQ(s.rows[rows + s.nbr[0]], g.alpha(quad2, 1));
 }
 
 TEST(MatchRows, DistinctDartsAndNoMarkLeftBehind) {

@@ -33,17 +33,20 @@ bool build_rows(const GMap& g, const Dart* hooks, std::size_t hook_count, const 
     s.row_of[d] = kNoRow;
   s.rows.resize(row_count * hook_count);
   for (std::size_t j = 1; j < hook_count; ++j) {
+    // Hook j walks with its own label: the link at position k is dims[k],
+    // which may differ from the first hook's (Jerboa's renaming).
+    const int* const dims = hook_dims + j * label;
     Dart* rows = s.rows.data() + j * row_count;
     rows[0] = hooks[j];
     for (std::size_t r = 1; r < row_count; ++r) {
       const std::uint32_t p = s.parent[r];
-      rows[r] = g.alpha(rows[p / label], hook_dims[p % label]);
+      rows[r] = g.alpha(rows[p / label], dims[p % label]);
     }
     // The replayed walk must close the same way: every link lands on the row
     // the first hook's walk found there.
     for (std::size_t r = 0; r < row_count; ++r) {
       for (std::size_t k = 0; k < label; ++k) {
-        if (g.alpha(rows[r], hook_dims[k]) != rows[s.nbr[r * label + k]]) return false;
+        if (g.alpha(rows[r], dims[k]) != rows[s.nbr[r * label + k]]) return false;
       }
     }
   }

@@ -12,10 +12,12 @@
 namespace rift::generated {
 
 /// Fills s.rows (hook j's dart of row r at rows[j * row_count + r]), s.nbr and
-/// s.parent from the hooks, walking the links hook_dims[0 .. label). False when
-/// another hook's walk does not meet an orbit isomorphic to the first's
-/// (Jerboa's condition for rules with several hooks). No hook: a generator,
-/// one row and nothing matched.
+/// s.parent from the hooks. Hook j's label is hook_dims[j * label .. (j + 1) *
+/// label): the first hook's walk numbers the rows, and every other hook
+/// replays it with its own label, position by position. False when another
+/// hook's walk does not meet an orbit isomorphic to the first's after that
+/// renaming (Jerboa's condition for rules with several hooks). No hook: a
+/// generator, one row and nothing matched.
 bool build_rows(const GMap& g, const Dart* hooks, std::size_t hook_count, const int* hook_dims,
                 std::size_t label, Scratch& s, std::size_t& row_count);
 

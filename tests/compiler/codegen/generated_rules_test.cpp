@@ -174,6 +174,70 @@ TEST(GeneratedRules, RelabellingTurnsAnIsolatedFaceIntoItsDualVertex) {
   expect_valid(joined);
 }
 
+/// The first dart whose position is p.
+Dart dart_at(const GMap& g, const Vec3& p) {
+  const auto position = g.embedding<Vec3>("position");
+  Dart found = rift::kNoDart;
+  g.for_each_dart([&](Dart d) {
+    if (found == rift::kNoDart && (position[d] - p).norm() < 1e-12) found = d;
+  });
+  return found;
+}
+
+TEST(GeneratedRules, HooksWithDifferentLabelsRemoveTwoFaces) {
+  GMap g = grid("grid:quad:2x1");
+  const Dart d = find_dart(g, 2, false);
+  const Dart b = g.alpha(d, 2);
+  ASSERT_TRUE(g2::apply_separate_faces(g, std::span<const Dart>(&d, 1)));
+  // Not two faces: both hooks in one face make the match non-injective.
+  const Dart same[] = {d, g.alpha(d, 0)};
+  EXPECT_FALSE(g2::apply_remove_two_faces(g, same));
+  EXPECT_EQ(g.size(), 16u);
+  // a walks its face 0 then 1, b walks the other 1 then 0: both quads match.
+  const Dart hooks[] = {d, b};
+  ASSERT_TRUE(g2::apply_remove_two_faces(g, hooks));
+  EXPECT_EQ(g.size(), 0u);
+  expect_valid(g);
+}
+
+TEST(GeneratedRules, HooksWithDifferentLabelsMatchOnlyIsomorphicOrbits) {
+  // A quad face (8 darts, a cycle of 0- and 1-links) corresponds to a vertex
+  // of degree 4 (8 darts, a cycle of 1- and 2-links) after renaming; a
+  // boundary vertex's orbit is an open chain and does not.
+  GMap g = grid("grid:quad:3x3");
+  auto position = g.embedding<Vec3>("position");
+  const Dart f = dart_at(g, Vec3(0, 0, 0));
+  ASSERT_NE(f, rift::kNoDart);
+  Vec3 centre = Vec3::Zero();
+  Dart x = f;
+  for (int k = 0; k < 8; ++k) {  // the face orbit: alpha_0, alpha_1, ... back to f
+    centre += position[x] / 8.0;
+    x = g.alpha(x, k % 2);
+  }
+  ASSERT_EQ(x, f);
+  // The grid spans the unit square, three cells a side.
+  for (const Vec3& boundary : {Vec3(1, 0, 0), Vec3(2.0 / 3, 0, 0)}) {  // degree 2, degree 3
+    const Dart v = dart_at(g, boundary);
+    ASSERT_NE(v, rift::kNoDart);
+    const Dart hooks[] = {f, v};
+    EXPECT_FALSE(g2::apply_vertex_to_face_centre(g, hooks)) << boundary.transpose();
+    EXPECT_EQ(position[v], boundary);
+  }
+  const Dart v = dart_at(g, Vec3(2.0 / 3, 2.0 / 3, 0));
+  ASSERT_NE(v, rift::kNoDart);
+  const Dart hooks[] = {f, v};
+  ASSERT_TRUE(g2::apply_vertex_to_face_centre(g, hooks));
+  expect_valid(g);
+  EXPECT_TRUE(position[v].isApprox(centre)) << position[v].transpose();
+  EXPECT_EQ(position[f], Vec3(0, 0, 0));  // the face did not move
+  Dart y = v;                             // every dart of the vertex sees the new position
+  for (int k = 0; k < 8; ++k) {
+    EXPECT_TRUE(position[y].isApprox(centre)) << k;
+    y = g.alpha(y, 1 + k % 2);
+  }
+  EXPECT_EQ(y, v);
+}
+
 TEST(GeneratedRules, PreconditionAndParameters) {
   GMap g = grid("grid:quad:1x1");
   auto position = g.embedding<Vec3>("position");
@@ -333,7 +397,7 @@ TEST(GeneratedPack, ListsEverythingByName) {
   EXPECT_EQ(pack.name(), "gen2d");
   EXPECT_EQ(pack.dimension(), 2);
   const auto rules = pack.rule_names();
-  ASSERT_EQ(rules.size(), 7u);
+  ASSERT_EQ(rules.size(), 9u);
   EXPECT_EQ(rules[0], "separate_faces");
   EXPECT_EQ(pack.make_rule("separate_faces")->hook_count(), 1);
   EXPECT_EQ(pack.make_rule("sew_edges")->hook_count(), 2);

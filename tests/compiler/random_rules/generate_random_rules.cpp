@@ -7,8 +7,10 @@
 //     random order) and a few nodes reached by explicit arcs, written as a
 //     mesh has them (an arc u -i- v between nodes labelled from H only where
 //     i commutes with every dimension of their labels, so that the pattern
-//     can match; loops for free darts); sometimes two components (two hooks
-//     with one label), as sewing rules have.
+//     can match; loops for free darts); sometimes two components (two hooks,
+//     as sewing rules have; half of the time the second hook's label is the
+//     first's dimensions in another order, which Jerboa allows: the rule
+//     applies where the two orbits correspond after that renaming).
 //   - R: L changed by 1 to 4 random edits: unsew an arc, sew two loops,
 //     delete a node, drop or rename one entry of a label, create a node with
 //     a random label; then every dart slot left without a link is completed
@@ -17,9 +19,10 @@
 // Every candidate is judged by this file's own checker of the conditions of
 // JERBOA_RULES.md (incident arcs; i-j-i-j cycles for i + 2 <= j, decided by
 // walking i, j, i, j through labels, loops and explicit arcs while keeping the
-// row as a word over the hook's links, reduced in the right-angled Coxeter
-// group of the hook's dimensions). Candidates it finds consistent go to the
-// pack, the others (a few of each failed condition) to the file of
+// row as a word over the hooks' label positions, reduced in the right-angled
+// Coxeter group where positions commute when some hook's dimensions there
+// differ by 2 or more: every hook's orbit corresponds to the first's). Candidates it finds
+// consistent go to the pack, the others (a few of each failed condition) to the file of
 // inconsistent rules. riftc is then run on both: the pack keeps only what
 // riftc accepts, and the report lists riftc's rejections of consistent rules
 // and every inconsistent rule riftc accepted. random_rules_test.cpp reads the
@@ -100,8 +103,9 @@ struct Side {
 };
 
 struct Rule {
-  std::vector<int> hook_label;  // H
-  std::vector<int> hooks;       // one node per left component
+  std::vector<int> hook_label;                // H, the first hook's label
+  std::vector<std::vector<int>> hook_labels;  // every hook's, in hook order
+  std::vector<int> hooks;                     // one node per left component
   int nodes = 0;
   Side left, right;
   std::string edits;      // what was done to L, for the comment
@@ -110,13 +114,21 @@ struct Rule {
 
 // ---- the checker ----------------------------------------------------------------------
 
-/// Is a word over the hook's label positions the identity in the right-angled
-/// Coxeter group where positions p, q commute when their hook dimensions
-/// differ by 2 or more? Tits: a word that is not reduced has two equal
-/// letters with only letters commuting with them in between; cancelling such
-/// pairs until none is left decides it.
-bool is_identity(std::vector<int> word, const std::vector<int>& hook) {
-  const auto commute = [&](int p, int q) { return p == q || std::abs(hook[p] - hook[q]) >= 2; };
+/// Is a word over the hooks' label positions the identity in the
+/// right-angled Coxeter group where positions p, q commute when some hook's
+/// dimensions there differ by 2 or more (the hooks' orbits correspond
+/// position by position, so a relation of one holds in all)? Tits: a word
+/// that is not reduced has two equal letters with only letters commuting with
+/// them in between; cancelling such pairs until none is left decides it.
+bool is_identity(std::vector<int> word, const std::vector<std::vector<int>>& hooks) {
+  const auto commute = [&](int p, int q) {
+    if (p == q) return true;
+    for (const std::vector<int>& hook : hooks) {
+      if (std::abs(hook[static_cast<std::size_t>(p)] - hook[static_cast<std::size_t>(q)]) >= 2)
+        return true;
+    }
+    return false;
+  };
   bool changed = true;
   while (changed && !word.empty()) {
     changed = false;
@@ -136,7 +148,7 @@ bool is_identity(std::vector<int> word, const std::vector<int>& hook) {
 }
 
 /// Does node v of `side` lie on an i-j-i-j cycle, whatever the matched orbit?
-bool on_cycle(const Side& side, const std::vector<int>& hook, int v, int i, int j) {
+bool on_cycle(const Side& side, const std::vector<std::vector<int>>& hooks, int v, int i, int j) {
   int node = v;
   std::vector<int> word;
   for (const int d : {i, j, i, j}) {
@@ -149,7 +161,7 @@ bool on_cycle(const Side& side, const std::vector<int>& hook, int v, int i, int 
     if (next == kNone) return false;
     node = next;
   }
-  return node == v && is_identity(word, hook);
+  return node == v && is_identity(word, hooks);
 }
 
 /// How v is linked in dimension d: by the label position, by an arc to a
@@ -190,11 +202,11 @@ Verdict check(const Rule& r, int n) {
     if (!in_l && in_r && r.right.dims(v) != all) return Verdict::kIncident;
     for (int i = 0; i <= n; ++i) {
       for (int j = i + 2; j <= n; ++j) {
-        if (!in_l && in_r && !on_cycle(r.right, r.hook_label, v, i, j))
+        if (!in_l && in_r && !on_cycle(r.right, r.hook_labels, v, i, j))
           return Verdict::kCycleCreated;
         if (in_l && in_r) {
-          if (on_cycle(r.left, r.hook_label, v, i, j)) {
-            if (!on_cycle(r.right, r.hook_label, v, i, j)) return Verdict::kCyclePreserved;
+          if (on_cycle(r.left, r.hook_labels, v, i, j)) {
+            if (!on_cycle(r.right, r.hook_labels, v, i, j)) return Verdict::kCyclePreserved;
           } else if (link_of(r.left, v, i) != link_of(r.right, v, i) ||
                      link_of(r.left, v, j) != link_of(r.right, v, j)) {
             return Verdict::kCyclePreserved;
@@ -221,8 +233,11 @@ void random_left(Rule& r, int n, Rng& rng) {
   const int components = chance(rng, 0.2) ? 2 : 1;
   for (int c = 0; c < components; ++c) {
     const int hook = r.nodes++;
+    std::vector<int> hook_label = r.hook_label;
+    if (c > 0 && chance(rng, 0.5)) std::shuffle(hook_label.begin(), hook_label.end(), rng);
+    r.hook_labels.push_back(hook_label);
     r.left.labels.resize(static_cast<std::size_t>(r.nodes));
-    r.left.labels[static_cast<std::size_t>(hook)] = r.hook_label;
+    r.left.labels[static_cast<std::size_t>(hook)] = hook_label;
     r.hooks.push_back(hook);
     std::vector<int> members{hook};
     const int grow = uniform_int(rng, 0, 3);
