@@ -72,6 +72,11 @@ class Resolver {
         return;
       }
       node(e.node, e.node_loc, scope);
+      // Each dart is one C++ local of the function the fold is rendered in.
+      if (scope.nodes.count(e.var)) {
+        diags_.error(e.var_loc,
+                     "'" + e.var + "' is already a node here; give the fold's dart another name");
+      }
       Scope inner = scope;
       inner.nodes.insert(e.var);
       inner.hidden_nodes.erase(e.var);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -55,6 +56,42 @@ TEST(StandardPacks, InitialisersGiveMassesAndRestLengths) {
   g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart v) { total_vertex += vertex[v]; });
   EXPECT_NEAR(total_vertex, 1.0, 1e-12);
   g.for_each_dart([&](rift::Dart d) { EXPECT_NEAR(rest[d], 0.25, 1e-12); });
+}
+
+// global_edge names the dart across its edge (`node b = a@2`): a boundary
+// edge gives no candidate, an inner edge of a flat sheet the closed form of
+// eq. (5), |(f_A + f_B) . n| with n the unit normal of the edge in the sheet.
+TEST(StandardPacks, GlobalEdgeMatchesInnerEdgesWithTheirClosedForm) {
+  rift::GMap g = rift::load_map("grid:quad:3x3");
+  std::vector<std::unique_ptr<rift::ForceModel>> models;
+  initialise(g, models);
+  auto position = g.embedding<Vec3>("position");
+  auto vertex_force = g.embedding<Vec3>("vertex_force");
+  // A force that differs from vertex to vertex, in the sheet's plane and out of it.
+  g.for_each_cell(rift::Orbit{1, 2}, [&](rift::Dart v) {
+    const Vec3& p = position[v];
+    vertex_force[v] = Vec3(1.0 + 2.0 * p.x(), -0.5 + p.y() * p.x(), 3.0);
+  });
+  const rift::Real threshold = 1e-9;
+  cloth::GlobalEdgeCriterion criterion(cloth::GlobalEdgeParams{threshold});
+  criterion.initialise(g);
+  std::vector<rift::TearCandidate> candidates;
+  criterion.collect(g, candidates);
+  std::vector<rift::Dart> inner_edges;
+  g.for_each_cell(rift::Orbit{0, 2}, [&](rift::Dart a) {
+    if (!g.is_free(a, 2)) inner_edges.push_back(a);
+  });
+  ASSERT_EQ(inner_edges.size(), 12u);  // of the 24 edges of a 3x3 grid, 12 are inner
+  ASSERT_EQ(candidates.size(), inner_edges.size());
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    const rift::Dart a = candidates[k].at;
+    EXPECT_EQ(a, inner_edges[k]);  // in the cells' order
+    const Vec3& pa = position[a];
+    const Vec3& pb = position[g.alpha(a, 0)];
+    const Vec3 n = Vec3(0.0, 0.0, 1.0).cross(pb - pa).normalized();
+    const rift::Real expected = std::abs((vertex_force[a] + vertex_force[g.alpha(a, 0)]).dot(n));
+    EXPECT_NEAR(candidates[k].measure + threshold, expected, 1e-12) << "edge of dart " << a;
+  }
 }
 
 TEST(StandardPacks, StretchedClothTearsAndStaysValid) {

@@ -601,7 +601,9 @@ void BendForceCriterion::initialise(rift::GMap& g) {
 void BendForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   cells_.collect(g, rift::Orbit{2}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_d, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
-    const rift::Real measure = std::max<rift::Real>(std::max<rift::Real>((e_f_bend[g.alpha(g.alpha(d_d, 1), 0)]).norm(), (e_f_bend[g.alpha(g.alpha(g.alpha(d_d, 2), 1), 0)]).norm()), (2.0 * (e_f_abend[d_d]).norm()));
+    if (g.is_free(d_d, 2)) return;
+    const rift::Dart d_e = g.alpha(d_d, 2);
+    const rift::Real measure = std::max<rift::Real>(std::max<rift::Real>((e_f_bend[g.alpha(g.alpha(d_d, 1), 0)]).norm(), (e_f_bend[g.alpha(g.alpha(d_e, 1), 0)]).norm()), (2.0 * (e_f_abend[d_d]).norm()));
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
     rift::TearCandidate c;
@@ -614,6 +616,7 @@ void BendForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCand
 bool BendForceCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
   const rift::Dart d_d = candidate.at;
+  if (g.is_free(d_d, 2)) return false;
   separate_faces_args args;
   const rift::Dart hooks[] = {d_d};
   return apply_separate_faces(g, hooks, args, pack_, &touched);
