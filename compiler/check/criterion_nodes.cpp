@@ -1,54 +1,14 @@
 #include "check/criterion_nodes.hpp"
 
-#include <cstdlib>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "check/alpha_word.hpp"
 
 namespace rift::check {
 
 namespace {
-
-bool commute(int i, int j) {
-  return std::abs(i - j) >= 2;
-}
-
-/// The links of `word` in the normal form of the group the alpha_i generate
-/// (a right-angled Coxeter group: alpha_i^2 = 1, and alpha_i alpha_j =
-/// alpha_j alpha_i when |i - j| >= 2). Two words reach the same dart from the
-/// same start on every G-map iff their normal forms are equal: a word is
-/// reduced once no letter meets an equal one across letters it commutes with
-/// (Tits), and reduced words of one element differ by commutations only, of
-/// which the lexicographically least is taken.
-std::vector<int> normal_form(std::vector<int> word) {
-  for (bool cancelled = true; cancelled;) {
-    cancelled = false;
-    for (std::size_t i = 0; i < word.size() && !cancelled; ++i) {
-      for (std::size_t j = i + 1; j < word.size(); ++j) {
-        if (word[j] == word[i]) {
-          word.erase(word.begin() + static_cast<std::ptrdiff_t>(j));
-          word.erase(word.begin() + static_cast<std::ptrdiff_t>(i));
-          cancelled = true;
-          break;
-        }
-        if (!commute(word[j], word[i])) break;
-      }
-    }
-  }
-  std::vector<int> out;
-  while (!word.empty()) {
-    // The least letter that commutes with every letter before it comes first.
-    std::size_t best = 0;
-    for (std::size_t p = 1; p < word.size(); ++p) {
-      bool movable = true;
-      for (std::size_t q = 0; q < p && movable; ++q)
-        movable = commute(word[q], word[p]);
-      if (movable && word[p] < word[best]) best = p;
-    }
-    out.push_back(word[best]);
-    word.erase(word.begin() + static_cast<std::ptrdiff_t>(best));
-  }
-  return out;
-}
 
 std::string path_text(const std::string& from, const std::vector<int>& hops) {
   std::string s = from;

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "ast/orbit_text.hpp"
+#include "check/alpha_word.hpp"
 #include "check/types.hpp"
 
 namespace rift::check {
@@ -314,28 +315,6 @@ std::vector<CheckedRule> check_rules(const ast::Program& program, diag::Diagnost
 
 namespace {
 
-/// `word` (alpha indices, applied left to right) in a shorter equal form:
-/// alpha_i is an involution, and alpha_i, alpha_j commute when |i - j| >= 2
-/// (the G-map condition), so two equal letters separated only by letters
-/// that commute with them cancel.
-std::vector<int> reduced(std::vector<int> word) {
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (std::size_t i = 0; i < word.size() && !changed; ++i) {
-      for (std::size_t j = i + 1; j < word.size(); ++j) {
-        if (word[j] == word[i]) {
-          word.erase(word.begin() + static_cast<std::ptrdiff_t>(j));
-          word.erase(word.begin() + static_cast<std::ptrdiff_t>(i));
-          changed = true;
-          break;
-        }
-        if (std::abs(word[j] - word[i]) < 2) break;  // does not commute: stop looking
-      }
-    }
-  }
-  return word;
-}
-
 bool within(const std::vector<int>& word, const std::vector<int>& dims) {
   for (int d : word) {
     if (std::find(dims.begin(), dims.end(), d) == dims.end()) return false;
@@ -392,7 +371,7 @@ void check_force_ownership(const ast::Interaction& inter, const RuleGraph& g,
     if (!target) continue;
     const int node = side.find(f.node.text);
     if (node < 0 || !reached[static_cast<std::size_t>(node)]) continue;
-    const std::vector<int> word = reduced(path[static_cast<std::size_t>(node)]);
+    const std::vector<int> word = reduced_word(path[static_cast<std::size_t>(node)]);
     if (target->orbit.dims.empty()) {
       darts.push_back(&f);
       continue;
@@ -416,7 +395,7 @@ void check_force_ownership(const ast::Interaction& inter, const RuleGraph& g,
       std::vector<int> w = path[static_cast<std::size_t>(side.find(a.node.text))];
       const std::vector<int>& pb = path[static_cast<std::size_t>(side.find(b.node.text))];
       w.insert(w.end(), pb.rbegin(), pb.rend());
-      const std::vector<int> between = reduced(w);
+      const std::vector<int> between = reduced_word(w);
       if (within(between, support)) continue;
       diags
           .error(b.embedding.loc,
