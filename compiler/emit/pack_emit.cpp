@@ -28,12 +28,11 @@ void for_each_criterion(const PackModel& m, F&& f) {
   }
 }
 
-// Appends the embeddings `root` reads (Read and Collect nodes) that `names`
+// Appends the embeddings `root` reads (Read, Position, Velocity nodes) that `names`
 // does not hold yet, in order of first use.
 void add_embedding_reads(const ir::Graph& g, ir::ExprId root, std::vector<std::string>& names) {
   ir::visit(g, root, [&](const ir::Node& n) {
-    const bool reads = n.op == ir::Op::Read || n.op == ir::Op::Position ||
-                       n.op == ir::Op::Velocity || n.op == ir::Op::Collect;
+    const bool reads = n.op == ir::Op::Read || n.op == ir::Op::Position || n.op == ir::Op::Velocity;
     if (reads && std::find(names.begin(), names.end(), n.embedding) == names.end())
       names.push_back(n.embedding);
   });

@@ -3,6 +3,7 @@
 // a criterion separating the faces of over-stretched edges, in 2D and 3D.
 #include "../sim/test_spring_model.hpp"
 #include "cli/register_packs.hpp"
+#include "rift/core/interrupt.hpp"
 #include "rift/pack/pack.hpp"
 
 namespace rift::test {
@@ -40,6 +41,31 @@ class LongEdge final : public Criterion {
   Embedding<Vec3> position_;
 };
 
+// A criterion whose every cell, a vertex, walks the whole face around it:
+// on one face of n corners a collection costs n walks of 2n darts, which
+// makes a step as long as a test of interrupts needs (a 300,000-gon: minutes).
+// It polls for an interrupt once per cell, as generated criteria do, and
+// never gives a candidate.
+class FaceWalk final : public Criterion {
+ public:
+  const std::string& name() const override { return name_; }
+  void initialise(GMap& map) override { position_ = map.embedding<Vec3>("position"); }
+  void collect(const GMap& map, std::vector<TearCandidate>& out) const override {
+    map.for_each_cell(Orbit{1, 2}, [&](Dart v) {
+      throw_if_interrupted();
+      Real spread = 0;
+      map.for_each_in_orbit(v, Orbit{0, 1},
+                            [&](Dart x) { spread += (position_[x] - position_[v]).norm(); });
+      if (spread < 0) out.push_back({0, v, spread, {}, 0});  // never: keeps the walk
+    });
+  }
+  bool apply(GMap&, const TearCandidate&, std::vector<Dart>&) override { return false; }
+
+ private:
+  std::string name_ = "test_face_walk";
+  Embedding<Vec3> position_;
+};
+
 class TestPack final : public Pack {
  public:
   explicit TestPack(int dimension)
@@ -52,6 +78,8 @@ class TestPack final : public Pack {
     catalog_.criteria.push_back({"test_long_edge",
                                  "separates the elements of an edge longer than the limit",
                                  {{"limit", ValueType::kReal, std::nullopt, "m", true, false}}});
+    catalog_.criteria.push_back(
+        {"test_face_walk", "walks the whole face from each of its vertices (never tears)", {}});
   }
   const std::string& name() const override { return name_; }
   int dimension() const override { return dimension_; }
@@ -64,6 +92,7 @@ class TestPack final : public Pack {
     return std::make_unique<HalfEdgeSprings>(use.real("stiffness"), use.real("damping"));
   }
   std::unique_ptr<Criterion> make_criterion(const ComponentUse& use) const override {
+    if (use.name == "test_face_walk") return std::make_unique<FaceWalk>();
     return std::make_unique<LongEdge>(use.real("limit"));
   }
   std::unique_ptr<Rule> make_rule(const std::string&) const override { return nullptr; }

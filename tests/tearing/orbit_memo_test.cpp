@@ -32,7 +32,7 @@ Real fresh_vertex_stress(const GMap& g, Dart v) {
         position[g.alpha(g.alpha(c, 1), 0)] - position[c],
         position[g.alpha(g.alpha(g.alpha(c, 2), 1), 0)] - position[c];
     const Real six_volume = std::abs(edges.determinant());
-    const Real element_mass = generated::collect_sum(g, corner_mass, c, Orbit{0, 1, 2});
+    const Real element_mass = generated::fold_sum(g, corner_mass, c, Orbit{0, 1, 2}, Orbit{1, 2});
     Mat3 virial = Mat3::Zero();
     g.for_each_sub_orbit(c, Orbit{0, 1, 2}, Orbit{1, 2},
                          [&](Dart k) { virial += f_fem[k] * position[k].transpose(); });

@@ -213,7 +213,7 @@ bool apply_split_vertex(rift::GMap& g, std::span<const rift::Dart> hooks, const 
     g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart x) { each.push_back(x); });
     for (const rift::Dart d_f : each) {
       if (!g.is_alive(d_f)) continue;
-      e_side[d_f] = (((collect_mean(g, e_position, d_f, rift::Orbit{0, 1}) - args.point)).dot(args.normal) >= 0.0);
+      e_side[d_f] = (((fold_mean(g, e_position, d_f, rift::Orbit{0, 1}, rift::Orbit{1}) - args.point)).dot(args.normal) >= 0.0);
       if (touched) touched->push_back(d_f);
     }
   }
