@@ -441,5 +441,6 @@ std::unique_ptr<rift::Rule> Pack::make_rule(const std::string& name) const {
 }  // namespace rift::packs::topology2d
 
 void rift_register_pack_topology2d(rift::PackRegistry& registry) {
+  if (registry.find("topology2d")) return;
   registry.add(std::make_unique<rift::packs::topology2d::Pack>());
 }
