@@ -344,7 +344,7 @@ void ShearForceCriterion::initialise(rift::GMap& g) {
 }
 
 void ShearForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  cells_.collect(g, rift::Orbit{0, 1}, rift::generated::CollectOn::kOneThread, out, [&](rift::Dart d_f, std::vector<rift::TearCandidate>& found) {
+  cells_.collect(g, rift::Orbit{0, 1}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_f, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
     const rift::Real measure = [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, (e_f_shear[d_c]).norm()); }); return acc0; }();
     const rift::Real threshold = p_.threshold;
@@ -405,7 +405,7 @@ void ElementStressCriterion::initialise(rift::GMap& g) {
 }
 
 void ElementStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  cells_.collect(g, rift::Orbit{0, 1}, rift::generated::CollectOn::kOneThread, out, [&](rift::Dart d_f, std::vector<rift::TearCandidate>& found) {
+  cells_.collect(g, rift::Orbit{0, 1}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_f, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
     const rift::Real l_area = (0.5 * (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm());
     const rift::Mat3 l_m = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc0; }();
@@ -437,7 +437,7 @@ void InteractionForceCriterion::initialise(rift::GMap& g) {
 }
 
 void InteractionForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kOneThread, out, [&](rift::Dart d_v, std::vector<rift::TearCandidate>& found) {
+  cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_v, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
     const rift::Real measure = std::max<rift::Real>([&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, std::max<rift::Real>((e_f_membrane[d_c]).norm(), (e_f_shear[d_c]).norm())); }); return acc0; }(), [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&](rift::Dart d_x) { acc0 = std::max<rift::Real>(acc0, (e_f_stretch[d_x]).norm()); }); return acc0; }());
     const rift::Real threshold = p_.threshold;
@@ -473,7 +473,7 @@ void VertexStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
     const rift::Mat3 s5 = (rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished();
     rift::Mat3 s0 = rift::Mat3::Zero();
     rift::Real s1 = rift::Real(0);
-    for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s2 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Real { return collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}); }); const rift::Real s3 = (0.5 * (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm()); const rift::Mat3 s4 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); s0 += (s2 * ((s3 > 0.0) ? rift::Mat3((((-0.5) / s3) * (s4 + (s4).transpose()))) : rift::Mat3(s5))); s1 += s2; });
+    for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s2 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Real { return fold_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}, rift::Orbit{1}); }); const rift::Real s3 = (0.5 * (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm()); const rift::Mat3 s4 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); s0 += (s2 * ((s3 > 0.0) ? rift::Mat3((((-0.5) / s3) * (s4 + (s4).transpose()))) : rift::Mat3(s5))); s1 += s2; });
     const rift::Mat3 l_weighted = s0;
     const rift::Real l_mass = s1;
     const rift::Mat3 l_s = ((l_mass > 0.0) ? rift::Mat3((l_weighted / l_mass)) : rift::Mat3(s5));
@@ -526,7 +526,7 @@ void VertexEnergyCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
     c.at = d_v;
     c.measure = measure - threshold;
     const rift::Mat3 s8 = (rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished();
-    const rift::Mat3 l_weighted = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s5 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s6 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Real { return collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}); }); const rift::Mat3 s7 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); acc0 += ((s5 > 0.0) ? rift::Mat3((((s6 * 2.0) / s5) * s7)) : rift::Mat3(s8)); }); return acc0; }();
+    const rift::Mat3 l_weighted = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s5 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s6 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Real { return fold_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}, rift::Orbit{1}); }); const rift::Mat3 s7 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); acc0 += ((s5 > 0.0) ? rift::Mat3((((s6 * 2.0) / s5) * s7)) : rift::Mat3(s8)); }); return acc0; }();
     rift::generated::put_payload<rift::Vec3>(c, 0, symmetric_max_eigenvector(((-0.5) * (l_weighted + (l_weighted).transpose()))));  // normal
     rift::generated::put_payload<rift::Vec3>(c, 3, e_position[d_v]);  // point
     found.push_back(c);
@@ -595,8 +595,8 @@ void AtomicEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCan
     const rift::Vec3 l_ab = (s0 - e_position[d_a]);
     const rift::Vec3 l_p1 = e_position[g.alpha(g.alpha(d_a, 1), 0)];
     const rift::Vec3 l_p2 = e_position[g.alpha(g.alpha(d_b, 1), 0)];
-    const rift::Vec3 l_f1 = (((((collect_sum(g, e_f_stretch, d_a, rift::Orbit{1}) + collect_sum(g, e_f_stretch, g.alpha(d_a, 0), rift::Orbit{1})) + e_f_shear[d_a]) + e_f_shear[g.alpha(d_a, 0)]) + e_f_membrane[d_a]) + e_f_membrane[g.alpha(d_a, 0)]);
-    const rift::Vec3 l_f2 = (((((collect_sum(g, e_f_stretch, d_b, rift::Orbit{1}) + collect_sum(g, e_f_stretch, g.alpha(d_b, 0), rift::Orbit{1})) + e_f_shear[d_b]) + e_f_shear[g.alpha(d_b, 0)]) + e_f_membrane[d_b]) + e_f_membrane[g.alpha(d_b, 0)]);
+    const rift::Vec3 l_f1 = (((((fold_sum(g, e_f_stretch, d_a, rift::Orbit{1}, rift::Orbit{}) + fold_sum(g, e_f_stretch, g.alpha(d_a, 0), rift::Orbit{1}, rift::Orbit{})) + e_f_shear[d_a]) + e_f_shear[g.alpha(d_a, 0)]) + e_f_membrane[d_a]) + e_f_membrane[g.alpha(d_a, 0)]);
+    const rift::Vec3 l_f2 = (((((fold_sum(g, e_f_stretch, d_b, rift::Orbit{1}, rift::Orbit{}) + fold_sum(g, e_f_stretch, g.alpha(d_b, 0), rift::Orbit{1}, rift::Orbit{})) + e_f_shear[d_b]) + e_f_shear[g.alpha(d_b, 0)]) + e_f_membrane[d_b]) + e_f_membrane[g.alpha(d_b, 0)]);
     const rift::Vec3 l_mid = (0.5 * (e_position[d_a] + s0));
     const bool l_contract = (((l_f1).dot((l_p1 - l_mid)) > 0.0) && ((l_f2).dot((l_p2 - l_mid)) > 0.0));
     const rift::Vec3 l_across = (l_ab).cross(((l_ab).cross((l_p1 - e_position[d_a])) + ((l_p2 - e_position[d_a])).cross(l_ab)));
