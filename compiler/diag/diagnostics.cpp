@@ -7,7 +7,8 @@ namespace rift::diag {
 
 const std::vector<std::string>& known_warnings() {
   static const std::vector<std::string> kNames = {"unused-variable", "unused-parameter",
-                                                  "unused-function", "float-equality"};
+                                                  "unused-function", "float-equality",
+                                                  "import-without-code"};
   return kNames;
 }
 

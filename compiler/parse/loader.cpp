@@ -108,6 +108,16 @@ class Loader {
                        "be imported");
       return;
     }
+    // A pack that generates no code of its own (embeddings, parameters,
+    // functions) has nothing to reference: importing it would only build an
+    // empty library beside this pack.
+    if (file.rules.empty() && file.scripts.empty() && file.interactions.empty() &&
+        file.criteria.empty() && file.inits.empty()) {
+      diags_.warning("import-without-code", import.loc,
+                     "pack '" + file.pack.text +
+                         "' declares no rule, script, interaction, criterion or init, so there "
+                         "is nothing to reference: 'include' it instead");
+    }
     if (ast::declares_only_functions(file)) return;  // reads no G-map: any dimension
     if (have_dimension_ && file.dimension != program_.dimension) {
       diags_
