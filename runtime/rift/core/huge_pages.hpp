@@ -23,6 +23,25 @@ inline constexpr std::size_t kHugePageAdviceBytes = std::size_t{4} << 20;
 /// with transparent huge pages. Only a hint: does nothing where unsupported.
 void advise_huge_pages(const void* data, std::size_t bytes);
 
+/// v.reserve(n), except that a large array gets a fresh buffer advised for
+/// huge pages (its elements move there): for arrays filled by push_back up to
+/// a known bound, which then neither move nor fault in 4 KiB at a time. Only
+/// the pages written become resident, so a generous bound costs address
+/// space, not memory.
+template <class T, class A>
+void reserve_huge(std::vector<T, A>& v, std::size_t n) {
+  if (n <= v.capacity()) return;
+  if (n * sizeof(T) < kHugePageAdviceBytes) {
+    v.reserve(n);
+    return;
+  }
+  std::vector<T, A> bigger;
+  bigger.reserve(n);
+  advise_huge_pages(bigger.data(), bigger.capacity() * sizeof(T));
+  bigger.insert(bigger.end(), std::make_move_iterator(v.begin()), std::make_move_iterator(v.end()));
+  v.swap(bigger);
+}
+
 /// v.resize(n, fill), except that a large array that must move to a new
 /// buffer gets one advised for huge pages before anything is written to it.
 /// The capacity grows geometrically, as resize's would.

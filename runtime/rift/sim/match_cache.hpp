@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "rift/core/huge_pages.hpp"
 #include "rift/gmap/gmap.hpp"
 
 namespace rift {
@@ -36,7 +37,13 @@ class MatchCache {
   void build(const GMap& map, Orbit support, MatchFn&& match, ChooseFn&& choose) {
     matches_.clear();
     owners_.clear();
-    entry_of_dart_.assign(map.capacity(), kNone);
+    // At most one match per dart: reserved once (huge pages for a large
+    // map), so that building neither moves the arrays nor faults them in
+    // page by page; only what the matches fill becomes resident.
+    reserve_huge(matches_, map.capacity());
+    reserve_huge(owners_, map.capacity());
+    entry_of_dart_.clear();
+    grow_huge(entry_of_dart_, map.capacity(), kNone);
     map.for_each_cell(support, [&](Dart d) {
       const Dart owner = choose(map, d);
       Match m{};
