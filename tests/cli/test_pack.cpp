@@ -3,6 +3,7 @@
 // a criterion separating the faces of over-stretched edges, in 2D and 3D.
 #include "../sim/test_spring_model.hpp"
 #include "cli/register_packs.hpp"
+#include "rift/core/interrupt.hpp"
 #include "rift/pack/pack.hpp"
 
 namespace rift::test {
@@ -40,6 +41,33 @@ class LongEdge final : public Criterion {
   Embedding<Vec3> position_;
 };
 
+/// A criterion that is slow on purpose: at every vertex it walks the whole
+/// of each element around it (a 300,000-gon's 600,000 darts per vertex), as
+/// the generated criteria did before folds walked by slot, and polls Ctrl-C
+/// once per vertex, as they do. It never proposes a tear. The command line's
+/// test of an interrupt inside a long step uses it.
+class SlowWalk final : public Criterion {
+ public:
+  const std::string& name() const override { return name_; }
+  void initialise(GMap& map) override { n_ = map.dimension(); }
+  void collect(const GMap& map, std::vector<TearCandidate>& /*out*/) const override {
+    std::size_t darts = 0;
+    map.for_each_cell(Orbit::cell(0, n_), [&](Dart d) {
+      throw_if_interrupted();
+      map.for_each_in_orbit(d, Orbit::cell(n_, n_), [&](Dart) { ++darts; });
+    });
+    walked_ = darts;
+  }
+  bool apply(GMap& /*map*/, const TearCandidate& /*c*/, std::vector<Dart>& /*touched*/) override {
+    return false;
+  }
+
+ private:
+  std::string name_ = "test_slow_walk";
+  int n_ = 2;
+  mutable std::size_t walked_ = 0;  // kept, so that the walks are not optimised away
+};
+
 class TestPack final : public Pack {
  public:
   explicit TestPack(int dimension)
@@ -52,6 +80,8 @@ class TestPack final : public Pack {
     catalog_.criteria.push_back({"test_long_edge",
                                  "separates the elements of an edge longer than the limit",
                                  {{"limit", ValueType::kReal, std::nullopt, "m", true, false}}});
+    catalog_.criteria.push_back(
+        {"test_slow_walk", "walks every element around every vertex (slow on purpose)", {}});
   }
   const std::string& name() const override { return name_; }
   int dimension() const override { return dimension_; }
@@ -64,6 +94,7 @@ class TestPack final : public Pack {
     return std::make_unique<HalfEdgeSprings>(use.real("stiffness"), use.real("damping"));
   }
   std::unique_ptr<Criterion> make_criterion(const ComponentUse& use) const override {
+    if (use.name == "test_slow_walk") return std::make_unique<SlowWalk>();
     return std::make_unique<LongEdge>(use.real("limit"));
   }
   std::unique_ptr<Rule> make_rule(const std::string&) const override { return nullptr; }
