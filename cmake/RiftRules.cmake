@@ -10,7 +10,72 @@
 #
 # riftc writes a dependency file, so editing a .rules file (or a file it
 # includes) regenerates and rebuilds only this pack.
+#
+# A pack that imports another (`import "topology2d.rules";`) calls that pack's
+# generated code: its library links the imported pack's library, found by the
+# pack name of the imported file's header, at the end of the directory that
+# made it: a target made by rift_add_rule_pack for that pack (in any order),
+# else rift's installed rift::pack_<name>, else a library of its own made from
+# the imported file (rift_imported_pack_<name>). Registering the pack
+# registers the packs it imports, so a simulator needs only list it.
 include_guard(GLOBAL)
+
+# The name a rule file declares with `pack NAME dimension N;`, or "" when it has none.
+function(_rift_rules_pack_name file out_var)
+  file(STRINGS "${file}" header REGEX "^[ \t]*pack[ \t]+[A-Za-z_][A-Za-z0-9_]*" LIMIT_COUNT 1)
+  if(header MATCHES "pack[ \t]+([A-Za-z_][A-Za-z0-9_]*)")
+    set(${out_var} "${CMAKE_MATCH_1}" PARENT_SCOPE)
+  else()
+    set(${out_var} "" PARENT_SCOPE)
+  endif()
+endfunction()
+
+# Links the pack library `target` with the library of the pack `pack`
+# (imported from `file`): deferred to the end of the directory, so that the
+# imported pack may be made after the importing one.
+function(_rift_link_imported_pack target pack file)
+  get_property(imported GLOBAL PROPERTY RIFT_PACK_TARGET_${pack})
+  if(NOT imported)
+    if(TARGET rift::pack_${pack})
+      set(imported rift::pack_${pack})
+    else()
+      set(imported rift_imported_pack_${pack})
+      rift_add_rule_pack(${imported} RULES "${file}")
+    endif()
+  endif()
+  target_link_libraries(${target} PUBLIC ${imported})
+endfunction()
+
+# Every `import "FILE";` of `rules_file`, resolved as riftc resolves it (next
+# to the file, then in RIFT_RULES_INCLUDE_DIRS): links `target` with each
+# imported pack's library.
+function(_rift_link_imports target rules_file)
+  file(STRINGS "${rules_file}" lines REGEX "^[ \t]*import[ \t]+\"[^\"]+\"")
+  get_filename_component(dir "${rules_file}" DIRECTORY)
+  foreach(line IN LISTS lines)
+    if(NOT line MATCHES "import[ \t]+\"([^\"]+)\"")
+      continue()
+    endif()
+    set(name "${CMAKE_MATCH_1}")
+    set(found "")
+    foreach(candidate_dir IN ITEMS "${dir}" ${RIFT_RULES_INCLUDE_DIRS})
+      if(EXISTS "${candidate_dir}/${name}")
+        get_filename_component(found "${candidate_dir}/${name}" ABSOLUTE)
+        break()
+      endif()
+    endforeach()
+    if(NOT found)
+      continue()  # riftc reports it, at the import
+    endif()
+    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${found}")
+    _rift_rules_pack_name("${found}" pack)
+    if(NOT pack)
+      continue()  # not a pack: riftc reports it
+    endif()
+    cmake_language(EVAL CODE
+      "cmake_language(DEFER CALL _rift_link_imported_pack [[${target}]] [[${pack}]] [[${found}]])")
+  endforeach()
+endfunction()
 
 function(_rift_riftc_command out_var)
   if(TARGET riftc)
@@ -73,6 +138,15 @@ function(rift_add_rule_pack target)
   target_compile_features(${target} PUBLIC cxx_std_20)
   set_target_properties(${target} PROPERTIES RIFT_PACK_NAME "${pack}"
                                              RIFT_PACK_HEADER "${out_dir}/${pack}.hpp")
+  get_property(known GLOBAL PROPERTY RIFT_PACK_TARGET_${pack})
+  if(NOT known)
+    set_property(GLOBAL PROPERTY RIFT_PACK_TARGET_${pack} ${target})
+  endif()
+  foreach(file IN LISTS rules)
+    if(EXISTS "${file}")
+      _rift_link_imports(${target} "${file}")
+    endif()
+  endforeach()
   if(COMMAND rift_set_warnings)
     rift_set_warnings(${target})
   endif()

@@ -217,9 +217,15 @@ struct PackParam {
   ExprPtr value;
 };
 
+/// `include "f.rules";` reads f's declarations into this pack (a header:
+/// common2d.rules, laws.rules). `import "f.rules";` (import = true) makes the
+/// declarations of pack f visible while f keeps them: its rules, scripts,
+/// interactions, criteria and inits are generated and registered by f's own
+/// pack, and this pack calls f's generated code.
 struct Include {
   std::string path;
   Location loc;
+  bool import = false;
 };
 
 /// One parsed file.
@@ -229,6 +235,10 @@ struct File {
   /// (parse/state_embeddings.hpp); the pack's own files are not builtin.
   bool builtin = false;
   bool included = false;  // read through an `include`, not named to riftc
+  /// The imported pack that owns this file's rules, scripts, interactions,
+  /// criteria and inits (its pack header's name); empty for the pack riftc
+  /// compiles. A file an imported pack includes belongs to that pack.
+  std::string owner;
   bool has_header = false;
   Ident pack;
   std::string description;  // the `///` comment above the header

@@ -72,6 +72,9 @@ void check_generated_names(const ast::Program& program, const resolve::Symbols& 
         .notes.push_back({it->second->loc, "'" + it->second->text + "' declared here"});
   };
   for (const ast::File& file : program.files) {
+    // An imported pack's classes live in its own namespace (and are checked
+    // when it compiles); its names clash with ours in resolve already.
+    if (!file.owner.empty()) continue;
     for (const ast::Rule& r : file.rules)
       add(r.name, "Rule");
     for (const ast::Script& sc : file.scripts)

@@ -32,6 +32,8 @@ void unused_params(const std::vector<ast::Param>& params, const char* kind,
 void check_unused(const ast::Program& program, const resolve::Symbols& symbols,
                   diag::Diagnostics& diags) {
   for (const ast::File& file : program.files) {
+    // An imported pack's declarations are reported when that pack compiles.
+    if (!file.owner.empty()) continue;
     for (const ast::Function& f : file.functions) {
       unused_lets(f.lets, symbols, diags);
       unused_params(f.params, "function", f.name.text, symbols, diags);

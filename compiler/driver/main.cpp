@@ -16,10 +16,10 @@ implements their rules, interactions and criteria into OUTDIR.
 options:
   -o OUTDIR       write generated C++ into OUTDIR (without it riftc only checks):
                   OUTDIR/PACK.hpp and OUTDIR/PACK.cpp, PACK being the first file's pack
-  --depfile FILE  with -o, also write the files read (includes too) as a
+  --depfile FILE  with -o, also write the files read (includes and imports too) as a
                   Make-style dependency file, for build systems
-  -I DIR          also look for included files in DIR (after the including
-                  file's own folder); may be repeated
+  -I DIR          also look for included and imported files in DIR (after the
+                  including file's own folder); may be repeated
   --no-line-directives
                   no #line directives into the .rules files: the output then
                   does not change when lines are added to them (diffable)

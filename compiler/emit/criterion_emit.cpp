@@ -243,7 +243,7 @@ void emit_criterion(Writer& w, const lower::CriterionPlan& plan, const PackModel
     }
     write_pattern(w, plan, read, "return false;");
   }
-  w.line(crit.rule.text + "_args args;");
+  w.line(callee_args(model, crit.rule.text) + " args;");
   for (const lower::PayloadField& f : plan.payload) {
     w.line("args." + member_name(f.param) + " = rift::generated::payload_as<" + cpp_type(f.type) +
            ">(candidate, " + std::to_string(f.offset) + ");");
@@ -252,7 +252,8 @@ void emit_criterion(Writer& w, const lower::CriterionPlan& plan, const PackModel
   for (std::size_t k = 0; k < crit.apply_hooks.size(); ++k)
     hooks += (k ? ", " : "") + dart_name(crit.apply_hooks[k].text);
   w.line("const rift::Dart hooks[] = {" + hooks + "};");
-  w.line("return " + rule_function(crit.rule.text) + "(g, hooks, args, pack_, &touched);");
+  w.line("return " + callee_function(model, crit.rule.text) + "(g, hooks, args, " +
+         callee_params(model, crit.rule.text, "pack_") + ", &touched);");
   w.close();
   w.line();
 }

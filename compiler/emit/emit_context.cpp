@@ -4,6 +4,28 @@
 
 namespace rift::emit {
 
+namespace {
+
+std::string callee_scope(const PackModel& model, const std::string& callee) {
+  const auto it = model.plan->imported_callees.find(callee);
+  return it == model.plan->imported_callees.end() ? "" : "rift::packs::" + it->second + "::";
+}
+
+}  // namespace
+
+std::string callee_args(const PackModel& model, const std::string& callee) {
+  return callee_scope(model, callee) + callee + "_args";
+}
+
+std::string callee_function(const PackModel& model, const std::string& callee) {
+  return callee_scope(model, callee) + rule_function(callee);
+}
+
+std::string callee_params(const PackModel& model, const std::string& callee,
+                          const std::string& pack_params) {
+  return model.plan->imported_callees.count(callee) ? "{}" : pack_params;
+}
+
 std::string embedding_storage(const PackModel& model, const std::string& name) {
   return storage_type(model.plan->embedding_types.at(name));
 }

@@ -23,6 +23,18 @@ struct PackModel {
   bool line_directives = true;            // #line into the .rules files
 };
 
+/// The rule or script `callee` as an apply calls it: its arguments struct
+/// (`split_vertex_args`) and its function (`apply_split_vertex`), qualified
+/// with the namespace of the imported pack that generates it, if any
+/// (`rift::packs::topology2d::apply_split_vertex`).
+std::string callee_args(const PackModel& model, const std::string& callee);
+std::string callee_function(const PackModel& model, const std::string& callee);
+/// The pack parameters a call of `callee` passes: `pack_params` for this
+/// pack's own rules and scripts; an imported pack's defaults (`{}`), the values
+/// its own Pack uses, as a scene cannot set pack parameters.
+std::string callee_params(const PackModel& model, const std::string& callee,
+                          const std::string& pack_params);
+
 /// Name of the generated bool embedding on <> that tags the first dart of
 /// each support orbit of a `tagged` interaction.
 std::string tag_embedding(std::string_view interaction);

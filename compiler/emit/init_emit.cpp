@@ -75,6 +75,10 @@ void emit_initialisers(Writer& w, const PackModel& model) {
   w.open("void run_initialisers(rift::GMap& g, const Params& params) {");
   w.line("(void)g;");
   w.line("(void)params;");
+  // An imported pack's inits first, as its Pack would run them: what this
+  // pack's inits and the imported rules read is then computed.
+  for (const std::string& imported : model.plan->imports)
+    w.line("rift::packs::" + imported + "::run_initialisers(g);");
   for (const lower::InitialiserPlan& init : model.plan->initialisers) {
     const lower::Write& a = init.write;
     const RenderContext ctx = dart_context(init.body);

@@ -31,8 +31,8 @@ int level_of(std::uint32_t fold_vars) {
 bool reads_dart(const ir::Graph& g, ExprId root, int var) {
   bool reads = false;
   ir::visit(g, root, [&](const Node& n) {
-    const bool placed = n.op == Op::Position || n.op == Op::Velocity || n.op == Op::Read ||
-                        n.op == Op::Collect || n.op == Op::Fold;
+    const bool placed =
+        n.op == Op::Position || n.op == Op::Velocity || n.op == Op::Read || n.op == Op::Fold;
     reads = reads || (placed && n.place.node == var);
   });
   return reads;
@@ -304,10 +304,6 @@ std::string BodyRenderer::node(ExprId id) {
     }
     case Op::Call:
       return call(n);
-    case Op::Collect:
-      return std::string("collect_") + std::string(ir::aggregate_name(n.aggregate)) + "(" +
-             ctx_.map + ", " + embedding_var(n.embedding) + ", " + place(n.place) + ", " +
-             orbit_code(n.orbit) + ")";
     case Op::Fold:
       return fold(n);
     default: {
@@ -341,6 +337,7 @@ std::string render_place(const ir::Place& p, const RenderContext& ctx) {
 /// An immediately invoked lambda: one dart per sub-orbit, the body per dart,
 /// the values shared inside the body computed at its top.
 std::string BodyRenderer::fold(const Node& n) {
+  if (std::string short_form = fold_of_embedding(n); !short_form.empty()) return short_form;
   const bool mean = n.aggregate == ir::Aggregate::Mean;
   const bool count = n.aggregate == ir::Aggregate::Count;
   // Folds nest: each gets its own names, so that no inner one shadows another.
@@ -386,6 +383,25 @@ std::string BodyRenderer::fold(const Node& n) {
     out += std::string(" return ") + acc + ";";
   }
   return out + " }()";
+}
+
+/// A fold whose body only reads an embedding at its dart, or counts every
+/// sub-orbit (the short form `OP E over <o>(d)` lowers to those): one call of
+/// the runtime's fold_OP / count_sub_orbits. Empty for any other fold.
+std::string BodyRenderer::fold_of_embedding(const Node& n) {
+  const Node& body = g_[n.a];
+  const std::string walk = place(n.place) + ", " + orbit_code(n.outer) + ", " + orbit_code(n.orbit);
+  if (n.aggregate == ir::Aggregate::Count) {
+    if (body.op != Op::Literal || body.type != Type::Bool || !body.boolean) return {};
+    return std::string("count_sub_orbits(") + ctx_.map + ", " + walk + ")";
+  }
+  // A mean of integers reads them through their conversion to real.
+  const Node& read = body.op == Op::ToReal ? g_[body.a] : body;
+  if (ctx_.read || read.op != Op::Read || read.place.node != n.var || !read.place.hops.empty())
+    return {};
+  if (body.op == Op::ToReal && n.aggregate != ir::Aggregate::Mean) return {};
+  return std::string("fold_") + std::string(ir::aggregate_name(n.aggregate)) + "(" + ctx_.map +
+         ", " + embedding_var(read.embedding) + ", " + walk + ")";
 }
 
 std::string BodyRenderer::dart_parameter(int var, const std::vector<ExprId>& bodies) const {

@@ -89,6 +89,8 @@ class BodyRenderer {
   std::string memoised(ir::ExprId id, int level, std::size_t memo, std::size_t k);
   /// Computes the folds of `group` (one walk) into statement-level locals.
   void fused(const std::vector<ir::ExprId>& group);
+  /// A fold of an embedding's values as one runtime call, or empty.
+  std::string fold_of_embedding(const ir::Node& n);
   /// The name of a fold's dart parameter, commented out when no body reads it.
   std::string dart_parameter(int var, const std::vector<ir::ExprId>& bodies) const;
   std::vector<ir::ExprId> bodies_of(const std::vector<ir::ExprId>& group) const;

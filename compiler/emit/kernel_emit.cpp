@@ -246,7 +246,7 @@ void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
     std::vector<bool> used(plan.kernel.nodes.size(), false);
     used[static_cast<std::size_t>(init.node)] = true;
     ir::visit(b.graph, init.value, [&](const ir::Node& x) {
-      if ((x.op == ir::Op::Read || x.op == ir::Op::Collect || x.op == ir::Op::Fold) &&
+      if ((x.op == ir::Op::Read || x.op == ir::Op::Fold) &&
           static_cast<std::size_t>(x.place.node) < used.size()) {
         used[static_cast<std::size_t>(x.place.node)] = true;
       }

@@ -20,20 +20,19 @@ std::string policy_of(const ast::Embedding& e) {
 
 using ast::orbit_text;
 
+// This pack's own criteria and scripts (lower::PackPlan), in source order:
+// an imported pack generates and registers its own.
 template <class F>
 void for_each_criterion(const PackModel& m, F&& f) {
-  for (const ast::File& file : m.program->files) {
-    for (const ast::Criterion& c : file.criteria)
-      f(c);
-  }
+  for (const lower::CriterionPlan& c : m.plan->criteria)
+    f(*c.criterion);
 }
 
-// Appends the embeddings `root` reads (Read and Collect nodes) that `names`
+// Appends the embeddings `root` reads (Read, Position, Velocity nodes) that `names`
 // does not hold yet, in order of first use.
 void add_embedding_reads(const ir::Graph& g, ir::ExprId root, std::vector<std::string>& names) {
   ir::visit(g, root, [&](const ir::Node& n) {
-    const bool reads = n.op == ir::Op::Read || n.op == ir::Op::Position ||
-                       n.op == ir::Op::Velocity || n.op == ir::Op::Collect;
+    const bool reads = n.op == ir::Op::Read || n.op == ir::Op::Position || n.op == ir::Op::Velocity;
     if (reads && std::find(names.begin(), names.end(), n.embedding) == names.end())
       names.push_back(n.embedding);
   });
@@ -49,10 +48,8 @@ std::string name_list(const std::vector<std::string>& names) {
 
 template <class F>
 void for_each_script(const PackModel& m, F&& f) {
-  for (const ast::File& file : m.program->files) {
-    for (const ast::Script& s : file.scripts)
-      f(s);
-  }
+  for (const lower::ScriptPlan& s : m.plan->scripts)
+    f(*s.script);
 }
 
 /// Calls f on every embedding the pack declares on a map (lower::PackPlan::declared).
@@ -172,7 +169,8 @@ void write_header(Writer& w, const PackModel& m) {
   w.line();
   w.line("}  // namespace rift::packs::" + m.pack);
   w.line();
-  w.line("/// Adds the pack to a simulator's registry (rift_add_simulator calls it).");
+  w.line("/// Adds the pack, unless registered already, and the packs it imports to a simulator's");
+  w.line("/// registry (rift_add_simulator calls it).");
   w.line("void " + register_function(m.pack) + "(rift::PackRegistry& registry);");
 }
 
@@ -241,10 +239,12 @@ void write_pack_class(Writer& w, const PackModel& m) {
     // reads: the set-up stores the forces any of them reads (scene_setup.hpp).
     for (const lower::PayloadField& f : plan.payload)
       add_embedding_reads(plan.body.graph, f.value, reads);
-    for (const lower::ScriptPlan& script : m.plan->scripts) {
-      if (script.script->name.text != c.rule.text) continue;
-      for (const std::string& e : script.embeddings) {
-        if (std::find(reads.begin(), reads.end(), e) == reads.end()) reads.push_back(e);
+    for (const auto* scripts : {&m.plan->scripts, &m.plan->imported_scripts}) {
+      for (const lower::ScriptPlan& script : *scripts) {
+        if (script.script->name.text != c.rule.text) continue;
+        for (const std::string& e : script.embeddings) {
+          if (std::find(reads.begin(), reads.end(), e) == reads.end()) reads.push_back(e);
+        }
       }
     }
     w.close("}, kDimension, {}, " + name_list(reads) + "});");
@@ -367,6 +367,11 @@ GeneratedPack generate_pack(const PackModel& m, const diag::SourceManager& sourc
         "<utility>", "<variant>", "<vector>", "<Eigen/Dense>", "\"rift/generated/support.hpp\""}) {
     w.line(std::string("#include ") + inc);
   }
+  // The imported packs' generated headers: their rules and scripts are
+  // called, not copied (their pack libraries are linked with this one).
+  if (!m.plan->imports.empty()) w.line();
+  for (const std::string& imported : m.plan->imports)
+    w.line("#include \"" + imported + ".hpp\"");
   w.line();
   w.line("namespace rift::packs::" + m.pack + " {");
   w.line();
@@ -403,7 +408,12 @@ GeneratedPack generate_pack(const PackModel& m, const diag::SourceManager& sourc
   w.line("}  // namespace rift::packs::" + m.pack);
   w.line();
   w.open("void " + register_function(m.pack) + "(rift::PackRegistry& registry) {");
+  // Once, however many simulators' lists and importing packs name it; then
+  // the packs it imports, whose rules its criteria and scripts apply.
+  w.line("if (registry.find(" + quote(m.pack) + ")) return;");
   w.line("registry.add(std::make_unique<rift::packs::" + m.pack + "::Pack>());");
+  for (const std::string& imported : m.plan->imports)
+    w.line(register_function(imported) + "(registry);");
   w.close();
   out.source = w.str();
   return out;

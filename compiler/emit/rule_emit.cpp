@@ -44,7 +44,7 @@ void open_row_loop(Writer& w, const std::vector<std::string>& side, bool right,
   for (ir::ExprId root : roots) {
     ir::visit(body.graph, root, [&](const ir::Node& n) {
       const bool placed = n.op == ir::Op::Position || n.op == ir::Op::Velocity ||
-                          n.op == ir::Op::Read || n.op == ir::Op::Collect || n.op == ir::Op::Fold;
+                          n.op == ir::Op::Read || n.op == ir::Op::Fold;
       const auto v = static_cast<std::size_t>(n.place.node);
       if (placed && n.place.node >= 0 && v < used.size()) used[v] = true;
     });

@@ -93,7 +93,7 @@ void emit_script(Writer& w, const lower::ScriptPlan& plan, const PackModel& mode
       }
       case lower::ScriptStep::Kind::Apply: {
         open_each(w, st, body, ctx);
-        w.line(st.rule + "_args call;");
+        w.line(callee_args(model, st.rule) + " call;");
         for (const lower::ScriptStep::Arg& a : st.args) {
           write_sourced(
               w, a.loc,
@@ -103,7 +103,8 @@ void emit_script(Writer& w, const lower::ScriptPlan& plan, const PackModel& mode
         for (std::size_t k = 0; k < st.hooks.size(); ++k)
           hooks += (k ? ", " : "") + render_place(st.hooks[k], ctx);
         w.line("const rift::Dart at[] = {" + hooks + "};");
-        w.line("if (" + rule_function(st.rule) + "(g, at, call, params, touched)) applied = true;");
+        w.line("if (" + callee_function(model, st.rule) + "(g, at, call, " +
+               callee_params(model, st.rule, "params") + ", touched)) applied = true;");
         close_each(w, st);
         break;
       }

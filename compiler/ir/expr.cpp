@@ -241,8 +241,6 @@ std::string_view op_name(Op op) {
       return "index";
     case Op::Call:
       return "call";
-    case Op::Collect:
-      return "collect";
     case Op::Fold:
       return "fold";
   }
@@ -297,9 +295,6 @@ std::string to_text(const Graph& g, ExprId id, const std::vector<std::string>& n
       }
       return out + ")";
     }
-    case Op::Collect:
-      return cat({aggregate_name(n.aggregate), " ", n.embedding, " over ", orbit_text(n.orbit), "(",
-                  place_text(n.place, node_names), ")"});
     case Op::Fold: {
       const std::string var = n.var >= 0 && static_cast<std::size_t>(n.var) < node_names.size()
                                   ? node_names[static_cast<std::size_t>(n.var)]

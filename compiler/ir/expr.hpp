@@ -72,8 +72,11 @@ enum class Op : std::uint8_t {
   Index,  // a[i] of a vec3, a[i, j] of a mat3 (indices int)
   Call,   // built-in `fn`, operands converted to its chosen overload
   // ---- over the map (never in a force loop)
-  Collect,  // `op` of `embedding` over orbit `orbit` of the dart at `place`
-  Fold,  // `op` of operand 0 for each sub-orbit `orbit` (dart variable `var`) in `outer` of `place`
+  // `op` of operand 0 for each sub-orbit `orbit` (dart variable `var`) in
+  // `outer` of `place`. The language's one aggregation: its short form
+  // `sum E over <o>(d)` is the fold of `x.E` over the sub-orbits <e ∩ o> of
+  // <o>(d), e the orbit E is attached to (lower/expr_lower.cpp).
+  Fold,
 };
 
 /// The built-in functions, one per name of the language (check/builtins.cpp).
@@ -114,7 +117,7 @@ enum class Builtin : std::uint8_t {
   StopGradient,  // its operand's value, held constant by differentiation
 };
 
-/// Aggregations of Collect and Fold.
+/// Aggregations of a Fold.
 enum class Aggregate : std::uint8_t { Sum, Mean, Min, Max, Count };
 
 /// A dart a read starts from: `node@hops...`, with `node` an index into the
@@ -139,17 +142,17 @@ struct Node {
   bool boolean = false;
   // Call
   Builtin fn = Builtin::Sqrt;
-  // Position, Velocity, Read, Collect, Fold
+  // Position, Velocity, Read, Fold
   Place place;
-  std::string embedding;  // Read, Collect
+  std::string embedding;  // Read
   // Param, PackParam: the name as written; Let: its name, for rendering
   std::string name;
   int index = -1;  // Let: index into Body::lets
-  // Collect, Fold
+  // Fold
   Aggregate aggregate = Aggregate::Sum;
-  std::vector<int> orbit;  // Collect: the orbit; Fold: the sub-orbit
-  std::vector<int> outer;  // Fold
-  int var = -1;            // Fold: the node index its dart variable takes
+  std::vector<int> orbit;  // the sub-orbit
+  std::vector<int> outer;  // the orbit walked
+  int var = -1;            // the node index its dart variable takes
   diag::Location loc;      // where the expression is written
   /// What the source calls this value, when it is the value of a function's
   /// let inlined at a call (`spring_force_d`): the renderer names the local

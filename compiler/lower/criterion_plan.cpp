@@ -1,10 +1,29 @@
 #include "lower/criterion_plan.hpp"
 
+#include <algorithm>
+
 #include "lower/expr_lower.hpp"
 #include "lower/orbit_memo.hpp"
 #include "lower/share.hpp"
 
 namespace rift::lower {
+
+namespace {
+
+bool contains(const std::vector<int>& outer, const std::vector<int>& inner) {
+  return std::all_of(inner.begin(), inner.end(), [&](int d) {
+    return std::find(outer.begin(), outer.end(), d) != outer.end();
+  });
+}
+
+/// Whether the runtime walks the sub-orbits <sub> of <outer> without the
+/// map's marks: <outer> is one sub-orbit, or <sub> lies inside an <outer> of
+/// at most two links (rift/generated/sub_orbits.hpp, walks_without_marks).
+bool walks_without_marks(const std::vector<int>& outer, const std::vector<int>& sub) {
+  return contains(sub, outer) || (contains(outer, sub) && outer.size() <= 2);
+}
+
+}  // namespace
 
 CriterionPlan plan_criterion(const ast::Criterion& crit, const std::vector<ast::Param>& rule_params,
                              const resolve::Symbols& symbols, const check::ExprTypes& types) {
@@ -66,10 +85,12 @@ CriterionPlan plan_criterion(const ast::Criterion& crit, const std::vector<ast::
     const ast::Embedding* e = symbols.embedding(name);
     return e ? e->orbit.dims : std::vector<int>{};
   });
+  // Memos and the map's marks are state of the whole map: the cells are
+  // collected on every core only without them.
   plan.parallel_collect = plan.memos.empty();
   for (std::size_t i = 0; i < body.graph.size(); ++i) {
     const ir::Node& n = body.graph[static_cast<ir::ExprId>(i)];
-    if (n.op == ir::Op::Fold || (n.op == ir::Op::Collect && n.orbit.size() > 2))
+    if (n.op == ir::Op::Fold && !walks_without_marks(n.outer, n.orbit))
       plan.parallel_collect = false;
   }
   return plan;

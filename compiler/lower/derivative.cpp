@@ -34,7 +34,7 @@ bool without_derivative(Builtin f) {
 }
 
 bool reads_state_through_map(const Node& n) {
-  return (n.op == Op::Read || n.op == Op::Collect) &&
+  return n.op == Op::Read &&
          (n.embedding == check::kPositionEmbedding || n.embedding == check::kVelocityEmbedding);
 }
 
@@ -93,7 +93,7 @@ class Activity {
               "elements hold their rotation so)");
       fail(n, std::move(why));
     }
-    if (n.op == Op::Fold || n.op == Op::Collect) {
+    if (n.op == Op::Fold) {
       fail(n,
            "a fold over the map depends on a position or a velocity: its derivative is not "
            "formed");

@@ -183,6 +183,42 @@ ExprId ExprLowering::fold(const Expr& e) {
   return g_.add(std::move(n));
 }
 
+/// `OP E over <o>(d)`: the fold of `x.E` over the sub-orbits <e ∩ o> of
+/// <o>(d), e the orbit E is attached to. Each sub-orbit is one piece of an
+/// E-orbit inside <o>(d), so a value counts once per piece: once per
+/// E-orbit, except where <o>(d) meets an E-orbit in several pieces (a face
+/// that passes twice through one vertex counts it twice, as its corners).
+ExprId ExprLowering::over(const Expr& e) {
+  const ast::Embedding& embedding = *symbols_.binding(e).embedding;
+  ir::Node n;
+  n.op = Op::Fold;
+  n.type = types_.of(e);
+  n.loc = e.loc;
+  n.place = place(e);
+  ir::aggregate_from_name(e.op, n.aggregate);
+  n.outer = e.orbit.dims;
+  for (int d : e.orbit.dims) {
+    if (std::find(embedding.orbit.dims.begin(), embedding.orbit.dims.end(), d) !=
+        embedding.orbit.dims.end())
+      n.orbit.push_back(d);
+  }
+  // `over` is a keyword: no name of the rules can be this variable's.
+  nodes_.emplace_back("over");
+  n.var = static_cast<int>(nodes_.size() - 1);
+  if (n.aggregate == ir::Aggregate::Count) {
+    n.a = g_.boolean(true);
+  } else {
+    ir::Node value;
+    value.op = Op::Read;
+    value.type = embedding.type;
+    value.loc = e.loc;
+    value.place.node = n.var;
+    value.embedding = e.name;
+    n.a = convert(g_.add(std::move(value)), n.type);
+  }
+  return g_.add(std::move(n));
+}
+
 ExprId ExprLowering::lower(const Expr& e) {
   ExprId id = ir::kNoExpr;
   switch (e.kind) {
@@ -220,18 +256,8 @@ ExprId ExprLowering::lower(const Expr& e) {
     }
     case Expr::Kind::Read:
       return read(e);
-    case Expr::Kind::Collect: {
-      ir::Node n;
-      n.op = Op::Collect;
-      n.loc = e.loc;
-      n.type = types_.of(e);
-      n.place = place(e);
-      n.embedding = e.name;
-      n.orbit = e.orbit.dims;
-      ir::aggregate_from_name(e.op, n.aggregate);
-      id = g_.add(std::move(n));
-      break;
-    }
+    case Expr::Kind::Collect:
+      return over(e);
     case Expr::Kind::Unary:
       id = g_.unary(e.op == "not" ? Op::Not : Op::Neg, types_.of(e), lower(*e.args[0]));
       break;

@@ -46,6 +46,7 @@ class ExprLowering {
   ir::ExprId binary(const ast::Expr& e);
   ir::ExprId call(const ast::Expr& e);
   ir::ExprId fold(const ast::Expr& e);
+  ir::ExprId over(const ast::Expr& e);
   ir::ExprId inline_call(const ast::Expr& e, const ast::Function& f);
   /// `id`, or, when lowering a let created it (`id >= before`), a copy of it
   /// carrying the let's `name` for the renderer (ir::Node::value_name).

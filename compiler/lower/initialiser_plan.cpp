@@ -9,6 +9,7 @@ std::vector<InitialiserPlan> lower_initialisers(const ast::Program& program,
                                                 const check::ExprTypes& types) {
   std::vector<InitialiserPlan> out;
   for (const ast::File& file : program.files) {
+    if (!file.owner.empty()) continue;  // an imported pack runs its own inits
     for (const ast::Init& init : file.inits) {
       const ast::Embedding* target = symbols.target(init);
       InitialiserPlan plan;

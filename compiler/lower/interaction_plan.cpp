@@ -13,7 +13,7 @@ namespace {
 
 void embeddings_read(const ir::Graph& g, ir::ExprId root, std::set<std::string>& out) {
   ir::visit(g, root, [&](const ir::Node& n) {
-    if (n.op == ir::Op::Read || n.op == ir::Op::Collect) out.insert(n.embedding);
+    if (n.op == ir::Op::Read) out.insert(n.embedding);
   });
 }
 

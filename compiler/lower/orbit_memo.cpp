@@ -38,7 +38,7 @@ class MemoPlanner {
   void judge(ExprId id) {
     if (id == ir::kNoExpr || !seen_.insert({id, context_key()}).second) return;
     const Node& n = g_[id];
-    if (n.op == Op::Collect || n.op == Op::Fold) {
+    if (n.op == Op::Fold) {
       const bool ok = memoisable(id);
       auto [it, fresh] = ok_.emplace(id, ok);
       if (!fresh) it->second = it->second && ok;
@@ -104,7 +104,6 @@ class MemoPlanner {
   }
 
   std::vector<int> orbit_of(const Node& n) const {
-    if (n.op == Op::Collect) return n.orbit;
     if (n.op == Op::Fold) return n.outer;
     return embedding_orbit_(n.embedding);  // Read
   }
@@ -120,7 +119,6 @@ class MemoPlanner {
       return false;
     const std::vector<int> orbit = orbit_of(n);
     if (!contains(orbit, e->sub) || contains(cell_orbit_, orbit)) return false;
-    if (n.op == Op::Collect) return true;
     std::map<int, std::vector<int>> bound = {{n.var, n.orbit}};
     return reads_only_its_orbit(n.a, bound);
   }
@@ -137,7 +135,6 @@ class MemoPlanner {
       case Op::VelocityTangent:
         return false;
       case Op::Read:
-      case Op::Collect:
       case Op::Fold: {
         const auto it = bound.find(n.place.node);
         if (it == bound.end() || !n.place.hops.empty() || !contains(orbit_of(n), it->second))

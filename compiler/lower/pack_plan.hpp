@@ -18,10 +18,12 @@
 namespace rift::lower {
 
 struct PackPlan {
-  std::vector<RulePlan> rules;                // parallel to the checked rules
+  // This pack's own declarations (not those of files an imported pack owns,
+  // which that pack generates).
+  std::vector<RulePlan> rules;                // in the order of the checked rules
   std::vector<ScriptPlan> scripts;            // in source order
   std::vector<InitialiserPlan> initialisers;  // in source order
-  std::vector<InteractionPlan> interactions;  // parallel to the checked interactions
+  std::vector<InteractionPlan> interactions;  // in the order of the checked interactions
   std::vector<CriterionPlan> criteria;        // in source order
   Constants constants;
   /// The embeddings the pack declares on a map, in source order: its own
@@ -30,6 +32,16 @@ struct PackPlan {
   /// other state columns are the runtime's to create: a pack that does not
   /// read vertex_force must not make the simulator fill it every step.
   std::vector<const ast::Embedding*> declared;
+  /// The packs this pack imports (ast::Program::imports): their generated
+  /// headers are included, their inits run before this pack's, and
+  /// registering this pack registers them.
+  std::vector<std::string> imports;
+  /// The pack of every rule and script an imported pack declares: an apply of
+  /// one calls that pack's generated function, in its namespace.
+  std::map<std::string, std::string, std::less<>> imported_callees;
+  /// The scripts of imported packs, lowered only for what they read (a
+  /// criterion applying one needs the forces its script reads stored).
+  std::vector<ScriptPlan> imported_scripts;
   /// The type of every embedding a name can refer to.
   std::map<std::string, ast::Type, std::less<>> embedding_types;
 };

@@ -36,8 +36,7 @@ void add_name(std::vector<std::string>& out, const std::string& name) {
 void embeddings_read(const ir::Graph& g, ir::ExprId root, std::vector<std::string>& out) {
   if (root == ir::kNoExpr) return;
   ir::visit(g, root, [&](const ir::Node& n) {
-    if (n.op == ir::Op::Read || n.op == ir::Op::Position || n.op == ir::Op::Velocity ||
-        n.op == ir::Op::Collect)
+    if (n.op == ir::Op::Read || n.op == ir::Op::Position || n.op == ir::Op::Velocity)
       add_name(out, n.embedding);
   });
 }

@@ -15,8 +15,8 @@ using ir::Node;
 using ir::Op;
 
 bool has_place(Op op) {
-  return op == Op::Position || op == Op::Velocity || op == Op::Read || op == Op::Collect ||
-         op == Op::Fold || op == Op::PositionTangent || op == Op::VelocityTangent;
+  return op == Op::Position || op == Op::Velocity || op == Op::Read || op == Op::Fold ||
+         op == Op::PositionTangent || op == Op::VelocityTangent;
 }
 
 /// Everything that makes two nodes compute the same value, operands by

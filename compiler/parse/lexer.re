@@ -103,6 +103,7 @@ Parser::symbol_type Lexer::next() {
       "pack"        { return Parser::make_PACK(RIFT_TOKEN()); }
       "dimension"   { return Parser::make_DIMENSION(RIFT_TOKEN()); }
       "include"     { return Parser::make_INCLUDE(RIFT_TOKEN()); }
+      "import"      { return Parser::make_IMPORT(RIFT_TOKEN()); }
       "embedding"   { return Parser::make_EMBEDDING(RIFT_TOKEN()); }
       "on"          { return Parser::make_ON(RIFT_TOKEN()); }
       "merge"       { return Parser::make_MERGE(RIFT_TOKEN()); }

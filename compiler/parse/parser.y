@@ -107,7 +107,7 @@ ExprPtr call(std::string name, std::vector<ExprPtr> args, const rift::diag::Loca
 %token <double> REAL "real number"
 %token <std::string> STRING "string"
 
-%token PACK "pack" DIMENSION "dimension" INCLUDE "include" EMBEDDING "embedding" ON "on"
+%token PACK "pack" DIMENSION "dimension" INCLUDE "include" IMPORT "import" EMBEDDING "embedding" ON "on"
        MERGE "merge" PARAM "param" INIT "init" RULE "rule" HOOK "hook" LEFT "left"
        RIGHT "right" WHEN "when" LET "let" UPDATE "update" INTERACTION "interaction"
        PATTERN "pattern" FORCE "force" ENERGY "energy" SEMIDEFINITE "semidefinite"
@@ -187,7 +187,8 @@ items
   ;
 
 item
-  : INCLUDE STRING SEMI { ctx.file.includes.push_back(rift::ast::Include{$2, @2}); }
+  : INCLUDE STRING SEMI { ctx.file.includes.push_back(rift::ast::Include{$2, @2, false}); }
+  | IMPORT STRING SEMI { ctx.file.includes.push_back(rift::ast::Include{$2, @2, true}); }
   | EMBEDDING ident COLON type ON orbit opt_default opt_merge SEMI {
       rift::ast::Embedding e;
       e.name = $2;

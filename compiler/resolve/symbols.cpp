@@ -19,11 +19,31 @@ class Collector {
  public:
   explicit Collector(diag::Diagnostics& diags) : diags_(diags) {}
 
+  /// The pack whose file is being collected: empty for this pack, else the
+  /// imported pack that owns it.
+  void set_owner(const std::string& owner) { owner_ = owner; }
+
   template <class Decl>
   void add(std::map<std::string, const Decl*, std::less<>>& map, const Decl& decl,
            const char* what) {
     const ast::Ident& name = decl.name;
     auto first = first_.find(name.text);
+    if (first != first_.end() && owners_[name.text] != owner_) {
+      // One of the two belongs to an imported pack: report it at this pack's
+      // own declaration when there is one, as the local name is the one to change.
+      const std::string& other = owners_[name.text];
+      const bool first_local = other.empty();
+      const diag::Location at = first_local ? first->second : name.loc;
+      const diag::Location there = first_local ? name.loc : first->second;
+      const std::string& imported = first_local ? owner_ : other;
+      diags_
+          .error(at, std::string(what) + " '" + name.text + "' clashes with a declaration of " +
+                         "imported pack '" + imported +
+                         "', whose names are visible here: rename it")
+          .notes.push_back({there, "'" + name.text + "' declared by '" +
+                                       (first_local ? owner_ : other) + "' here"});
+      return;
+    }
     if (first != first_.end() && state_.count(name.text)) {
       diags_
           .error(name.loc, std::string(what) + " '" + name.text +
@@ -38,6 +58,7 @@ class Collector {
       return;
     }
     first_.emplace(name.text, name.loc);
+    owners_.emplace(name.text, owner_);
     map.emplace(name.text, &decl);
   }
 
@@ -51,6 +72,8 @@ class Collector {
  private:
   diag::Diagnostics& diags_;
   std::map<std::string, diag::Location, std::less<>> first_;
+  std::map<std::string, std::string, std::less<>> owners_;  // the pack of each first declaration
+  std::string owner_;
   std::set<std::string, std::less<>> state_;
 };
 
@@ -158,6 +181,7 @@ Symbols collect_symbols(const ast::Program& program, diag::Diagnostics& diags) {
   }
   for (const ast::File& file : program.files) {
     if (file.builtin) continue;
+    collector.set_owner(file.owner);
     for (const auto& e : file.embeddings) {
       if (const ast::Embedding* declared = lookup(state, e.name.text)) {
         check_restated(e, *declared, diags);

@@ -16,6 +16,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <map>
 #include <sstream>
 #include <thread>
 
@@ -221,6 +222,41 @@ TEST_F(Cli, ListShowsComponentsAndParameters) {
                            "damping : real = 0", "test_long_edge", "limit"}) {
     EXPECT_NE(r.output.find(text), std::string::npos) << text << "\n" << r.output;
   }
+}
+
+// A pack that imports another (criteria2d imports topology2d) applies its
+// rules without copying them: `rift list` shows each rule under the one pack
+// that declares it.
+TEST_F(Cli, RiftListsEveryRuleOnceUnderItsPack) {
+  const Result r = run(RIFT_EXE, "list");
+  ASSERT_EQ(r.code, 0) << r.output;
+  // A 2D and a 3D pack may both have a `split_vertex`: rules are keyed by
+  // name and dimension, as a scene of one dimension finds them.
+  std::map<std::string, std::string> pack_of;  // "rule (2D)" -> pack
+  std::string pack, dimension;
+  bool in_rules = false;
+  std::istringstream lines(r.output);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("pack ", 0) == 0) {
+      const std::size_t space = line.find(' ', 5);
+      pack = line.substr(5, space - 5);
+      dimension = line.substr(space + 1, line.find(')', space) - space);
+      in_rules = false;
+    } else if (line == "  rules:") {
+      in_rules = true;
+    } else if (line.rfind("  ", 0) == 0 && line.rfind("    ", 0) != 0) {
+      in_rules = false;  // the next section of the pack
+    } else if (in_rules && line.rfind("    ", 0) == 0) {
+      const std::string rule = line.substr(4) + " " + dimension;
+      const auto [it, fresh] = pack_of.emplace(rule, pack);
+      EXPECT_TRUE(fresh) << "rule '" << rule << "' is listed under '" << it->second << "' and '"
+                         << pack << "'";
+    }
+  }
+  EXPECT_EQ(pack_of["separate_faces (2D)"], "topology2d") << r.output;
+  EXPECT_EQ(pack_of["split_vertex (3D)"], "topology3d") << r.output;
+  EXPECT_EQ(pack_of["separate_volumes (3D)"], "topology3d") << r.output;
+  EXPECT_EQ(pack_of["split_along_largest_force (2D)"], "criteria2d") << r.output;
 }
 
 TEST_F(Cli, RunWritesReadableFrames) {
@@ -521,11 +557,10 @@ TEST_F(Cli, HeavilyTornClothStopsWhenTheEnergyPassesTheBound) {
   EXPECT_GT(unchecked.back(), 1e100);
 }
 
-// A long step: a 300,000-gon with the test pack's test_slow_walk, which
-// walks the polygon at each of its vertices (many seconds a step; the
-// standard packs' vertex_stress did as much until the force pass stored the
-// elements' stresses). Ctrl-C one second into the first step stops it
-// part-way, with the first frame intact and no temporary file.
+// A long step: a 300,000-gon with the test pack's face walk (each of its
+// vertices walks the whole face: minutes a step). Ctrl-C one second into the
+// first step stops it part-way, with the first frame intact and no
+// temporary file.
 TEST_F(Cli, CtrlCInsideALongStepStopsAtOnce) {
   {
     std::ofstream obj(dir_ / "polygon.obj");
@@ -553,7 +588,7 @@ name = "test_springs"
 stiffness = 60.0
 
 [[criterion]]
-name = "test_slow_walk"
+name = "test_face_walk"
 
 [output]
 every = 1

@@ -2,7 +2,8 @@
 # Installs this build of rift into a temporary prefix, builds the standalone
 # projects examples/custom-criterion and examples/first-rule against it with
 # find_package(rift), and runs them: the new criterion must tear the cloth,
-# the tutorial's rule must turn 16 quads into 64 triangles.
+# the tutorial's rule must turn 16 quads into 64 triangles. Then a project
+# whose pack imports a pack of its own (tests/install/imported_pack).
 set -euo pipefail
 build_dir=$1
 source_dir=$2
@@ -23,6 +24,17 @@ tears=$(tail -n 1 "$work/out/cloth.csv" | cut -d, -f5)
 echo "tears after 1500 steps: $tears"
 awk -v t="$tears" 'BEGIN { exit !(t > 0) }'
 test -s "$work/out/cloth.pvd"
+
+# A pack importing another that nothing else names: the simulator lists the
+# importing pack only, and has both, each rule listed once, under its pack.
+cmake -S "$source_dir/tests/install/imported_pack" -B "$work/imported" -G Ninja \
+      -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure3.log" \
+  || { cat "$work/configure3.log"; exit 1; }
+cmake --build "$work/imported" > "$work/build3.log" || { cat "$work/build3.log"; exit 1; }
+"$work/imported/edge_sim" list > "$work/imported.txt"
+grep -q "^pack edge_criteria (2D)" "$work/imported.txt" || { cat "$work/imported.txt"; exit 1; }
+grep -q "^pack cuts (2D)" "$work/imported.txt" || { cat "$work/imported.txt"; exit 1; }
+test "$(grep -c '^    cut$' "$work/imported.txt")" = 1 || { cat "$work/imported.txt"; exit 1; }
 
 # The tutorial's project: one rule applied by a small program (docs/tutorial.md).
 cmake -S "$source_dir/examples/first-rule" -B "$work/first" -G Ninja \

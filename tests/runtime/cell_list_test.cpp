@@ -110,25 +110,22 @@ TEST(CellCollection, CandidatesInTheOrderOfTheCellsWhateverTheThreads) {
   EXPECT_EQ(collection.cells().rebuilds(), 1u);
 }
 
-/// Σ of an embedding over <o>(d), each of its slots once: the definition.
+/// Σ of an embedding over <o>(d) at one dart of each sub-orbit <e ∩ o>: the
+/// definition of `sum E over <o>(d)`, walked by the map's own marked walk.
 template <class T>
-T sum_by_slots(const GMap& g, const Embedding<T>& e, Dart d, Orbit o) {
-  std::set<Slot> seen;
+T sum_by_definition(const GMap& g, const Embedding<T>& e, Dart d, Orbit o) {
+  const Orbit sub = Orbit::from_mask(static_cast<std::uint8_t>(e.orbit().mask() & o.mask()));
   T sum = generated::zero<T>();
-  g.for_each_in_orbit(d, o, [&](Dart x) {
-    const Slot s = e.slot(x);
-    if (s != kNoSlot && seen.insert(s).second) sum = sum + e[x];
-  });
+  g.for_each_sub_orbit(d, o, sub, [&](Dart x) { sum = sum + e[x]; });
   return sum;
 }
 
-TEST(OrbitValues, EveryPairOfOrbitsCountsEachEmbeddingOrbitOnce) {
-  // Embeddings on every orbit of a 3D map (the single dart, those inside the
-  // walked orbit, around it and across it), summed over every orbit, after cuts.
+/// A 3D map with embeddings on every orbit (the single dart, those inside a
+/// walked orbit, around it and across it), after random cuts.
+GMap cut_block_with_embeddings(std::vector<Embedding<std::int64_t>>& columns) {
   GMap g = assemble_gmap(make_block(BlockKind::Hex, 3, 2, 2));
   std::mt19937 rng(3);
   cut_randomly(g, 6, rng);
-  std::vector<Embedding<std::int64_t>> columns;
   for (unsigned mask = 0; mask < 16; ++mask) {
     const Orbit on = Orbit::from_mask(static_cast<std::uint8_t>(mask));
     std::string name = "e";
@@ -137,16 +134,55 @@ TEST(OrbitValues, EveryPairOfOrbitsCountsEachEmbeddingOrbitOnce) {
     g.for_each_cell(on, [&](Dart d) { e[d] = static_cast<std::int64_t>(rng() % 1000); });
     columns.push_back(e);
   }
+  return g;
+}
+
+TEST(OrbitValues, EveryPairOfOrbitsSumsOneValuePerSubOrbit) {
+  std::vector<Embedding<std::int64_t>> columns;
+  const GMap g = cut_block_with_embeddings(columns);
   for (const auto& e : columns) {
     for (unsigned walk = 0; walk < 16; ++walk) {
       const Orbit o = Orbit::from_mask(static_cast<std::uint8_t>(walk));
+      const Orbit sub = Orbit::from_mask(static_cast<std::uint8_t>(e.orbit().mask() & walk));
       for (Dart d = 0; d < g.capacity(); d += 5) {
         if (!g.is_alive(d)) continue;
-        ASSERT_EQ(generated::collect_sum(g, e, d, o), sum_by_slots(g, e, d, o))
+        ASSERT_EQ(generated::fold_sum(g, e, d, o, sub), sum_by_definition(g, e, d, o))
             << "embedding on " << e.orbit().str() << ", walk " << o.str() << ", dart " << d;
       }
     }
   }
+}
+
+TEST(SubOrbits, EveryPairOfOrbitsGivesTheDartsOfTheMarkedWalkInItsOrder) {
+  // Whichever way generated::for_each_sub_orbit takes (one dart, a walk
+  // without marks, slots of an attachment on <sub>, the marked walk), it
+  // keeps the darts GMap::for_each_sub_orbit keeps, in the same order.
+  std::vector<Embedding<std::int64_t>> columns;
+  const GMap g = cut_block_with_embeddings(columns);
+  for (unsigned walk = 0; walk < 16; ++walk) {
+    const Orbit o = Orbit::from_mask(static_cast<std::uint8_t>(walk));
+    for (unsigned inner = 0; inner < 16; ++inner) {
+      const Orbit sub = Orbit::from_mask(static_cast<std::uint8_t>(inner));
+      for (Dart d = 0; d < g.capacity(); d += 3) {
+        if (!g.is_alive(d)) continue;
+        std::vector<Dart> expected, got;
+        g.for_each_sub_orbit(d, o, sub, [&](Dart x) { expected.push_back(x); });
+        generated::for_each_sub_orbit(g, d, o, sub, [&](Dart x) { got.push_back(x); });
+        ASSERT_EQ(got, expected) << "walk " << o.str() << ", sub-orbit " << sub.str() << ", dart "
+                                 << d;
+      }
+    }
+  }
+}
+
+TEST(SubOrbits, WalksWithoutMarksOnlyWhereTheyTouchNoStateOfTheMap) {
+  // The walks criteria may run on every core: <o> a sub-orbit of itself, or
+  // <sub> inside an <o> of at most two links.
+  EXPECT_TRUE(generated::walks_without_marks(Orbit{0, 1}, Orbit{1}));
+  EXPECT_TRUE(generated::walks_without_marks(Orbit{1, 2}, Orbit{}));
+  EXPECT_TRUE(generated::walks_without_marks(Orbit{0, 1, 2}, Orbit{0, 1, 2, 3}));
+  EXPECT_FALSE(generated::walks_without_marks(Orbit{1, 2}, Orbit{0, 1}));
+  EXPECT_FALSE(generated::walks_without_marks(Orbit{0, 1, 2}, Orbit{1, 2}));
 }
 
 }  // namespace

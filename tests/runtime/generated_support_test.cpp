@@ -171,7 +171,9 @@ TEST(SlotUpkeep, ANewOrbitGetsTheDefault) {
   EXPECT_EQ(slots.size(), 4u);  // one per vertex of the quad
 }
 
-TEST(OrbitValues, EachEmbeddingOrbitCountsOnce) {
+TEST(OrbitValues, OneValuePerCornerOfAFace) {
+  // `OP x over <0,1>(quad)` with x on vertices <1,2>: the fold over the
+  // sub-orbits <1> of the face, its corners.
   GMap g(2);
   const Dart quad = test::make_polygon(g, 4);
   auto x = g.add_embedding<Vec3>("x", Orbit{1, 2}, MergePolicy::kKeepFirst, Vec3::Zero());
@@ -181,15 +183,15 @@ TEST(OrbitValues, EachEmbeddingOrbitCountsOnce) {
     x[corner] = Vec3(i, 2 * i, 1);
     k[corner] = 10 + i;
   }
-  const Orbit face{0, 1};
-  EXPECT_EQ(generated::collect_count(g, x, quad, face), 4);  // 8 darts, 4 vertices
-  EXPECT_EQ(generated::collect_sum(g, x, quad, face), Vec3(6, 12, 4));
-  EXPECT_EQ(generated::collect_mean(g, x, quad, face), Vec3(1.5, 3, 1));
-  EXPECT_EQ(generated::collect_mean(g, k, quad, face), 11.5);  // of integers: a real
-  EXPECT_EQ(generated::collect_min(g, k, quad, face), 10);
-  EXPECT_EQ(generated::collect_max(g, k, quad, face), 13);
+  const Orbit face{0, 1}, corner{1};
+  EXPECT_EQ(generated::count_sub_orbits(g, quad, face, corner), 4);  // 8 darts, 4 corners
+  EXPECT_EQ(generated::fold_sum(g, x, quad, face, corner), Vec3(6, 12, 4));
+  EXPECT_EQ(generated::fold_mean(g, x, quad, face, corner), Vec3(1.5, 3, 1));
+  EXPECT_EQ(generated::fold_mean(g, k, quad, face, corner), 11.5);  // of integers: a real
+  EXPECT_EQ(generated::fold_min(g, k, quad, face, corner), 10);
+  EXPECT_EQ(generated::fold_max(g, k, quad, face, corner), 13);
   // Over a single vertex's orbit: its own value.
-  EXPECT_EQ(generated::collect_sum(g, k, quad + 2, Orbit{1, 2}), 11);
+  EXPECT_EQ(generated::fold_sum(g, k, quad + 2, Orbit{1, 2}, Orbit{1, 2}), 11);
 }
 
 /// Two quads' faces through an OrbitMemo, keyed by darts (`slotted` false)

@@ -44,7 +44,7 @@ Real hand_vertex_stress(const GMap& g, Dart v) {
     } else {
       size = 0.5 * e1.cross(e2).norm();
     }
-    const Real element_mass = generated::collect_sum(g, corner_mass, c, element);
+    const Real element_mass = generated::fold_sum(g, corner_mass, c, element, corner);
     Mat3 virial = Mat3::Zero();
     g.for_each_sub_orbit(c, element, corner,
                          [&](Dart k) { virial += force[k] * position[k].transpose(); });

@@ -1,7 +1,9 @@
-// Aggregates of an embedding over an orbit, as the rule language's folds
-// compile them (docs/language.md "Aggregates"): each value counted once per
-// embedding orbit inside the walked orbit, whatever the number of its darts.
+// The short form of a fold, `OP E over <o>(d)`, as generated code renders it
+// when the fold's body is only the read of E at its dart (docs/language.md
+// "Folds"): OP of E's value at one dart of each sub-orbit `sub` (= e ∩ o, e
+// the orbit E is attached to) inside <o>(d), walked by for_each_sub_orbit.
 // sum, count, mean, min and max of an empty set are 0, 0, 0, +max and lowest.
+// A dart without a slot of E (none in a valid simulation) contributes nothing.
 #pragma once
 
 #include <algorithm>
@@ -9,8 +11,7 @@
 #include <limits>
 #include <type_traits>
 
-#include "rift/core/interrupt.hpp"
-#include "rift/generated/scratch.hpp"
+#include "rift/generated/sub_orbits.hpp"
 #include "rift/gmap/gmap.hpp"
 
 namespace rift::generated {
@@ -25,74 +26,53 @@ T zero() {
   }
 }
 
-/// Calls f(value) once per slot of e met in the orbit <o>(d).
+/// Calls f(value of e) at one dart of each sub-orbit <sub> of <o>(d).
 template <class T, class F>
-void for_each_value(const GMap& g, const Embedding<T>& e, Dart d, Orbit o, F&& f) {
-  // The darts of an embedding orbit share its slot. Where that orbit holds
-  // <o>(d), the walk meets one value; where it is the single dart, every dart
-  // its own: neither needs the search for values already met, which a
-  // criterion on the edges of a large cloth would otherwise pay at each of them.
-  const std::uint8_t on = e.orbit().mask();
-  if ((on & o.mask()) == o.mask()) {
-    if (e.slot(d) != kNoSlot) f(e[d]);
-    return;
-  }
-  if (on == 0) {
-    g.for_each_in_orbit(d, o, [&](Dart x) {
-      throw_if_interrupted();
-      if (e.slot(x) != kNoSlot) f(e[x]);
-    });
-    return;
-  }
-  Scratch& s = scratch();
-  s.seen.clear();
-  g.for_each_in_orbit(d, o, [&](Dart x) {
-    throw_if_interrupted();  // orbits may be large (a polygon's face)
-    const Slot slot = e.slot(x);
-    if (slot == kNoSlot || std::find(s.seen.begin(), s.seen.end(), slot) != s.seen.end()) return;
-    s.seen.push_back(slot);
-    f(e[x]);
+void for_each_value(const GMap& g, const Embedding<T>& e, Dart d, Orbit o, Orbit sub, F&& f) {
+  for_each_sub_orbit(g, d, o, sub, [&](Dart x) {
+    if (e.slot(x) != kNoSlot) f(e[x]);
   });
 }
 
 template <class T>
-T collect_sum(const GMap& g, const Embedding<T>& e, Dart d, Orbit o) {
+T fold_sum(const GMap& g, const Embedding<T>& e, Dart d, Orbit o, Orbit sub) {
   T acc = zero<T>();
-  for_each_value(g, e, d, o, [&](const T& v) { acc = acc + v; });
+  for_each_value(g, e, d, o, sub, [&](const T& v) { acc = acc + v; });
   return acc;
-}
-
-template <class T>
-std::int64_t collect_count(const GMap& g, const Embedding<T>& e, Dart d, Orbit o) {
-  std::int64_t n = 0;
-  for_each_value(g, e, d, o, [&](const T&) { ++n; });
-  return n;
 }
 
 /// The mean of the values; of integers, a real.
 template <class T>
-auto collect_mean(const GMap& g, const Embedding<T>& e, Dart d, Orbit o) {
-  const T sum = collect_sum(g, e, d, o);
-  const auto n = static_cast<Real>(collect_count(g, e, d, o));
-  if constexpr (std::is_same_v<T, std::int64_t>) {
-    return n > 0 ? static_cast<Real>(sum) / n : Real(0);
-  } else {
-    return n > 0 ? T(sum / n) : zero<T>();
-  }
+auto fold_mean(const GMap& g, const Embedding<T>& e, Dart d, Orbit o, Orbit sub) {
+  using R = std::conditional_t<std::is_same_v<T, std::int64_t>, Real, T>;
+  R acc = zero<R>();
+  std::int64_t n = 0;
+  for_each_value(g, e, d, o, sub, [&](const T& v) {
+    acc = acc + static_cast<R>(v);
+    ++n;
+  });
+  return n > 0 ? R(acc / static_cast<Real>(n)) : zero<R>();
 }
 
 template <class T>
-T collect_min(const GMap& g, const Embedding<T>& e, Dart d, Orbit o) {
+T fold_min(const GMap& g, const Embedding<T>& e, Dart d, Orbit o, Orbit sub) {
   T best = std::numeric_limits<T>::max();
-  for_each_value(g, e, d, o, [&](const T& v) { best = std::min(best, v); });
+  for_each_value(g, e, d, o, sub, [&](const T& v) { best = std::min(best, v); });
   return best;
 }
 
 template <class T>
-T collect_max(const GMap& g, const Embedding<T>& e, Dart d, Orbit o) {
+T fold_max(const GMap& g, const Embedding<T>& e, Dart d, Orbit o, Orbit sub) {
   T best = std::numeric_limits<T>::lowest();
-  for_each_value(g, e, d, o, [&](const T& v) { best = std::max(best, v); });
+  for_each_value(g, e, d, o, sub, [&](const T& v) { best = std::max(best, v); });
   return best;
+}
+
+/// The number of sub-orbits <sub> of <o>(d): `count E over <o>(d)`.
+inline std::int64_t count_sub_orbits(const GMap& g, Dart d, Orbit o, Orbit sub) {
+  std::int64_t n = 0;
+  for_each_sub_orbit(g, d, o, sub, [&](Dart) { ++n; });
+  return n;
 }
 
 }  // namespace rift::generated

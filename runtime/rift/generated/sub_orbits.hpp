@@ -1,12 +1,21 @@
 // The sub-orbits of an orbit, as the folds of generated code walk them
-// (`for each <sub>(x) in <o>(d)`): GMap::for_each_sub_orbit marks the whole
-// sub-orbit of each dart it keeps, so a criterion on vertices that folds over
-// each vertex's tetrahedra walks every tetrahedron's 24 darts once per vertex.
-// Where the map attaches embeddings to <sub>, each sub-orbit has one slot,
-// and the slot tells whether a dart's sub-orbit was met already: only <o>(d)
-// is walked. The darts kept and their order are those of
-// GMap::for_each_sub_orbit (the first dart of each sub-orbit in the walk of
-// <o>(d)), so results do not change; a dart without a slot falls back to it.
+// (`for each <sub>(x) in <o>(d)`, and `OP E over <o>(d)`, which is the fold
+// of E over the sub-orbits <e ∩ o>). The darts kept and their order are
+// always those of GMap::for_each_sub_orbit (the first dart of each sub-orbit
+// in the walk of <o>(d)), so the way chosen never changes a result:
+//  - <sub> contains <o>: <o>(d) is one sub-orbit, d stands for it;
+//  - <sub> inside <o> and <o> of at most two links: the walk of <o>(d) is a
+//    path or a cycle that needs no mark, and a sub-orbit of at most one link
+//    is a dart and its neighbour, both in the walk. These walks touch no
+//    state of the map, so criteria whose folds are all such collect on
+//    every core (lower/criterion_plan.cpp decides it with the same test);
+//  - where the map attaches embeddings to <sub>, each sub-orbit has one
+//    slot, and the slot tells whether a dart's sub-orbit was met already:
+//    only <o>(d) is walked (GMap::for_each_sub_orbit marks the whole
+//    sub-orbit of each dart it keeps, so a criterion on vertices folding
+//    over each vertex's tetrahedra would walk each tetrahedron's 24 darts
+//    once per vertex);
+//  - otherwise, or where a dart has no slot, GMap::for_each_sub_orbit.
 #pragma once
 
 #include <algorithm>
@@ -14,6 +23,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "rift/core/interrupt.hpp"
 #include "rift/gmap/gmap.hpp"
 
 namespace rift::generated {
@@ -40,32 +50,94 @@ inline const OrbitAttachment* attachment_on(const GMap& g, Orbit o) {
   return nullptr;
 }
 
+/// Whether for_each_sub_orbit walks <o> for <sub> without the map's marks
+/// (whatever the map attaches), hence safely on several threads at once.
+constexpr bool walks_without_marks(Orbit o, Orbit sub) {
+  const auto both = static_cast<std::uint8_t>(o.mask() & sub.mask());
+  return both == o.mask() || (both == sub.mask() && o.size() <= 2);
+}
+
+namespace detail {
+
+/// One nesting level of kept darts, released even when f throws (an interrupt).
+class KeptLevel {
+ public:
+  explicit KeptLevel(SubOrbitBuffers& b) : b_(b), at_(b.depth++) {
+    if (b_.kept.size() <= at_) b_.kept.resize(at_ + 1);
+    b_.kept[at_].clear();
+  }
+  ~KeptLevel() { --b_.depth; }
+  KeptLevel(const KeptLevel&) = delete;
+  KeptLevel& operator=(const KeptLevel&) = delete;
+  // By index: a nested walk may grow b.kept and move this level's list.
+  std::vector<Dart>& darts() { return b_.kept[at_]; }
+
+ private:
+  SubOrbitBuffers& b_;
+  std::size_t at_;
+};
+
+}  // namespace detail
+
 /// Calls f(x) with one dart x of each distinct sub-orbit <sub>(x) inside
-/// <o>(d): the darts of GMap::for_each_sub_orbit, in its order.
+/// <o>(d): the darts of GMap::for_each_sub_orbit, in its order. The whole
+/// walk comes before any f, so that f's own walks (a fold inside a fold)
+/// reuse the buffers freely.
 template <class F>
 void for_each_sub_orbit(const GMap& g, Dart d, Orbit o, Orbit sub, F&& f) {
+  const auto both = static_cast<std::uint8_t>(o.mask() & sub.mask());
+  if (both == o.mask()) {
+    f(d);
+    return;
+  }
+  SubOrbitBuffers& b = sub_orbit_buffers();
+  if (both == sub.mask() && o.size() <= 2) {
+    detail::KeptLevel level(b);
+    std::vector<Dart>& walked = level.darts();
+    g.for_each_in_orbit(d, o, [&](Dart x) { walked.push_back(x); });
+    if (sub.size() == 0) {
+      for (std::size_t k = 0; k < level.darts().size(); ++k) {
+        throw_if_interrupted();  // a polygon's face may have a million darts
+        f(level.darts()[k]);
+      }
+      return;
+    }
+    // A sub-orbit <i> is x and its neighbour by i, both in the walk; the
+    // second one met is dropped (set to kNoDart: a dropped dart is the
+    // neighbour of none met after it). GMap's walk of two links goes along
+    // the path or cycle, so the neighbour is next to x in it; the search of
+    // the darts before x covers any other order.
+    const int i = sub.first();
+    const auto n = static_cast<std::ptrdiff_t>(walked.size());
+    for (std::ptrdiff_t k = 0; k < n; ++k) {
+      const Dart x = walked[static_cast<std::size_t>(k)];
+      const Dart partner = g.alpha(x, i);
+      if (partner == x) continue;
+      bool met = false;
+      if (k > 0 && walked[static_cast<std::size_t>(k - 1)] == partner) {
+        met = true;
+      } else if (k + 1 >= n || walked[static_cast<std::size_t>(k + 1)] != partner) {
+        met = std::find(walked.begin(), walked.begin() + k, partner) != walked.begin() + k;
+      }
+      if (met) walked[static_cast<std::size_t>(k)] = kNoDart;
+    }
+    for (std::size_t k = 0; k < level.darts().size(); ++k) {
+      throw_if_interrupted();
+      if (const Dart x = level.darts()[k]; x != kNoDart) f(x);
+    }
+    return;
+  }
   const OrbitAttachment* slots = attachment_on(g, sub);
   if (!slots) {
     g.for_each_sub_orbit(d, o, sub, f);
     return;
   }
-  SubOrbitBuffers& b = sub_orbit_buffers();
-  if (b.kept.size() <= b.depth) b.kept.resize(b.depth + 1);
-  // The level is released even when f throws (an interrupt).
-  struct Level {
-    SubOrbitBuffers& b;
-    ~Level() { --b.depth; }
-  } level{b};
-  // By index: a nested walk may grow b.kept and move this level's list.
-  const std::size_t at = b.depth++;
-  b.kept[at].clear();
+  detail::KeptLevel level(b);
   if (b.stamp.size() < slots->slot_capacity()) b.stamp.resize(slots->slot_capacity(), 0);
   if (++b.walk == 0) {  // the numbers wrapped: no stale stamp may match
     std::fill(b.stamp.begin(), b.stamp.end(), 0);
     b.walk = 1;
   }
-  // The whole walk before any f: a nested walk (f's own folds) then reuses
-  // the stamps freely.
   bool slotless = false;
   const std::uint32_t walk = b.walk;
   g.for_each_in_orbit(d, o, [&](Dart x) {
@@ -76,14 +148,14 @@ void for_each_sub_orbit(const GMap& g, Dart d, Orbit o, Orbit sub, F&& f) {
     }
     if (b.stamp[s] == walk) return;
     b.stamp[s] = walk;
-    b.kept[at].push_back(x);
+    level.darts().push_back(x);
   });
   if (slotless) {
     g.for_each_sub_orbit(d, o, sub, f);
     return;
   }
-  for (std::size_t k = 0; k < b.kept[at].size(); ++k)
-    f(b.kept[at][k]);
+  for (std::size_t k = 0; k < level.darts().size(); ++k)
+    f(level.darts()[k]);
 }
 
 }  // namespace rift::generated

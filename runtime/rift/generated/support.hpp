@@ -6,10 +6,10 @@
 //   scratch.hpp        per-thread buffers of matching and rewriting
 //   match_rows.hpp     a match's rows: the hook orbit walked breadth-first
 //   slot_upkeep.hpp    embedding slots after a rewrite (merge, split, new)
-//   orbit_values.hpp   aggregates over an orbit (sum, count, mean, min, max)
+//   orbit_values.hpp   folds of one embedding (sum, count, mean, min, max): `E over <o>(d)`
 //   orbit_memo.hpp     values a criterion computes once per orbit and collection
 //   candidate_payload.hpp  a criterion's apply arguments, carried by its candidates
-//   sub_orbits.hpp     the sub-orbits a fold walks, by slot where it can
+//   sub_orbits.hpp     the sub-orbits a fold walks, without marks where it can
 //   pack_values.hpp    parameter values, required embeddings, tagged darts
 //   core/polar.hpp, core/symmetric_eigen.hpp   the matrix built-ins
 #pragma once

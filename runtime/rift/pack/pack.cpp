@@ -62,6 +62,13 @@ Catalog PackRegistry::catalog(int dimension) const {
   return all;
 }
 
+const Pack* PackRegistry::find(const std::string& name) const {
+  for (const auto& p : packs_) {
+    if (p->name() == name) return p.get();
+  }
+  return nullptr;
+}
+
 const Pack* PackRegistry::pack_of_interaction(const std::string& name, int dimension) const {
   for (const auto& p : packs_) {
     if (p->dimension() == dimension && Catalog::find(p->catalog().interactions, name)) {

@@ -50,6 +50,9 @@ void declare_embeddings(GMap& map, const std::vector<EmbeddingDecl>& decls);
 class PackRegistry {
  public:
   void add(std::unique_ptr<Pack> pack) { packs_.push_back(std::move(pack)); }
+  /// The pack named `name`, or nullptr (a pack registers the packs it
+  /// imports unless they are registered already).
+  const Pack* find(const std::string& name) const;
   const std::vector<std::unique_ptr<Pack>>& packs() const { return packs_; }
   /// The interactions and criteria of every pack (of one dimension, or all with 0).
   Catalog catalog(int dimension = 0) const;

@@ -13,6 +13,8 @@
 #include <Eigen/Dense>
 #include "rift/generated/support.hpp"
 
+#include "topology2d.hpp"
+
 namespace rift::packs::criteria2d {
 
 using namespace rift::generated;
@@ -192,16 +194,6 @@ void declare_embeddings(rift::GMap& g) {
   } else if (g.find_column("f_membrane")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_membrane")->orbit() == rift::Orbit{1}) || g.find_column("f_membrane")->policy() != rift::MergePolicy::kKeepFirst) {
     throw std::invalid_argument("the map's embedding 'f_membrane' is not the pack's vec3 on <1> merged by 'keep'");
   }
-  if (!g.has_embedding("membrane_stress")) {
-    g.declare_embedding<rift::Mat3>("membrane_stress", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
-  } else if (g.find_column("membrane_stress")->type() != rift::ValueType::kMat3 || !(g.attachment_of("membrane_stress")->orbit() == rift::Orbit{0, 1}) || g.find_column("membrane_stress")->policy() != rift::MergePolicy::kKeepFirst) {
-    throw std::invalid_argument("the map's embedding 'membrane_stress' is not the pack's mat3 on <0,1> merged by 'keep'");
-  }
-  if (!g.has_embedding("membrane_mass")) {
-    g.declare_embedding<rift::Real>("membrane_mass", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("membrane_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("membrane_mass")->orbit() == rift::Orbit{0, 1}) || g.find_column("membrane_mass")->policy() != rift::MergePolicy::kKeepFirst) {
-    throw std::invalid_argument("the map's embedding 'membrane_mass' is not the pack's real on <0,1> merged by 'keep'");
-  }
   if (!g.has_embedding("position")) {
     g.declare_embedding<rift::Vec3>("position", rift::Orbit{1, 2}, rift::MergePolicy::kMean, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
   } else if (g.find_column("position")->type() != rift::ValueType::kVec3 || !(g.attachment_of("position")->orbit() == rift::Orbit{1, 2}) || g.find_column("position")->policy() != rift::MergePolicy::kMean) {
@@ -222,94 +214,7 @@ void declare_embeddings(rift::GMap& g) {
 void run_initialisers(rift::GMap& g, const Params& params) {
   (void)g;
   (void)params;
-}
-
-// rule 'separate_faces' (1 hook(s))
-bool apply_separate_faces(rift::GMap& g, std::span<const rift::Dart> hooks, const separate_faces_args& args, const Params& params, std::vector<rift::Dart>* touched) {
-  (void)args;
-  (void)params;
-  if (g.dimension() != 2) throw std::invalid_argument("rule 'separate_faces' needs a G-map of dimension 2");
-  if (hooks.size() != 1) return false;
-  for (rift::Dart h : hooks) {
-    if (!g.is_alive(h)) return false;
-  }
-  Scratch& s = scratch();
-  static constexpr int hook_dims[] = {0};
-  std::size_t rows = 1;
-  if (!build_rows(g, hooks.data(), hooks.size(), hook_dims, 1, s, rows)) return false;
-  [[maybe_unused]] const std::size_t label = 1;
-  s.left.resize(2 * rows);
-  [[maybe_unused]] rift::Dart* const left_0 = s.left.data() + 0 * rows;  // a
-  [[maybe_unused]] rift::Dart* const left_1 = s.left.data() + 1 * rows;  // b
-  std::copy_n(s.rows.data() + 0 * rows, rows, left_0);
-  for (std::size_t r = 0; r < rows; ++r) left_1[r] = g.alpha(left_0[r], 2);
-  for (std::size_t r = 0; r < rows; ++r) {
-    if (g.alpha(left_1[r], 0) != left_1[s.nbr[r * label + 0]]) return false;
-  }
-  if (!distinct_darts(g, s.left.data(), s.left.size())) return false;
-  if (touched) touched->insert(touched->end(), s.left.begin(), s.left.end());
-  s.right.resize(2 * rows);
-  [[maybe_unused]] rift::Dart* const right_0 = s.right.data() + 0 * rows;  // a
-  std::copy_n(left_0, rows, right_0);
-  [[maybe_unused]] rift::Dart* const right_1 = s.right.data() + 1 * rows;  // b
-  std::copy_n(left_1, rows, right_1);
-  for (std::size_t r = 0; r < rows; ++r) {
-    if (touched) touched->push_back(g.alpha(right_0[r], 0));
-    g.unlink(right_0[r], 0);
-  }
-  for (std::size_t r = 0; r < rows; ++r) {
-    if (touched) touched->push_back(g.alpha(right_0[r], 2));
-    g.unlink(right_0[r], 2);
-  }
-  for (std::size_t r = 0; r < rows; ++r) {
-    if (touched) touched->push_back(g.alpha(right_1[r], 0));
-    g.unlink(right_1[r], 0);
-  }
-  for (std::size_t r = 0; r < rows; ++r) {
-    if (touched) touched->push_back(g.alpha(right_1[r], 2));
-    g.unlink(right_1[r], 2);
-  }
-  for (std::size_t r = 0; r < rows; ++r) {
-    const rift::Dart x = right_0[r];
-    const rift::Dart y = right_0[s.nbr[r * label + 0]];
-    if (x != y && g.is_free(x, 0) && g.is_free(y, 0)) g.link(x, y, 0);
-  }
-  for (std::size_t r = 0; r < rows; ++r) {
-    const rift::Dart x = right_1[r];
-    const rift::Dart y = right_1[s.nbr[r * label + 0]];
-    if (x != y && g.is_free(x, 0) && g.is_free(y, 0)) g.link(x, y, 0);
-  }
-  update_embedding_slots(g, s.right.data(), s.right.size(), s, touched);
-  g.check_after_rewrite("rule 'separate_faces'");
-  return true;
-}
-
-// rule 'remove_face' (1 hook(s))
-bool apply_remove_face(rift::GMap& g, std::span<const rift::Dart> hooks, const remove_face_args& args, const Params& params, std::vector<rift::Dart>* touched) {
-  (void)args;
-  (void)params;
-  if (g.dimension() != 2) throw std::invalid_argument("rule 'remove_face' needs a G-map of dimension 2");
-  if (hooks.size() != 1) return false;
-  for (rift::Dart h : hooks) {
-    if (!g.is_alive(h)) return false;
-  }
-  Scratch& s = scratch();
-  static constexpr int hook_dims[] = {0, 1};
-  std::size_t rows = 1;
-  if (!build_rows(g, hooks.data(), hooks.size(), hook_dims, 2, s, rows)) return false;
-  [[maybe_unused]] const std::size_t label = 2;
-  s.left.resize(1 * rows);
-  [[maybe_unused]] rift::Dart* const left_0 = s.left.data() + 0 * rows;  // f
-  std::copy_n(s.rows.data() + 0 * rows, rows, left_0);
-  for (std::size_t r = 0; r < rows; ++r) {
-    if (g.alpha(left_0[r], 2) != left_0[r]) return false;
-  }
-  if (!distinct_darts(g, s.left.data(), s.left.size())) return false;
-  if (touched) touched->insert(touched->end(), s.left.begin(), s.left.end());
-  for (std::size_t r = 0; r < rows; ++r) g.delete_dart(left_0[r]);
-  s.right.resize(0 * rows);
-  g.check_after_rewrite("rule 'remove_face'");
-  return true;
+  rift::packs::topology2d::run_initialisers(g);
 }
 
 // script 'split_along_largest_force' (1 hook(s))
@@ -332,152 +237,11 @@ bool apply_split_along_largest_force(rift::GMap& g, std::span<const rift::Dart> 
   const rift::Vec3 l_f = ([&]() { rift::Vec3 acc0 = rift::Vec3::Zero(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 += ((((e_f_membrane[d_c]).norm() >= l_largest) ? rift::Vec3(e_f_membrane[d_c]) : rift::Vec3(l_zero)) + (((e_f_shear[d_c]).norm() >= l_largest) ? rift::Vec3(e_f_shear[d_c]) : rift::Vec3(l_zero))); }); return acc0; }() + [&]() { rift::Vec3 acc0 = rift::Vec3::Zero(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&](rift::Dart d_x) { acc0 += (((e_f_stretch[d_x]).norm() >= l_largest) ? rift::Vec3(e_f_stretch[d_x]) : rift::Vec3(l_zero)); }); return acc0; }());
   do {
     if (!(((l_f).norm() > 0.0))) continue;
-    split_vertex_args call;
+    rift::packs::topology2d::split_vertex_args call;
     call.normal = (l_f).normalized();
     call.point = e_position[d_v];
     const rift::Dart at[] = {d_v};
-    if (apply_split_vertex(g, at, call, params, touched)) applied = true;
-  } while (false);
-  return applied;
-}
-
-// script 'remove_element' (1 hook(s))
-bool apply_remove_element(rift::GMap& g, std::span<const rift::Dart> hooks, const remove_element_args& args, const Params& params, std::vector<rift::Dart>* touched) {
-  (void)args;
-  (void)params;
-  if (g.dimension() != 2) throw std::invalid_argument("script 'remove_element' needs a G-map of dimension 2");
-  if (hooks.size() != 1) return false;
-  for (rift::Dart h : hooks) {
-    if (!g.is_alive(h)) return false;
-  }
-  [[maybe_unused]] const rift::Dart d_f = hooks[0];
-  bool applied = false;
-  {
-    std::vector<rift::Dart> each;
-    g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{0}, [&](rift::Dart x) { each.push_back(x); });
-    for (const rift::Dart d_e : each) {
-      if (!g.is_alive(d_e)) continue;
-      separate_faces_args call;
-      const rift::Dart at[] = {d_e};
-      if (apply_separate_faces(g, at, call, params, touched)) applied = true;
-    }
-  }
-  do {
-    remove_face_args call;
-    const rift::Dart at[] = {d_f};
-    if (apply_remove_face(g, at, call, params, touched)) applied = true;
-  } while (false);
-  return applied;
-}
-
-// script 'split_vertex' (1 hook(s))
-bool apply_split_vertex(rift::GMap& g, std::span<const rift::Dart> hooks, const split_vertex_args& args, const Params& params, std::vector<rift::Dart>* touched) {
-  (void)args;
-  (void)params;
-  if (g.dimension() != 2) throw std::invalid_argument("script 'split_vertex' needs a G-map of dimension 2");
-  if (hooks.size() != 1) return false;
-  for (rift::Dart h : hooks) {
-    if (!g.is_alive(h)) return false;
-  }
-  [[maybe_unused]] const rift::Dart d_v = hooks[0];
-  auto e_position = require_embedding<rift::Vec3>(g, "position", "script 'split_vertex'");
-  auto e_side = require_embedding<rift::Bool>(g, "side", "script 'split_vertex'");
-  bool applied = false;
-  {
-    std::vector<rift::Dart> each;
-    g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart x) { each.push_back(x); });
-    for (const rift::Dart d_f : each) {
-      if (!g.is_alive(d_f)) continue;
-      e_side[d_f] = (((collect_mean(g, e_position, d_f, rift::Orbit{0, 1}) - args.point)).dot(args.normal) >= 0.0);
-      if (touched) touched->push_back(d_f);
-    }
-  }
-  {
-    std::vector<rift::Dart> each;
-    g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{2}, [&](rift::Dart x) { each.push_back(x); });
-    for (const rift::Dart d_e : each) {
-      if (!g.is_alive(d_e)) continue;
-      if (!((e_side[d_e] != e_side[g.alpha(d_e, 2)]))) continue;
-      separate_faces_args call;
-      const rift::Dart at[] = {d_e};
-      if (apply_separate_faces(g, at, call, params, touched)) applied = true;
-    }
-  }
-  return applied;
-}
-
-// script 'remove_edge_elements' (1 hook(s))
-bool apply_remove_edge_elements(rift::GMap& g, std::span<const rift::Dart> hooks, const remove_edge_elements_args& args, const Params& params, std::vector<rift::Dart>* touched) {
-  (void)args;
-  (void)params;
-  if (g.dimension() != 2) throw std::invalid_argument("script 'remove_edge_elements' needs a G-map of dimension 2");
-  if (hooks.size() != 1) return false;
-  for (rift::Dart h : hooks) {
-    if (!g.is_alive(h)) return false;
-  }
-  [[maybe_unused]] const rift::Dart d_e = hooks[0];
-  bool applied = false;
-  do {
-    remove_element_args call;
-    const rift::Dart at[] = {g.alpha(d_e, 2)};
-    if (apply_remove_element(g, at, call, params, touched)) applied = true;
-  } while (false);
-  do {
-    remove_element_args call;
-    const rift::Dart at[] = {d_e};
-    if (apply_remove_element(g, at, call, params, touched)) applied = true;
-  } while (false);
-  return applied;
-}
-
-// script 'split_edge_end' (1 hook(s))
-bool apply_split_edge_end(rift::GMap& g, std::span<const rift::Dart> hooks, const split_edge_end_args& args, const Params& params, std::vector<rift::Dart>* touched) {
-  (void)args;
-  (void)params;
-  if (g.dimension() != 2) throw std::invalid_argument("script 'split_edge_end' needs a G-map of dimension 2");
-  if (hooks.size() != 1) return false;
-  for (rift::Dart h : hooks) {
-    if (!g.is_alive(h)) return false;
-  }
-  [[maybe_unused]] const rift::Dart d_e = hooks[0];
-  auto e_position = require_embedding<rift::Vec3>(g, "position", "script 'split_edge_end'");
-  bool applied = false;
-  do {
-    split_vertex_args call;
-    call.normal = ((e_position[g.alpha(d_e, 0)] - e_position[d_e])).normalized();
-    call.point = e_position[d_e];
-    const rift::Dart at[] = {d_e};
-    if (apply_split_vertex(g, at, call, params, touched)) applied = true;
-  } while (false);
-  return applied;
-}
-
-// script 'split_ends' (1 hook(s))
-bool apply_split_ends(rift::GMap& g, std::span<const rift::Dart> hooks, const split_ends_args& args, const Params& params, std::vector<rift::Dart>* touched) {
-  (void)args;
-  (void)params;
-  if (g.dimension() != 2) throw std::invalid_argument("script 'split_ends' needs a G-map of dimension 2");
-  if (hooks.size() != 1) return false;
-  for (rift::Dart h : hooks) {
-    if (!g.is_alive(h)) return false;
-  }
-  [[maybe_unused]] const rift::Dart d_a = hooks[0];
-  auto e_position = require_embedding<rift::Vec3>(g, "position", "script 'split_ends'");
-  bool applied = false;
-  do {
-    split_vertex_args call;
-    call.normal = args.normal;
-    call.point = e_position[d_a];
-    const rift::Dart at[] = {d_a};
-    if (apply_split_vertex(g, at, call, params, touched)) applied = true;
-  } while (false);
-  do {
-    if (!(args.both)) continue;
-    split_vertex_args call;
-    call.normal = args.normal;
-    call.point = e_position[g.alpha(d_a, 0)];
-    const rift::Dart at[] = {g.alpha(d_a, 0)};
-    if (apply_split_vertex(g, at, call, params, touched)) applied = true;
+    if (rift::packs::topology2d::apply_split_vertex(g, at, call, {}, touched)) applied = true;
   } while (false);
   return applied;
 }
@@ -507,9 +271,9 @@ void StretchStrainCriterion::collect(const rift::GMap& g, std::vector<rift::Tear
 bool StretchStrainCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
   const rift::Dart d_a = candidate.at;
-  remove_edge_elements_args args;
+  rift::packs::topology2d::remove_edge_elements_args args;
   const rift::Dart hooks[] = {d_a};
-  return apply_remove_edge_elements(g, hooks, args, pack_, &touched);
+  return rift::packs::topology2d::apply_remove_edge_elements(g, hooks, args, {}, &touched);
 }
 
 // ---- criterion 'stretch_force' on rift::Orbit{0}
@@ -535,9 +299,9 @@ void StretchForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
 bool StretchForceCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
   const rift::Dart d_a = candidate.at;
-  remove_edge_elements_args args;
+  rift::packs::topology2d::remove_edge_elements_args args;
   const rift::Dart hooks[] = {d_a};
-  return apply_remove_edge_elements(g, hooks, args, pack_, &touched);
+  return rift::packs::topology2d::apply_remove_edge_elements(g, hooks, args, {}, &touched);
 }
 
 // ---- criterion 'spring_split' on rift::Orbit{0}
@@ -565,11 +329,11 @@ void SpringSplitCriterion::collect(const rift::GMap& g, std::vector<rift::TearCa
 bool SpringSplitCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
   const rift::Dart d_a = candidate.at;
-  split_ends_args args;
+  rift::packs::topology2d::split_ends_args args;
   args.normal = rift::generated::payload_as<rift::Vec3>(candidate, 0);
   args.both = rift::generated::payload_as<bool>(candidate, 3);
   const rift::Dart hooks[] = {d_a};
-  return apply_split_ends(g, hooks, args, pack_, &touched);
+  return rift::packs::topology2d::apply_split_ends(g, hooks, args, {}, &touched);
 }
 
 // ---- criterion 'shear_force' on rift::Orbit{0, 1}
@@ -580,7 +344,7 @@ void ShearForceCriterion::initialise(rift::GMap& g) {
 }
 
 void ShearForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  cells_.collect(g, rift::Orbit{0, 1}, rift::generated::CollectOn::kOneThread, out, [&](rift::Dart d_f, std::vector<rift::TearCandidate>& found) {
+  cells_.collect(g, rift::Orbit{0, 1}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_f, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
     const rift::Real measure = [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, (e_f_shear[d_c]).norm()); }); return acc0; }();
     const rift::Real threshold = p_.threshold;
@@ -595,9 +359,9 @@ void ShearForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCan
 bool ShearForceCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
   const rift::Dart d_f = candidate.at;
-  remove_element_args args;
+  rift::packs::topology2d::remove_element_args args;
   const rift::Dart hooks[] = {d_f};
-  return apply_remove_element(g, hooks, args, pack_, &touched);
+  return rift::packs::topology2d::apply_remove_element(g, hooks, args, {}, &touched);
 }
 
 // ---- criterion 'bend_force' on rift::Orbit{2}
@@ -627,9 +391,9 @@ bool BendForceCriterion::apply(rift::GMap& g, const rift::TearCandidate& candida
   if (!g.is_alive(candidate.at)) return false;
   const rift::Dart d_d = candidate.at;
   if (g.is_free(d_d, 2)) return false;
-  separate_faces_args args;
+  rift::packs::topology2d::separate_faces_args args;
   const rift::Dart hooks[] = {d_d};
-  return apply_separate_faces(g, hooks, args, pack_, &touched);
+  return rift::packs::topology2d::apply_separate_faces(g, hooks, args, {}, &touched);
 }
 
 // ---- criterion 'element_stress' on rift::Orbit{0, 1}
@@ -641,7 +405,7 @@ void ElementStressCriterion::initialise(rift::GMap& g) {
 }
 
 void ElementStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  cells_.collect(g, rift::Orbit{0, 1}, rift::generated::CollectOn::kOneThread, out, [&](rift::Dart d_f, std::vector<rift::TearCandidate>& found) {
+  cells_.collect(g, rift::Orbit{0, 1}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_f, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
     const rift::Real l_area = (0.5 * (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm());
     const rift::Mat3 l_m = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc0; }();
@@ -658,9 +422,9 @@ void ElementStressCriterion::collect(const rift::GMap& g, std::vector<rift::Tear
 bool ElementStressCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
   const rift::Dart d_f = candidate.at;
-  remove_element_args args;
+  rift::packs::topology2d::remove_element_args args;
   const rift::Dart hooks[] = {d_f};
-  return apply_remove_element(g, hooks, args, pack_, &touched);
+  return rift::packs::topology2d::apply_remove_element(g, hooks, args, {}, &touched);
 }
 
 // ---- criterion 'interaction_force' on rift::Orbit{1, 2}
@@ -673,7 +437,7 @@ void InteractionForceCriterion::initialise(rift::GMap& g) {
 }
 
 void InteractionForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kOneThread, out, [&](rift::Dart d_v, std::vector<rift::TearCandidate>& found) {
+  cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_v, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
     const rift::Real measure = std::max<rift::Real>([&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, std::max<rift::Real>((e_f_membrane[d_c]).norm(), (e_f_shear[d_c]).norm())); }); return acc0; }(), [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&](rift::Dart d_x) { acc0 = std::max<rift::Real>(acc0, (e_f_stretch[d_x]).norm()); }); return acc0; }());
     const rift::Real threshold = p_.threshold;
@@ -697,20 +461,22 @@ bool InteractionForceCriterion::apply(rift::GMap& g, const rift::TearCandidate& 
 
 void VertexStressCriterion::initialise(rift::GMap& g) {
   rift::packs::criteria2d::declare_embeddings(g);
-  e_membrane_mass = require_embedding<rift::Real>(g, "membrane_mass", "criterion 'vertex_stress'");
-  e_membrane_stress = require_embedding<rift::Mat3>(g, "membrane_stress", "criterion 'vertex_stress'");
+  e_corner_mass = require_embedding<rift::Real>(g, "corner_mass", "criterion 'vertex_stress'");
+  e_f_membrane = require_embedding<rift::Vec3>(g, "f_membrane", "criterion 'vertex_stress'");
   e_position = require_embedding<rift::Vec3>(g, "position", "criterion 'vertex_stress'");
 }
 
 void VertexStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
+  memo0_.begin(g, rift::Orbit{0, 1});
   cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kOneThread, out, [&](rift::Dart d_v, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
+    const rift::Mat3 s5 = (rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished();
     rift::Mat3 s0 = rift::Mat3::Zero();
     rift::Real s1 = rift::Real(0);
-    for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { s0 += (e_membrane_mass[d_f] * e_membrane_stress[d_f]); s1 += e_membrane_mass[d_f]; });
+    for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s2 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Real { return fold_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}, rift::Orbit{1}); }); const rift::Real s3 = (0.5 * (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm()); const rift::Mat3 s4 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); s0 += (s2 * ((s3 > 0.0) ? rift::Mat3((((-0.5) / s3) * (s4 + (s4).transpose()))) : rift::Mat3(s5))); s1 += s2; });
     const rift::Mat3 l_weighted = s0;
     const rift::Real l_mass = s1;
-    const rift::Mat3 l_s = ((l_mass > 0.0) ? rift::Mat3((l_weighted / l_mass)) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
+    const rift::Mat3 l_s = ((l_mass > 0.0) ? rift::Mat3((l_weighted / l_mass)) : rift::Mat3(s5));
     const rift::Real measure = symmetric_max_eigenvalue(l_s);
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
@@ -726,11 +492,11 @@ void VertexStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
 bool VertexStressCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
   const rift::Dart d_v = candidate.at;
-  split_vertex_args args;
+  rift::packs::topology2d::split_vertex_args args;
   args.normal = rift::generated::payload_as<rift::Vec3>(candidate, 0);
   args.point = rift::generated::payload_as<rift::Vec3>(candidate, 3);
   const rift::Dart hooks[] = {d_v};
-  return apply_split_vertex(g, hooks, args, pack_, &touched);
+  return rift::packs::topology2d::apply_split_vertex(g, hooks, args, {}, &touched);
 }
 
 // ---- criterion 'vertex_energy' on rift::Orbit{1, 2}
@@ -760,7 +526,7 @@ void VertexEnergyCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
     c.at = d_v;
     c.measure = measure - threshold;
     const rift::Mat3 s8 = (rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished();
-    const rift::Mat3 l_weighted = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s5 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s6 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Real { return collect_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}); }); const rift::Mat3 s7 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); acc0 += ((s5 > 0.0) ? rift::Mat3((((s6 * 2.0) / s5) * s7)) : rift::Mat3(s8)); }); return acc0; }();
+    const rift::Mat3 l_weighted = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s5 = (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s6 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Real { return fold_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}, rift::Orbit{1}); }); const rift::Mat3 s7 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); acc0 += ((s5 > 0.0) ? rift::Mat3((((s6 * 2.0) / s5) * s7)) : rift::Mat3(s8)); }); return acc0; }();
     rift::generated::put_payload<rift::Vec3>(c, 0, symmetric_max_eigenvector(((-0.5) * (l_weighted + (l_weighted).transpose()))));  // normal
     rift::generated::put_payload<rift::Vec3>(c, 3, e_position[d_v]);  // point
     found.push_back(c);
@@ -770,11 +536,11 @@ void VertexEnergyCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
 bool VertexEnergyCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
   const rift::Dart d_v = candidate.at;
-  split_vertex_args args;
+  rift::packs::topology2d::split_vertex_args args;
   args.normal = rift::generated::payload_as<rift::Vec3>(candidate, 0);
   args.point = rift::generated::payload_as<rift::Vec3>(candidate, 3);
   const rift::Dart hooks[] = {d_v};
-  return apply_split_vertex(g, hooks, args, pack_, &touched);
+  return rift::packs::topology2d::apply_split_vertex(g, hooks, args, {}, &touched);
 }
 
 // ---- criterion 'vertex_sum' on rift::Orbit{1, 2}
@@ -803,11 +569,11 @@ void VertexSumCriterion::collect(const rift::GMap& g, std::vector<rift::TearCand
 bool VertexSumCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
   const rift::Dart d_v = candidate.at;
-  split_vertex_args args;
+  rift::packs::topology2d::split_vertex_args args;
   args.normal = rift::generated::payload_as<rift::Vec3>(candidate, 0);
   args.point = rift::generated::payload_as<rift::Vec3>(candidate, 3);
   const rift::Dart hooks[] = {d_v};
-  return apply_split_vertex(g, hooks, args, pack_, &touched);
+  return rift::packs::topology2d::apply_split_vertex(g, hooks, args, {}, &touched);
 }
 
 // ---- criterion 'atomic_edge' on rift::Orbit{0, 2}
@@ -829,8 +595,8 @@ void AtomicEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCan
     const rift::Vec3 l_ab = (s0 - e_position[d_a]);
     const rift::Vec3 l_p1 = e_position[g.alpha(g.alpha(d_a, 1), 0)];
     const rift::Vec3 l_p2 = e_position[g.alpha(g.alpha(d_b, 1), 0)];
-    const rift::Vec3 l_f1 = (((((collect_sum(g, e_f_stretch, d_a, rift::Orbit{1}) + collect_sum(g, e_f_stretch, g.alpha(d_a, 0), rift::Orbit{1})) + e_f_shear[d_a]) + e_f_shear[g.alpha(d_a, 0)]) + e_f_membrane[d_a]) + e_f_membrane[g.alpha(d_a, 0)]);
-    const rift::Vec3 l_f2 = (((((collect_sum(g, e_f_stretch, d_b, rift::Orbit{1}) + collect_sum(g, e_f_stretch, g.alpha(d_b, 0), rift::Orbit{1})) + e_f_shear[d_b]) + e_f_shear[g.alpha(d_b, 0)]) + e_f_membrane[d_b]) + e_f_membrane[g.alpha(d_b, 0)]);
+    const rift::Vec3 l_f1 = (((((fold_sum(g, e_f_stretch, d_a, rift::Orbit{1}, rift::Orbit{}) + fold_sum(g, e_f_stretch, g.alpha(d_a, 0), rift::Orbit{1}, rift::Orbit{})) + e_f_shear[d_a]) + e_f_shear[g.alpha(d_a, 0)]) + e_f_membrane[d_a]) + e_f_membrane[g.alpha(d_a, 0)]);
+    const rift::Vec3 l_f2 = (((((fold_sum(g, e_f_stretch, d_b, rift::Orbit{1}, rift::Orbit{}) + fold_sum(g, e_f_stretch, g.alpha(d_b, 0), rift::Orbit{1}, rift::Orbit{})) + e_f_shear[d_b]) + e_f_shear[g.alpha(d_b, 0)]) + e_f_membrane[d_b]) + e_f_membrane[g.alpha(d_b, 0)]);
     const rift::Vec3 l_mid = (0.5 * (e_position[d_a] + s0));
     const bool l_contract = (((l_f1).dot((l_p1 - l_mid)) > 0.0) && ((l_f2).dot((l_p2 - l_mid)) > 0.0));
     const rift::Vec3 l_across = (l_ab).cross(((l_ab).cross((l_p1 - e_position[d_a])) + ((l_p2 - e_position[d_a])).cross(l_ab)));
@@ -849,9 +615,9 @@ bool AtomicEdgeCriterion::apply(rift::GMap& g, const rift::TearCandidate& candid
   if (!g.is_alive(candidate.at)) return false;
   const rift::Dart d_a = candidate.at;
   if (g.is_free(d_a, 2)) return false;
-  separate_faces_args args;
+  rift::packs::topology2d::separate_faces_args args;
   const rift::Dart hooks[] = {d_a};
-  return apply_separate_faces(g, hooks, args, pack_, &touched);
+  return rift::packs::topology2d::apply_separate_faces(g, hooks, args, {}, &touched);
 }
 
 // ---- criterion 'global_edge' on rift::Orbit{0, 2}
@@ -884,31 +650,9 @@ bool GlobalEdgeCriterion::apply(rift::GMap& g, const rift::TearCandidate& candid
   if (!g.is_alive(candidate.at)) return false;
   const rift::Dart d_a = candidate.at;
   if (g.is_free(d_a, 2)) return false;
-  separate_faces_args args;
+  rift::packs::topology2d::separate_faces_args args;
   const rift::Dart hooks[] = {d_a};
-  return apply_separate_faces(g, hooks, args, pack_, &touched);
-}
-
-SeparateFacesRule::SeparateFacesRule(const Params& pack) : pack_(pack) {
-}
-
-bool SeparateFacesRule::apply(rift::GMap& g, std::span<const rift::Dart> hooks, std::span<const rift::Value> args, std::vector<rift::Dart>& touched) {
-  if (args.size() != 0) {
-    throw std::invalid_argument("rule 'separate_faces' takes 0 argument(s), got " + std::to_string(args.size()));
-  }
-  separate_faces_args a;
-  return apply_separate_faces(g, hooks, a, pack_, &touched);
-}
-
-RemoveFaceRule::RemoveFaceRule(const Params& pack) : pack_(pack) {
-}
-
-bool RemoveFaceRule::apply(rift::GMap& g, std::span<const rift::Dart> hooks, std::span<const rift::Value> args, std::vector<rift::Dart>& touched) {
-  if (args.size() != 0) {
-    throw std::invalid_argument("rule 'remove_face' takes 0 argument(s), got " + std::to_string(args.size()));
-  }
-  remove_face_args a;
-  return apply_remove_face(g, hooks, a, pack_, &touched);
+  return rift::packs::topology2d::apply_separate_faces(g, hooks, args, {}, &touched);
 }
 
 SplitAlongLargestForceRule::SplitAlongLargestForceRule(const Params& pack) : pack_(pack) {
@@ -922,74 +666,7 @@ bool SplitAlongLargestForceRule::apply(rift::GMap& g, std::span<const rift::Dart
   return apply_split_along_largest_force(g, hooks, a, pack_, &touched);
 }
 
-RemoveElementRule::RemoveElementRule(const Params& pack) : pack_(pack) {
-}
-
-bool RemoveElementRule::apply(rift::GMap& g, std::span<const rift::Dart> hooks, std::span<const rift::Value> args, std::vector<rift::Dart>& touched) {
-  if (args.size() != 0) {
-    throw std::invalid_argument("rule 'remove_element' takes 0 argument(s), got " + std::to_string(args.size()));
-  }
-  remove_element_args a;
-  return apply_remove_element(g, hooks, a, pack_, &touched);
-}
-
-SplitVertexRule::SplitVertexRule(const Params& pack) : pack_(pack) {
-  specs_ = {
-    {"normal", rift::ValueType::kVec3, std::nullopt, "", false, false},
-    {"point", rift::ValueType::kVec3, std::nullopt, "", false, false},
-  };
-}
-
-bool SplitVertexRule::apply(rift::GMap& g, std::span<const rift::Dart> hooks, std::span<const rift::Value> args, std::vector<rift::Dart>& touched) {
-  if (args.size() != 2) {
-    throw std::invalid_argument("rule 'split_vertex' takes 2 argument(s), got " + std::to_string(args.size()));
-  }
-  split_vertex_args a;
-  a.normal = value_as<rift::Vec3>(args[0], "argument 'normal' of rule 'split_vertex'");
-  a.point = value_as<rift::Vec3>(args[1], "argument 'point' of rule 'split_vertex'");
-  return apply_split_vertex(g, hooks, a, pack_, &touched);
-}
-
-RemoveEdgeElementsRule::RemoveEdgeElementsRule(const Params& pack) : pack_(pack) {
-}
-
-bool RemoveEdgeElementsRule::apply(rift::GMap& g, std::span<const rift::Dart> hooks, std::span<const rift::Value> args, std::vector<rift::Dart>& touched) {
-  if (args.size() != 0) {
-    throw std::invalid_argument("rule 'remove_edge_elements' takes 0 argument(s), got " + std::to_string(args.size()));
-  }
-  remove_edge_elements_args a;
-  return apply_remove_edge_elements(g, hooks, a, pack_, &touched);
-}
-
-SplitEdgeEndRule::SplitEdgeEndRule(const Params& pack) : pack_(pack) {
-}
-
-bool SplitEdgeEndRule::apply(rift::GMap& g, std::span<const rift::Dart> hooks, std::span<const rift::Value> args, std::vector<rift::Dart>& touched) {
-  if (args.size() != 0) {
-    throw std::invalid_argument("rule 'split_edge_end' takes 0 argument(s), got " + std::to_string(args.size()));
-  }
-  split_edge_end_args a;
-  return apply_split_edge_end(g, hooks, a, pack_, &touched);
-}
-
-SplitEndsRule::SplitEndsRule(const Params& pack) : pack_(pack) {
-  specs_ = {
-    {"normal", rift::ValueType::kVec3, std::nullopt, "", false, false},
-    {"both", rift::ValueType::kBool, std::nullopt, "", false, false},
-  };
-}
-
-bool SplitEndsRule::apply(rift::GMap& g, std::span<const rift::Dart> hooks, std::span<const rift::Value> args, std::vector<rift::Dart>& touched) {
-  if (args.size() != 2) {
-    throw std::invalid_argument("rule 'split_ends' takes 2 argument(s), got " + std::to_string(args.size()));
-  }
-  split_ends_args a;
-  a.normal = value_as<rift::Vec3>(args[0], "argument 'normal' of rule 'split_ends'");
-  a.both = value_as<bool>(args[1], "argument 'both' of rule 'split_ends'");
-  return apply_split_ends(g, hooks, a, pack_, &touched);
-}
-
-Pack::Pack(const Params& params) : params_(params), description_("2D tearing criteria (§5): atomic, cumulative and element separation, with their rewrites.") {
+Pack::Pack(const Params& params) : params_(params), description_("2D tearing criteria (§5): atomic, cumulative and element separation, applying the rewrites of topology2d.") {
   embeddings_.push_back({"stretch_rest", rift::ValueType::kReal, rift::Orbit{0}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"membrane_mu", rift::ValueType::kReal, rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"membrane_lambda", rift::ValueType::kReal, rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
@@ -1002,8 +679,6 @@ Pack::Pack(const Params& params) : params_(params), description_("2D tearing cri
   embeddings_.push_back({"f_abend", rift::ValueType::kVec3, rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_abend_wing", rift::ValueType::kVec3, rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_membrane", rift::ValueType::kVec3, rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
-  embeddings_.push_back({"membrane_stress", rift::ValueType::kMat3, rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()))});
-  embeddings_.push_back({"membrane_mass", rift::ValueType::kReal, rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"position", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kMean, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"corner_mass", rift::ValueType::kReal, rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"vertex_force", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
@@ -1031,7 +706,7 @@ Pack::Pack(const Params& params) : params_(params), description_("2D tearing cri
   }, kDimension, {}, {"f_membrane", "f_shear", "f_stretch", "position"}});
   catalog_.criteria.push_back({"vertex_stress", "The vertex stress tensor (mass-weighted mean of its elements', eq. 1-2) has an eigenvalue past the threshold: split perpendicular to its eigenvector (§5.2). (on <1,2>; applies rule split_vertex)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(100.0)), "N/m", true, false},
-  }, kDimension, {}, {"membrane_mass", "membrane_stress", "position", "side"}});
+  }, kDimension, {}, {"corner_mass", "position", "f_membrane", "side"}});
   catalog_.criteria.push_back({"vertex_energy", "Griffith at the mesh scale: the strain energy of a vertex's share of its membrane triangles per unit of its size passes the toughness: split perpendicular to the largest principal stress. (on <1,2>; applies rule split_vertex)", {
     {"toughness", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N/m (energy release rate times thickness)", true, false},
   }, kDimension, {}, {"membrane_mu", "position", "f_membrane", "membrane_lambda", "corner_mass", "side"}});
@@ -1047,7 +722,7 @@ Pack::Pack(const Params& params) : params_(params), description_("2D tearing cri
 }
 
 std::vector<std::string> Pack::rule_names() const {
-  return {"separate_faces", "remove_face", "split_along_largest_force", "remove_element", "split_vertex", "remove_edge_elements", "split_edge_end", "split_ends"};
+  return {"split_along_largest_force"};
 }
 
 void Pack::initialise(rift::GMap& map) const {
@@ -1101,19 +776,14 @@ std::unique_ptr<rift::Criterion> Pack::make_criterion(const rift::ComponentUse& 
 
 std::unique_ptr<rift::Rule> Pack::make_rule(const std::string& name) const {
   (void)name;
-  if (name == "separate_faces") return std::make_unique<SeparateFacesRule>(params_);
-  if (name == "remove_face") return std::make_unique<RemoveFaceRule>(params_);
   if (name == "split_along_largest_force") return std::make_unique<SplitAlongLargestForceRule>(params_);
-  if (name == "remove_element") return std::make_unique<RemoveElementRule>(params_);
-  if (name == "split_vertex") return std::make_unique<SplitVertexRule>(params_);
-  if (name == "remove_edge_elements") return std::make_unique<RemoveEdgeElementsRule>(params_);
-  if (name == "split_edge_end") return std::make_unique<SplitEdgeEndRule>(params_);
-  if (name == "split_ends") return std::make_unique<SplitEndsRule>(params_);
   return nullptr;
 }
 
 }  // namespace rift::packs::criteria2d
 
 void rift_register_pack_criteria2d(rift::PackRegistry& registry) {
+  if (registry.find("criteria2d")) return;
   registry.add(std::make_unique<rift::packs::criteria2d::Pack>());
+  rift_register_pack_topology2d(registry);
 }

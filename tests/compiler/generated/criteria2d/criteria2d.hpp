@@ -23,25 +23,7 @@ inline constexpr int kDimension = 2;
 struct Params {
 };
 
-struct separate_faces_args {
-};
-struct remove_face_args {
-};
 struct split_along_largest_force_args {
-};
-struct remove_element_args {
-};
-struct split_vertex_args {
-  rift::Vec3 normal = rift::Vec3::Zero();
-  rift::Vec3 point = rift::Vec3::Zero();
-};
-struct remove_edge_elements_args {
-};
-struct split_edge_end_args {
-};
-struct split_ends_args {
-  rift::Vec3 normal = rift::Vec3::Zero();
-  bool both = false;
 };
 
 /// Adds every embedding the pack declares that the map does not have yet.
@@ -50,24 +32,8 @@ void declare_embeddings(rift::GMap& g);
 /// Runs the pack's initialisers, in the order they are written.
 void run_initialisers(rift::GMap& g, const Params& params = {});
 
-/// Rule 'separate_faces': true when it matched at `hooks` and was applied; every dart it created,
-/// relinked, deleted or moved to another embedding slot is appended to `touched`.
-bool apply_separate_faces(rift::GMap& g, std::span<const rift::Dart> hooks, const separate_faces_args& args = {}, const Params& params = {}, std::vector<rift::Dart>* touched = nullptr);
-/// Rule 'remove_face': true when it matched at `hooks` and was applied; every dart it created,
-/// relinked, deleted or moved to another embedding slot is appended to `touched`.
-bool apply_remove_face(rift::GMap& g, std::span<const rift::Dart> hooks, const remove_face_args& args = {}, const Params& params = {}, std::vector<rift::Dart>* touched = nullptr);
 /// Script 'split_along_largest_force': true when one of its applications applied.
 bool apply_split_along_largest_force(rift::GMap& g, std::span<const rift::Dart> hooks, const split_along_largest_force_args& args = {}, const Params& params = {}, std::vector<rift::Dart>* touched = nullptr);
-/// Script 'remove_element': true when one of its applications applied.
-bool apply_remove_element(rift::GMap& g, std::span<const rift::Dart> hooks, const remove_element_args& args = {}, const Params& params = {}, std::vector<rift::Dart>* touched = nullptr);
-/// Script 'split_vertex': true when one of its applications applied.
-bool apply_split_vertex(rift::GMap& g, std::span<const rift::Dart> hooks, const split_vertex_args& args = {}, const Params& params = {}, std::vector<rift::Dart>* touched = nullptr);
-/// Script 'remove_edge_elements': true when one of its applications applied.
-bool apply_remove_edge_elements(rift::GMap& g, std::span<const rift::Dart> hooks, const remove_edge_elements_args& args = {}, const Params& params = {}, std::vector<rift::Dart>* touched = nullptr);
-/// Script 'split_edge_end': true when one of its applications applied.
-bool apply_split_edge_end(rift::GMap& g, std::span<const rift::Dart> hooks, const split_edge_end_args& args = {}, const Params& params = {}, std::vector<rift::Dart>* touched = nullptr);
-/// Script 'split_ends': true when one of its applications applied.
-bool apply_split_ends(rift::GMap& g, std::span<const rift::Dart> hooks, const split_ends_args& args = {}, const Params& params = {}, std::vector<rift::Dart>* touched = nullptr);
 
 /// Parameters given by the scene.
 struct StretchStrainParams {
@@ -390,38 +356,6 @@ class GlobalEdgeCriterion final : public rift::Criterion {
   mutable rift::generated::CellCollection cells_;
 };
 
-/// Rule 'separate_faces' as a rift::Rule: arguments by position.
-class SeparateFacesRule final : public rift::Rule {
- public:
-  explicit SeparateFacesRule(const Params& pack = {});
-  const std::string& name() const override { return name_; }
-  int hook_count() const override { return 1; }
-  const std::vector<rift::ParamSpec>& params() const override { return specs_; }
-  bool apply(rift::GMap& g, std::span<const rift::Dart> hooks,
-             std::span<const rift::Value> args, std::vector<rift::Dart>& touched) override;
-
- private:
-  std::string name_ = "separate_faces";
-  [[maybe_unused]] Params pack_;
-  std::vector<rift::ParamSpec> specs_;
-};
-
-/// Rule 'remove_face' as a rift::Rule: arguments by position.
-class RemoveFaceRule final : public rift::Rule {
- public:
-  explicit RemoveFaceRule(const Params& pack = {});
-  const std::string& name() const override { return name_; }
-  int hook_count() const override { return 1; }
-  const std::vector<rift::ParamSpec>& params() const override { return specs_; }
-  bool apply(rift::GMap& g, std::span<const rift::Dart> hooks,
-             std::span<const rift::Value> args, std::vector<rift::Dart>& touched) override;
-
- private:
-  std::string name_ = "remove_face";
-  [[maybe_unused]] Params pack_;
-  std::vector<rift::ParamSpec> specs_;
-};
-
 /// Rule 'split_along_largest_force' as a rift::Rule: arguments by position.
 class SplitAlongLargestForceRule final : public rift::Rule {
  public:
@@ -434,86 +368,6 @@ class SplitAlongLargestForceRule final : public rift::Rule {
 
  private:
   std::string name_ = "split_along_largest_force";
-  [[maybe_unused]] Params pack_;
-  std::vector<rift::ParamSpec> specs_;
-};
-
-/// Rule 'remove_element' as a rift::Rule: arguments by position.
-class RemoveElementRule final : public rift::Rule {
- public:
-  explicit RemoveElementRule(const Params& pack = {});
-  const std::string& name() const override { return name_; }
-  int hook_count() const override { return 1; }
-  const std::vector<rift::ParamSpec>& params() const override { return specs_; }
-  bool apply(rift::GMap& g, std::span<const rift::Dart> hooks,
-             std::span<const rift::Value> args, std::vector<rift::Dart>& touched) override;
-
- private:
-  std::string name_ = "remove_element";
-  [[maybe_unused]] Params pack_;
-  std::vector<rift::ParamSpec> specs_;
-};
-
-/// Rule 'split_vertex' as a rift::Rule: arguments by position.
-class SplitVertexRule final : public rift::Rule {
- public:
-  explicit SplitVertexRule(const Params& pack = {});
-  const std::string& name() const override { return name_; }
-  int hook_count() const override { return 1; }
-  const std::vector<rift::ParamSpec>& params() const override { return specs_; }
-  bool apply(rift::GMap& g, std::span<const rift::Dart> hooks,
-             std::span<const rift::Value> args, std::vector<rift::Dart>& touched) override;
-
- private:
-  std::string name_ = "split_vertex";
-  [[maybe_unused]] Params pack_;
-  std::vector<rift::ParamSpec> specs_;
-};
-
-/// Rule 'remove_edge_elements' as a rift::Rule: arguments by position.
-class RemoveEdgeElementsRule final : public rift::Rule {
- public:
-  explicit RemoveEdgeElementsRule(const Params& pack = {});
-  const std::string& name() const override { return name_; }
-  int hook_count() const override { return 1; }
-  const std::vector<rift::ParamSpec>& params() const override { return specs_; }
-  bool apply(rift::GMap& g, std::span<const rift::Dart> hooks,
-             std::span<const rift::Value> args, std::vector<rift::Dart>& touched) override;
-
- private:
-  std::string name_ = "remove_edge_elements";
-  [[maybe_unused]] Params pack_;
-  std::vector<rift::ParamSpec> specs_;
-};
-
-/// Rule 'split_edge_end' as a rift::Rule: arguments by position.
-class SplitEdgeEndRule final : public rift::Rule {
- public:
-  explicit SplitEdgeEndRule(const Params& pack = {});
-  const std::string& name() const override { return name_; }
-  int hook_count() const override { return 1; }
-  const std::vector<rift::ParamSpec>& params() const override { return specs_; }
-  bool apply(rift::GMap& g, std::span<const rift::Dart> hooks,
-             std::span<const rift::Value> args, std::vector<rift::Dart>& touched) override;
-
- private:
-  std::string name_ = "split_edge_end";
-  [[maybe_unused]] Params pack_;
-  std::vector<rift::ParamSpec> specs_;
-};
-
-/// Rule 'split_ends' as a rift::Rule: arguments by position.
-class SplitEndsRule final : public rift::Rule {
- public:
-  explicit SplitEndsRule(const Params& pack = {});
-  const std::string& name() const override { return name_; }
-  int hook_count() const override { return 1; }
-  const std::vector<rift::ParamSpec>& params() const override { return specs_; }
-  bool apply(rift::GMap& g, std::span<const rift::Dart> hooks,
-             std::span<const rift::Value> args, std::vector<rift::Dart>& touched) override;
-
- private:
-  std::string name_ = "split_ends";
   [[maybe_unused]] Params pack_;
   std::vector<rift::ParamSpec> specs_;
 };
@@ -545,5 +399,6 @@ class Pack final : public rift::Pack {
 
 }  // namespace rift::packs::criteria2d
 
-/// Adds the pack to a simulator's registry (rift_add_simulator calls it).
+/// Adds the pack, unless registered already, and the packs it imports to a simulator's
+/// registry (rift_add_simulator calls it).
 void rift_register_pack_criteria2d(rift::PackRegistry& registry);

@@ -640,5 +640,6 @@ std::unique_ptr<rift::Rule> Pack::make_rule(const std::string& name) const {
 }  // namespace rift::packs::fem3d
 
 void rift_register_pack_fem3d(rift::PackRegistry& registry) {
+  if (registry.find("fem3d")) return;
   registry.add(std::make_unique<rift::packs::fem3d::Pack>());
 }

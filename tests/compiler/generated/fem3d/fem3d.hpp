@@ -151,5 +151,6 @@ class Pack final : public rift::Pack {
 
 }  // namespace rift::packs::fem3d
 
-/// Adds the pack to a simulator's registry (rift_add_simulator calls it).
+/// Adds the pack, unless registered already, and the packs it imports to a simulator's
+/// registry (rift_add_simulator calls it).
 void rift_register_pack_fem3d(rift::PackRegistry& registry);

@@ -2475,5 +2475,6 @@ std::unique_ptr<rift::Rule> Pack::make_rule(const std::string& name) const {
 }  // namespace rift::packs::mass_spring3d
 
 void rift_register_pack_mass_spring3d(rift::PackRegistry& registry) {
+  if (registry.find("mass_spring3d")) return;
   registry.add(std::make_unique<rift::packs::mass_spring3d::Pack>());
 }

@@ -344,5 +344,6 @@ class Pack final : public rift::Pack {
 
 }  // namespace rift::packs::mass_spring3d
 
-/// Adds the pack to a simulator's registry (rift_add_simulator calls it).
+/// Adds the pack, unless registered already, and the packs it imports to a simulator's
+/// registry (rift_add_simulator calls it).
 void rift_register_pack_mass_spring3d(rift::PackRegistry& registry);

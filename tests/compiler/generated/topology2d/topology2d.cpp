@@ -223,7 +223,7 @@ bool apply_split_vertex(rift::GMap& g, std::span<const rift::Dart> hooks, const 
     g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart x) { each.push_back(x); });
     for (const rift::Dart d_f : each) {
       if (!g.is_alive(d_f)) continue;
-      e_side[d_f] = (((collect_mean(g, e_position, d_f, rift::Orbit{0, 1}) - args.point)).dot(args.normal) >= 0.0);
+      e_side[d_f] = (((fold_mean(g, e_position, d_f, rift::Orbit{0, 1}, rift::Orbit{1}) - args.point)).dot(args.normal) >= 0.0);
       if (touched) touched->push_back(d_f);
     }
   }
@@ -453,5 +453,6 @@ std::unique_ptr<rift::Rule> Pack::make_rule(const std::string& name) const {
 }  // namespace rift::packs::topology2d
 
 void rift_register_pack_topology2d(rift::PackRegistry& registry) {
+  if (registry.find("topology2d")) return;
   registry.add(std::make_unique<rift::packs::topology2d::Pack>());
 }

@@ -204,5 +204,6 @@ class Pack final : public rift::Pack {
 
 }  // namespace rift::packs::topology2d
 
-/// Adds the pack to a simulator's registry (rift_add_simulator calls it).
+/// Adds the pack, unless registered already, and the packs it imports to a simulator's
+/// registry (rift_add_simulator calls it).
 void rift_register_pack_topology2d(rift::PackRegistry& registry);
