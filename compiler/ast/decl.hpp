@@ -106,6 +106,10 @@ struct Interaction {
   std::vector<ExprPtr> whens;
   std::vector<BodyStmt> body;  // lets and whens in source order
   std::vector<Assign> forces;
+  /// `store n.E = value;`: a value of the force pass (an element's stress)
+  /// written into E at n's orbit on the evaluation whose forces are stored,
+  /// for criteria to read; it adds nothing to any force.
+  std::vector<Assign> stores;
   std::vector<JacobianBlock> jacobians;  // blocks the rule gives explicitly
   ExprPtr energy;
   /// `semidefinite;`: the rule's author states that -∂f/∂x and -∂f/∂v of

@@ -46,6 +46,8 @@ void check_kernels(const ast::Program& program, const resolve::Symbols& /*symbol
         kc.expr(*w);
       for (const auto& f : inter.forces)
         kc.expr(*f.value);
+      for (const auto& st : inter.stores)
+        kc.expr(*st.value);
       for (const auto& j : inter.jacobians)
         kc.expr(*j.value);
       if (inter.energy) kc.expr(*inter.energy);

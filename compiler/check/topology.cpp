@@ -333,8 +333,9 @@ std::string word_text(const std::vector<int>& word) {
   return out;
 }
 
-/// Each stored force orbit belongs to exactly one match (matches run in
-/// parallel and write stored forces without synchronisation). A match is one
+/// Each stored force orbit, and each orbit a `store` writes, belongs to
+/// exactly one match (matches run in parallel and write them without
+/// synchronisation). A match is one
 /// orbit of the support, reached from one dart c; a node of the pattern is
 /// c followed by the alpha word of its path from the hook. Two matches write
 /// the same place only if (a) the stored orbit is not inside the support
@@ -366,7 +367,19 @@ void check_force_ownership(const ast::Interaction& inter, const RuleGraph& g,
   }
   const std::vector<int>& support = inter.support.dims;
   std::vector<const ast::Assign*> darts;  // stores into embeddings on <>
-  for (const ast::Assign& f : inter.forces) {
+  std::vector<const ast::Assign*> written;
+  written.reserve(inter.forces.size() + inter.stores.size());
+  for (const ast::Assign& f : inter.forces)
+    written.push_back(&f);
+  for (const ast::Assign& st : inter.stores)
+    written.push_back(&st);
+  auto kind = [&](const ast::Assign& a) {
+    const bool store = std::any_of(inter.stores.begin(), inter.stores.end(),
+                                   [&](const ast::Assign& st) { return &st == &a; });
+    return std::string(store ? "stored values" : "stored forces");
+  };
+  for (const ast::Assign* fp : written) {
+    const ast::Assign& f = *fp;
     const ast::Embedding* target = symbols.target(f);
     if (!target) continue;
     const int node = side.find(f.node.text);
@@ -382,7 +395,7 @@ void check_force_ownership(const ast::Interaction& inter, const RuleGraph& g,
                "'" + f.embedding.text + "' is stored per orbit " + orbit_text(target->orbit.dims) +
                    " at '" + f.node.text + "', which is not inside the support orbit " +
                    orbit_text(inter.support.dims) + " of the match: two matches could store into " +
-                   "the same orbit (stored forces are written, not added); store it on an " +
+                   "the same orbit (" + kind(f) + " are written, not added); store it on an " +
                    "orbit inside the support, or on darts")
         .notes.push_back({target->orbit.loc, "its orbit"});
   }
@@ -403,7 +416,7 @@ void check_force_ownership(const ast::Interaction& inter, const RuleGraph& g,
                      b.node.text + "', which are " + a.node.text + word_text(between) +
                      " apart, outside the support orbit " + orbit_text(inter.support.dims) +
                      ": the '" + a.node.text + "' of one match can be the '" + b.node.text +
-                     "' of another, and both write it (stored forces are written, not added)")
+                     "' of another, and both write it (" + kind(b) + " are written, not added)")
           .notes.push_back({a.embedding.loc, "the other store"});
     }
   }

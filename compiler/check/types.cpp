@@ -330,6 +330,44 @@ void reject_mass_init(const ast::Init& init, diag::Diagnostics& diags) {
                   "remove this init");
 }
 
+/// A `store` writes an embedding no other statement of the simulation
+/// writes: not the simulator's state (positions, masses, ... are its own),
+/// not a force of the same interaction, not one of its inits' embeddings,
+/// and no two stores of the interaction the same embedding at the same node.
+void check_stored_value(const ast::Interaction& inter, const ast::Assign& st,
+                        diag::Diagnostics& diags) {
+  const std::string& name = st.embedding.text;
+  if (state::find(name) != nullptr) {
+    diags.error(st.embedding.loc, "'" + name +
+                                      "' is the simulator's state and cannot be stored by an "
+                                      "interaction; store into an embedding of the pack");
+    return;
+  }
+  for (const ast::Assign& f : inter.forces) {
+    if (f.embedding.text != name) continue;
+    diags
+        .error(st.embedding.loc, "'" + name + "' is a force of interaction '" + inter.name.text +
+                                     "'; a store cannot also write it")
+        .notes.push_back({f.embedding.loc, "the force"});
+    return;
+  }
+  for (const ast::Init& init : inter.inits) {
+    if (init.embedding.text != name) continue;
+    diags
+        .error(st.embedding.loc, "'" + name + "' is initialised by interaction '" +
+                                     inter.name.text + "'; a store would overwrite it")
+        .notes.push_back({init.embedding.loc, "the init"});
+    return;
+  }
+  for (const ast::Assign& other : inter.stores) {
+    if (&other == &st) break;
+    if (other.embedding.text != name || other.node.text != st.node.text) continue;
+    diags.error(st.embedding.loc, "'" + name + "' is stored twice at '" + st.node.text + "'")
+        .notes.push_back({other.embedding.loc, "the first store"});
+    return;
+  }
+}
+
 void check_component_params(const std::vector<ast::Param>& params, TypeChecker& tc,
                             diag::Diagnostics& diags) {
   for (const ast::Param& p : params) {
@@ -520,6 +558,10 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols, E
                                           "' must hold vec3 values, not " + str(target->type))
               .notes.push_back({target->name.loc, "declared here"});
         }
+      }
+      for (const auto& st : inter.stores) {
+        check_assign(st, symbols, tc, "the stored value of");
+        check_stored_value(inter, st, diags);
       }
       for (const auto& j : inter.jacobians)
         tc.expect(*j.value, Type::Mat3, "a Jacobian block");

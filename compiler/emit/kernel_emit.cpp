@@ -62,6 +62,11 @@ std::string force_field(const ir::Body& body, const ir::Force& f) {
   return f.embedding + "_" + body.nodes[static_cast<std::size_t>(f.node)];
 }
 
+/// The field of Result a `store` is returned in: `stored_fem_stress_c0`.
+std::string store_field(const ir::Body& body, const ir::Store& st) {
+  return "stored_" + st.embedding + "_" + body.nodes[static_cast<std::size_t>(st.node)];
+}
+
 struct Kernel {
   const InteractionPlan* plan = nullptr;
   const ast::Interaction* inter = nullptr;
@@ -94,6 +99,8 @@ Kernel kernel_of(const InteractionPlan& plan) {
     scan(s.cond);
   for (const ir::Force& f : b.forces)
     scan(f.value);
+  for (const ir::Store& st : b.stores)
+    scan(st.value);
   scan(b.energy);
   // What the forces depend on besides the state: every read of the lets,
   // whens and forces (the energy is never grouped).
@@ -333,7 +340,7 @@ void write_evaluate(Writer& w, const Kernel& k) {
   for (const ir::Force& f : b.forces)
     lets_used(b, f.value, by_force);
   lets_used(b, b.energy, by_energy);
-  w.line("template <bool kForces>");
+  w.line(b.stores.empty() ? "template <bool kForces>" : "template <bool kForces, bool kStores>");
   w.open("inline bool " + k.cls + "::evaluate(" +
          std::string(k.slots.empty() ? "const Match& /*m*/" : "const Match& m") + ", " +
          (k.reads_state ? "const rift::ForceInput& in" : "const rift::ForceInput& /*in*/") + ", " +
@@ -342,8 +349,12 @@ void write_evaluate(Writer& w, const Kernel& k) {
   std::vector<ir::ExprId> roots = statement_roots(b);
   for (const ir::Force& f : b.forces)
     roots.push_back(f.value);
+  for (const ir::Store& st : b.stores)
+    roots.push_back(st.value);
   roots.push_back(b.energy);
   BodyRenderer values(b.graph, b.sharing, ctx, roots);
+  // Forces and stored values are the force pass's results (kForces).
+  const bool results = !b.forces.empty() || !b.stores.empty();
   for (const ir::Stmt& s : b.stmts) {
     if (s.kind == ir::Stmt::Kind::When) {
       write_rendered(w, values, s.loc, "if (!", s.cond, ") return false;");
@@ -360,23 +371,33 @@ void write_evaluate(Writer& w, const Kernel& k) {
                    l.value, ";");
     values.computed(l.value, let_name(l.name));
   }
-  if (!b.forces.empty() && has_energy) {
+  if (results && has_energy) {
     w.open("if constexpr (kForces) {");
-  } else if (!b.forces.empty()) {
+  } else if (results) {
     w.open("{");
   }
   values.open_block();
   for (const ir::Force& f : b.forces)
     write_rendered(w, values, f.loc, "r." + force_field(b, f) + " = ", f.value, ";");
+  if (!b.stores.empty()) {
+    // Only on the evaluation whose forces are stored (the integrator's
+    // other stages do not compute them).
+    w.open("if constexpr (kStores) {");
+    values.open_block();
+    for (const ir::Store& st : b.stores)
+      write_rendered(w, values, st.loc, "r." + store_field(b, st) + " = ", st.value, ";");
+    values.close_block();
+    w.close();
+  }
   values.close_block();
   if (has_energy) {
-    if (!b.forces.empty()) w.middle("} else {");
-    if (b.forces.empty()) w.open("if constexpr (!kForces) {");
+    if (results) w.middle("} else {");
+    if (!results) w.open("if constexpr (!kForces) {");
     values.open_block();
     write_rendered(w, values, k.inter->energy->loc, "r.energy = ", b.energy, ";");
     values.close_block();
   }
-  if (!b.forces.empty() || has_energy) w.close();
+  if (results || has_energy) w.close();
   w.line("return true;");
   w.close();
   w.line();
@@ -388,9 +409,13 @@ void write_evaluate(Writer& w, const Kernel& k) {
 void write_add_forces_all(Writer& w, const Kernel& k) {
   const ir::Body& b = k.plan->body;
   const bool forces = !b.forces.empty();
+  const bool stores_values = !b.stores.empty();
   w.open("void " + k.cls +
          "::add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, " +
-         (forces ? "rift::Vec3* f, bool store" : "rift::Vec3* /*f*/, bool /*store*/") + ") {");
+         (forces          ? "rift::Vec3* f, bool store"
+          : stores_values ? "rift::Vec3* /*f*/, bool store"
+                          : "rift::Vec3* /*f*/, bool /*store*/") +
+         ") {");
   w.line("const Columns c = columns();");
   std::set<std::string> stores;
   for (const ir::Force& f : b.forces)
@@ -400,28 +425,62 @@ void write_add_forces_all(Writer& w, const Kernel& k) {
   for (const std::string& e : stores)
     w.line("rift::Vec3* const stored_" + e + " = store ? " + embedding_var(e) +
            ".values().data() : nullptr;");
+  std::set<std::string> values;
+  for (const ir::Store& st : b.stores)
+    if (!stores.contains(st.embedding)) values.insert(st.embedding);
+  for (const std::string& e : values)
+    w.line("auto* const stored_" + e + " = store ? " + embedding_var(e) +
+           ".values().data() : nullptr;");
+  auto store_at = [&](const ir::Store& st) {
+    return "stored_" + st.embedding + "[m." + k.slots[static_cast<std::size_t>(st.store_slot)] +
+           "]";
+  };
+  // With stored values, one loop per kind of evaluation (storing or not),
+  // each with its own instantiation of the body: the integrator's other
+  // stages run the loop they had without stores.
+  const std::string if_store = stores_values ? "if constexpr (kStore) " : "if (store) ";
+  // Not inlined: two instantiations of the body in one function exceed the
+  // inliner's growth limits, and the matrix products of both would be calls.
+  if (stores_values) w.open("auto pass = [&]<bool kStore>() __attribute__((noinline)) {");
   w.open("for (const Match& m : ms) {");
   w.line("Result r;");
-  if (forces) {
-    w.open("if (!evaluate<true>(m, in, c, r)) {");
-    w.open("if (store) {");
+  if (forces || stores_values) {
+    w.open(stores_values ? "if (!evaluate<true, kStore>(m, in, c, r)) {"
+                         : "if (!evaluate<true>(m, in, c, r)) {");
+    w.open(if_store + "{");
     for (const ir::Force& f : b.forces) {
       w.line("stored_" + f.embedding + "[m." + k.slots[static_cast<std::size_t>(f.store_slot)] +
              "] = rift::Vec3::Zero();");
     }
+    for (const ir::Store& st : b.stores)
+      w.line(store_at(st) + " = " + embedding_var(st.embedding) + ".default_value();");
     w.close();
     w.line("continue;");
     w.close();
     for (const ir::Force& f : b.forces) {
       const std::string field = std::string("r.") + force_field(b, f);
       w.line("f[m." + k.slots[static_cast<std::size_t>(f.vertex_slot)] + "] += " + field + ";");
-      w.line("if (store) stored_" + f.embedding + "[m." +
+      w.line(if_store + "stored_" + f.embedding + "[m." +
              k.slots[static_cast<std::size_t>(f.store_slot)] + "] = " + field + ";");
+    }
+    if (stores_values) {
+      w.open(if_store + "{");
+      for (const ir::Store& st : b.stores)
+        w.line(store_at(st) + " = r." + store_field(b, st) + ";");
+      w.close();
     }
   } else {
     w.line("(void)evaluate<true>(m, in, c, r);");
   }
   w.close();
+  if (stores_values) {
+    w.close("};");
+    w.line("if (store) {");
+    w.line("  pass.template operator()<true>();");
+    w.line("} else {");
+    w.line("  pass.template operator()<false>();");
+    w.line("}");
+  }
   w.close();
   w.line();
 }
@@ -539,12 +598,20 @@ template <class PerForce>
 void write_tangents(Writer& w, const ir::Body& b, const lower::TangentPass& pass,
                     BodyRenderer& values, PerForce&& per_force) {
   const std::vector<bool> needed = reachable(b.graph, pass.forces);
+  // A let only a `store` or the energy reads has no tangent to write, even
+  // when its value is a node the forces' tangents share.
+  std::vector<bool> by_forces(b.lets.size());
+  for (const ir::Force& f : b.forces)
+    lets_used(b, f.value, by_forces);
+  for (const ir::Stmt& s : b.stmts)
+    if (s.kind == ir::Stmt::Kind::When) lets_used(b, s.cond, by_forces);
   std::set<ir::ExprId> written;
   for (const ir::Stmt& s : b.stmts) {
     if (s.kind != ir::Stmt::Kind::Let) continue;
     const auto i = static_cast<std::size_t>(s.let);
     const ir::ExprId t = pass.lets[i];
-    if (t == ir::kNoExpr || !needed[static_cast<std::size_t>(t)] || !written.insert(t).second)
+    if (t == ir::kNoExpr || !by_forces[i] || !needed[static_cast<std::size_t>(t)] ||
+        !written.insert(t).second)
       continue;
     const ir::Let& l = b.lets[i];
     const std::string name = "t_" + let_name(l.name);
@@ -723,11 +790,17 @@ void write_group_passes(Writer& w, const Kernel& k) {
 void write_reset(Writer& w, const Kernel& k) {
   const ir::Body& b = k.plan->body;
   w.open("void " + k.cls + "::reset_stored(" +
-         (b.forces.empty() ? "const Match& /*m*/" : "const Match& m") + ") {");
+         (b.forces.empty() && b.stores.empty() ? "const Match& /*m*/" : "const Match& m") + ") {");
   for (const ir::Force& f : b.forces) {
     const std::string col = embedding_var(f.embedding) + ".values()";
     const std::string at = std::string("m.") + k.slots[static_cast<std::size_t>(f.store_slot)];
     w.line("if (" + at + " < " + col + ".size()) " + col + "[" + at + "] = rift::Vec3::Zero();");
+  }
+  for (const ir::Store& st : b.stores) {
+    const std::string col = embedding_var(st.embedding) + ".values()";
+    const std::string at = std::string("m.") + k.slots[static_cast<std::size_t>(st.store_slot)];
+    w.line("if (" + at + " < " + col + ".size()) " + col + "[" + at +
+           "] = " + embedding_var(st.embedding) + ".default_value();");
   }
   w.close();
   w.line();
@@ -801,6 +874,8 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
     w.line("/// them (the coloured scatter of several threads groups matches by them).");
     w.line("static constexpr int kForceTerms = " + std::to_string(b.forces.size()) + ";");
     w.line("void force_targets(const Match& m, rift::Slot* out) const;");
+  }
+  if (!b.forces.empty() && b.stores.empty()) {
     w.line("/// Matches with equal keys give equal forces and are evaluated once");
     w.line("/// (rift/sim/match_groups.hpp): the vertex slots, then the bits of the values read.");
     w.line("static constexpr int kGroupKey = " + std::to_string(group_key_words(k, model)) + ";");
@@ -857,6 +932,8 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
   w.open("struct Result {");
   for (const ir::Force& f : b.forces)
     w.line("rift::Vec3 " + force_field(b, f) + ";");
+  for (const ir::Store& st : b.stores)
+    w.line(cpp_type(b.graph[st.value].type) + " " + store_field(b, st) + "{};");
   w.line("rift::Real energy = 0;");
   w.close("};");
   w.line(
@@ -865,7 +942,8 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
   w.line("bool find(const rift::GMap& g, rift::Dart support, rift::Dart* darts) const;");
   w.line("Columns columns() const;");
   w.line("/// The interaction's body; false where a `when` fails.");
-  w.line("template <bool kForces>");
+  w.line(b.stores.empty() ? "template <bool kForces>"
+                          : "template <bool kForces, bool kStores = false>");
   w.line(
       "[[gnu::always_inline]] inline bool evaluate(const Match& m, const rift::ForceInput& in, "
       "const Columns& c, Result& r) "
@@ -896,7 +974,8 @@ void emit_kernel(Writer& w, const InteractionPlan& plan, const PackModel& model)
   write_evaluate(w, k);
   write_add_forces_all(w, k);
   write_force_targets(w, k);
-  if (!k.plan->body.forces.empty()) {
+  // Matches that store values are not grouped: each stores its own.
+  if (!k.plan->body.forces.empty() && k.plan->body.stores.empty()) {
     write_group_key(w, k);
     write_group_passes(w, k);
   }

@@ -210,8 +210,15 @@ void write_pack_class(Writer& w, const PackModel& m) {
       stores.push_back(f.embedding.text);
       forces += (forces.empty() ? "" : ", ") + f.embedding.text;
     }
+    std::string values;
+    for (const ast::Assign& st : in.stores) {
+      if (std::find(stores.begin(), stores.end(), st.embedding.text) != stores.end()) continue;
+      stores.push_back(st.embedding.text);
+      values += (values.empty() ? "" : ", ") + st.embedding.text;
+    }
     const std::string about = "support " + orbit_text(in.support.dims) +
-                              (forces.empty() ? "" : "; forces stored in " + forces);
+                              (forces.empty() ? "" : "; forces stored in " + forces) +
+                              (values.empty() ? "" : "; values stored in " + values);
     w.open("catalog_.interactions.push_back({" + quote(in.name.text) + ", " +
            quote(in.description.empty() ? about : in.description + " (" + about + ")") + ", {");
     write_param_specs(w, in.params, true, m);

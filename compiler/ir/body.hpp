@@ -39,6 +39,16 @@ struct Force {
   diag::Location loc;
 };
 
+/// `store node.embedding = value`: written at store_slot on the evaluation
+/// whose forces are stored (its type is the embedding's).
+struct Store {
+  int node = 0;  // index into Body::nodes
+  std::string embedding;
+  int store_slot = -1;
+  ExprId value = kNoExpr;
+  diag::Location loc;
+};
+
 /// `jacobian a.f by b.position = value`: the block ∂f/∂x_b (∂f/∂v_b for a
 /// velocity) of every force statement storing a.f, given by the rule rather
 /// than derived (lower/derivative.hpp).
@@ -84,6 +94,7 @@ struct Body {
   std::vector<Let> lets;
   std::vector<Stmt> stmts;    // lets and whens, in source order
   std::vector<Force> forces;  // in source order
+  std::vector<Store> stores;  // in source order
   std::vector<JacobianBlock> jacobians;
   ExprId energy = kNoExpr;  // a real, or kNoExpr when the interaction has none
   Sharing sharing;          // filled by lower::share_common_subexpressions

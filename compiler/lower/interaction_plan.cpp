@@ -60,6 +60,18 @@ InteractionPlan plan_interaction(const check::CheckedInteraction& ci,
     f.loc = a.value->loc;
     body.forces.push_back(f);
   }
+  for (std::size_t k = 0; k < inter.stores.size(); ++k) {
+    const ast::Assign& a = inter.stores[k];
+    ir::Store st;
+    for (std::size_t v = 0; v < body.nodes.size(); ++v) {
+      if (body.nodes[v] == a.node.text) st.node = static_cast<int>(v);
+    }
+    st.embedding = a.embedding.text;
+    st.store_slot = plan.kernel.stores[k];
+    st.value = loop.lower_as(*a.value, symbols.target(a)->type);
+    st.loc = a.value->loc;
+    body.stores.push_back(st);
+  }
   if (inter.energy) body.energy = loop.lower_as(*inter.energy, ir::Type::Real);
   for (const ast::JacobianBlock& a : inter.jacobians) {
     ir::JacobianBlock j;
@@ -102,6 +114,8 @@ InteractionPlan plan_interaction(const check::CheckedInteraction& ci,
     plan.embeddings.insert(s.via);
   for (const ForceStore& f : plan.kernel.forces)
     plan.embeddings.insert(f.embedding);
+  for (const ir::Store& st : body.stores)
+    plan.embeddings.insert(st.embedding);
   auto loop_reads = [&](ir::ExprId root) {
     if (root != ir::kNoExpr) embeddings_read(body.graph, root, plan.embeddings);
   };
@@ -111,6 +125,8 @@ InteractionPlan plan_interaction(const check::CheckedInteraction& ci,
     loop_reads(s.cond);
   for (const ir::Force& f : body.forces)
     loop_reads(f.value);
+  for (const ir::Store& st : body.stores)
+    loop_reads(st.value);
   for (const ir::JacobianBlock& j : body.jacobians)
     loop_reads(j.value);
   loop_reads(body.energy);

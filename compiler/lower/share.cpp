@@ -163,6 +163,8 @@ void share_common_subexpressions(ir::Body& body, const std::vector<ir::ExprId*>&
   }
   for (ir::Force& f : body.forces)
     roots.push_back(&f.value);
+  for (ir::Store& st : body.stores)
+    roots.push_back(&st.value);
   roots.push_back(&body.energy);
   for (ir::JacobianBlock& j : body.jacobians)
     roots.push_back(&j.value);

@@ -419,6 +419,14 @@ interaction_stmt
   | FORCE ident DOT ident ASSIGN expr SEMI {
       ctx.interaction.forces.push_back(rift::ast::Assign{$2, $4, $6, @$});
     }
+  /* `store` is a word of this statement only, not a keyword: names may be `store`. */
+  | ident ident DOT ident ASSIGN expr SEMI {
+      if ($1.text != "store") {
+        ctx.diags.error(@1, "expected a statement of an interaction ('store NODE.EMBEDDING = "
+                            "...;' stores a value for criteria), not '" + $1.text + "'");
+      }
+      ctx.interaction.stores.push_back(rift::ast::Assign{$2, $4, $6, @$});
+    }
   | ENERGY expr SEMI {
       if (ctx.interaction.energy) ctx.diags.error(@1, "the interaction already has an energy");
       ctx.interaction.energy = $2;

@@ -566,6 +566,11 @@ void resolve_names(const ast::Program& program, Symbols& symbols, diag::Diagnost
         r.node(f.node.text, f.node.loc, s);
         r.expr(*f.value, s);
       }
+      for (const auto& st : inter.stores) {
+        r.bind_target(st);
+        r.node(st.node.text, st.node.loc, s);
+        r.expr(*st.value, s);
+      }
       for (const auto& j : inter.jacobians)
         r.expr(*j.value, s);
       if (inter.energy) r.expr(*inter.energy, s);

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <set>
 
@@ -302,6 +303,53 @@ TEST(SymmetricEigen, EigenvaluesAndTheLargestEigenvectorOfRandomSpectra) {
     // M v = λ3 v (the eigenvector of a repeated λ3 is any of its space).
     EXPECT_LT((m * v - lambda(2) * v).norm(), 1e-10 * (1 + lambda.norm())) << "trial " << trial;
   }
+}
+
+TEST(SymmetricEigen, TheClosedFormLargestEigenvalueEqualsTheSolversNearDegenerateSpectraIncluded) {
+  // Random rotations of spectra whose eigenvalues are apart, nearly equal in
+  // pairs (gaps from 1e-1 down to 1e-15 of the spread, either pair), or all
+  // nearly equal, around a large or a zero mean: symmetric_max_eigenvalue
+  // (the closed form, or the solver where it is ill-conditioned) against the
+  // solver's λ3 and the spectrum it was built from.
+  std::mt19937 rng(7);
+  std::normal_distribution<Real> n(0, 1);
+  std::uniform_int_distribution<int> gap_exponent(1, 15);
+  std::size_t closed_form = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    Eigen::Quaternion<Real> rot(n(rng), n(rng), n(rng), n(rng));
+    rot.normalize();
+    const Mat3 r = rot.toRotationMatrix();
+    Vec3 lambda(n(rng), n(rng), n(rng));
+    std::sort(lambda.data(), lambda.data() + 3);
+    const Real gap = std::pow(10.0, -gap_exponent(rng));
+    switch (trial % 4) {
+      case 0:
+        break;  // apart
+      case 1:
+        lambda(1) = lambda(0) + gap;
+        break;  // the two smallest nearly equal
+      case 2:
+        lambda(1) = lambda(2) - gap;
+        break;  // the two largest nearly equal
+      default:
+        lambda = Vec3(1, 1 + gap, 1 - gap);
+        break;  // all three nearly equal
+    }
+    const Real mean = trial % 3 == 0 ? 1e4 : 0.0;  // a large isotropic part
+    lambda.array() += mean;
+    std::sort(lambda.data(), lambda.data() + 3);
+    const Mat3 m = r * lambda.asDiagonal() * r.transpose();
+    const Real scale = 1 + lambda.cwiseAbs().maxCoeff();
+    const Real fast = symmetric_max_eigenvalue(m);
+    EXPECT_NEAR(fast, symmetric_eigenvalues(m)(2), 1e-12 * scale) << "trial " << trial;
+    EXPECT_NEAR(fast, lambda(2), 1e-12 * scale) << "trial " << trial;
+    closed_form += fast != symmetric_eigenvalues(m)(2);
+  }
+  // The closed form did answer most of them (not the solver every time).
+  EXPECT_GT(closed_form, 1000u);
+  EXPECT_EQ(symmetric_max_eigenvalue(Mat3::Zero()), 0.0);
+  EXPECT_EQ(symmetric_max_eigenvalue(Mat3(3.5 * Mat3::Identity())), 3.5);
+  EXPECT_TRUE(std::isnan(symmetric_max_eigenvalue(Mat3::Constant(std::nan("")))));
 }
 
 TEST(PackValues, ParameterValuesTaggedDartsAndRequiredEmbeddings) {

@@ -33,12 +33,14 @@ TEST(SetupWarnings, InteractionsThatMatchNoElementAndTheCriteriaTheyStarveAreNam
   const auto hex = setup_warnings("hex", "block:hex:2x2x2",
                                   "[[interaction]]\nname = \"corotational\"\n"
                                   "[[criterion]]\nname = \"vertex_stress\"\n");
-  EXPECT_EQ(hex, (std::vector<std::string>{
-                     "interaction 'corotational' matches no element of the mesh "
-                     "'block:hex:2x2x2' (its pattern needs other elements): it exerts no force",
-                     "criterion 'vertex_stress' cannot fire on the mesh 'block:hex:2x2x2': its "
-                     "measure reads only the forces f_fem, which no interaction of the scene "
-                     "stores here ('corotational' matches no element of this mesh)"}));
+  EXPECT_EQ(
+      hex,
+      (std::vector<std::string>{
+          "interaction 'corotational' matches no element of the mesh "
+          "'block:hex:2x2x2' (its pattern needs other elements): it exerts no force",
+          "criterion 'vertex_stress' cannot fire on the mesh 'block:hex:2x2x2': its "
+          "measure reads only the stored fem_mass, fem_stress, which no interaction of the scene "
+          "stores here ('corotational' matches no element of this mesh)"}));
   const auto tet = setup_warnings("tet", "block:tet:2x2x2",
                                   "[[interaction]]\nname = \"volume_shear\"\n"
                                   "[[criterion]]\nname = \"shear_force\"\n");
@@ -46,7 +48,7 @@ TEST(SetupWarnings, InteractionsThatMatchNoElementAndTheCriteriaTheyStarveAreNam
   EXPECT_NE(tet[0].find("interaction 'volume_shear' matches no element"), std::string::npos);
   EXPECT_EQ(tet[1],
             "criterion 'shear_force' cannot fire on the mesh 'block:tet:2x2x2': its measure "
-            "reads only the forces f_volume_shear, which no interaction of the scene stores here "
+            "reads only the stored f_volume_shear, which no interaction of the scene stores here "
             "('volume_shear' matches no element of this mesh)");
   // The right pairings give no warning.
   EXPECT_TRUE(setup_warnings("tet_ok", "block:tet:2x2x2",
@@ -64,17 +66,19 @@ TEST(SetupWarnings, CriteriaReadingForcesNoInteractionOfTheSceneStoresAreNamed) 
   const auto hex = setup_warnings("hex_springs", "block:hex:2x2x2",
                                   "[[interaction]]\nname = \"volume_shear\"\n"
                                   "[[criterion]]\nname = \"vertex_stress\"\n");
-  EXPECT_EQ(hex, (std::vector<std::string>{
-                     "criterion 'vertex_stress' cannot fire on the mesh 'block:hex:2x2x2': its "
-                     "measure reads only the forces f_fem, which no interaction of the scene "
-                     "stores here ('corotational' is not in the scene)"}));
+  EXPECT_EQ(
+      hex,
+      (std::vector<std::string>{
+          "criterion 'vertex_stress' cannot fire on the mesh 'block:hex:2x2x2': its "
+          "measure reads only the stored fem_mass, fem_stress, which no interaction of the scene "
+          "stores here ('corotational' is not in the scene)"}));
   // 2D: the co-rotational triangle's stress read on quadrangles with springs.
   const auto quads = setup_warnings("quads", "grid:quad:3x3",
                                     "[[interaction]]\nname = \"stretch\"\n"
                                     "[[criterion]]\nname = \"element_stress\"\n");
   ASSERT_EQ(quads.size(), 1u);
   EXPECT_NE(quads[0].find("criterion 'element_stress' cannot fire on the mesh 'grid:quad:3x3': "
-                          "its measure reads only the forces f_membrane"),
+                          "its measure reads only the stored f_membrane"),
             std::string::npos)
       << quads[0];
   // A criterion reading several stored forces fires when one is there.

@@ -34,6 +34,8 @@ class Embedding {
   /// Reads the default without allocating a withheld column (column.hpp).
   const T& operator[](Dart d) const { return column_->read(attachment_->slot(d)); }
   Slot slot(Dart d) const { return attachment_->slot(d); }
+  /// The column's default value (what a reset slot holds).
+  const T& default_value() const { return column_->default_value(); }
   /// The dense value array, indexed by slot; dead slots hold stale values.
   std::vector<T>& values() { return column_->values(); }
   const std::vector<T>& values() const { return column_->values(); }

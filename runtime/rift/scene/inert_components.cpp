@@ -80,7 +80,7 @@ std::vector<std::string> inert_component_warnings(const Scene& scene, const Pack
                                                      : "is not in the scene"));
     }
     warnings.push_back("criterion '" + use.name + "' cannot fire on " + mesh +
-                       ": its measure reads only the forces " + joined(forces) +
+                       ": its measure reads only the stored " + joined(forces) +
                        ", which no interaction of the scene stores here (" + joined(writers) + ")");
   }
   return warnings;

@@ -194,6 +194,16 @@ void declare_embeddings(rift::GMap& g) {
   } else if (g.find_column("f_membrane")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_membrane")->orbit() == rift::Orbit{1}) || g.find_column("f_membrane")->policy() != rift::MergePolicy::kKeepFirst) {
     throw std::invalid_argument("the map's embedding 'f_membrane' is not the pack's vec3 on <1> merged by 'keep'");
   }
+  if (!g.has_embedding("membrane_stress")) {
+    g.declare_embedding<rift::Mat3>("membrane_stress", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
+  } else if (g.find_column("membrane_stress")->type() != rift::ValueType::kMat3 || !(g.attachment_of("membrane_stress")->orbit() == rift::Orbit{0, 1}) || g.find_column("membrane_stress")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'membrane_stress' is not the pack's mat3 on <0,1> merged by 'keep'");
+  }
+  if (!g.has_embedding("membrane_mass")) {
+    g.declare_embedding<rift::Real>("membrane_mass", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+  } else if (g.find_column("membrane_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("membrane_mass")->orbit() == rift::Orbit{0, 1}) || g.find_column("membrane_mass")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'membrane_mass' is not the pack's real on <0,1> merged by 'keep'");
+  }
   if (!g.has_embedding("position")) {
     g.declare_embedding<rift::Vec3>("position", rift::Orbit{1, 2}, rift::MergePolicy::kMean, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
   } else if (g.find_column("position")->type() != rift::ValueType::kVec3 || !(g.attachment_of("position")->orbit() == rift::Orbit{1, 2}) || g.find_column("position")->policy() != rift::MergePolicy::kMean) {
@@ -461,22 +471,20 @@ bool InteractionForceCriterion::apply(rift::GMap& g, const rift::TearCandidate& 
 
 void VertexStressCriterion::initialise(rift::GMap& g) {
   rift::packs::criteria2d::declare_embeddings(g);
-  e_corner_mass = require_embedding<rift::Real>(g, "corner_mass", "criterion 'vertex_stress'");
-  e_f_membrane = require_embedding<rift::Vec3>(g, "f_membrane", "criterion 'vertex_stress'");
+  e_membrane_mass = require_embedding<rift::Real>(g, "membrane_mass", "criterion 'vertex_stress'");
+  e_membrane_stress = require_embedding<rift::Mat3>(g, "membrane_stress", "criterion 'vertex_stress'");
   e_position = require_embedding<rift::Vec3>(g, "position", "criterion 'vertex_stress'");
 }
 
 void VertexStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  memo0_.begin(g, rift::Orbit{0, 1});
   cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kOneThread, out, [&](rift::Dart d_v, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
-    const rift::Mat3 s5 = (rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished();
     rift::Mat3 s0 = rift::Mat3::Zero();
     rift::Real s1 = rift::Real(0);
-    for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s2 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Real { return fold_sum(g, e_corner_mass, d_f, rift::Orbit{0, 1}, rift::Orbit{1}); }); const rift::Real s3 = (0.5 * (((e_position[g.alpha(d_f, 0)] - e_position[d_f])).cross((e_position[g.alpha(g.alpha(d_f, 1), 0)] - e_position[d_f]))).norm()); const rift::Mat3 s4 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (e_f_membrane[d_c]) * (e_position[d_c]).transpose(); }); return acc1; }(); }); s0 += (s2 * ((s3 > 0.0) ? rift::Mat3((((-0.5) / s3) * (s4 + (s4).transpose()))) : rift::Mat3(s5))); s1 += s2; });
+    for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { s0 += (e_membrane_mass[d_f] * e_membrane_stress[d_f]); s1 += e_membrane_mass[d_f]; });
     const rift::Mat3 l_weighted = s0;
     const rift::Real l_mass = s1;
-    const rift::Mat3 l_s = ((l_mass > 0.0) ? rift::Mat3((l_weighted / l_mass)) : rift::Mat3(s5));
+    const rift::Mat3 l_s = ((l_mass > 0.0) ? rift::Mat3((l_weighted / l_mass)) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
     const rift::Real measure = symmetric_max_eigenvalue(l_s);
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
@@ -679,6 +687,8 @@ Pack::Pack(const Params& params) : params_(params), description_("2D tearing cri
   embeddings_.push_back({"f_abend", rift::ValueType::kVec3, rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_abend_wing", rift::ValueType::kVec3, rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_membrane", rift::ValueType::kVec3, rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
+  embeddings_.push_back({"membrane_stress", rift::ValueType::kMat3, rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()))});
+  embeddings_.push_back({"membrane_mass", rift::ValueType::kReal, rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"position", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kMean, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"corner_mass", rift::ValueType::kReal, rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"vertex_force", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
@@ -706,7 +716,7 @@ Pack::Pack(const Params& params) : params_(params), description_("2D tearing cri
   }, kDimension, {}, {"f_membrane", "f_shear", "f_stretch", "position"}});
   catalog_.criteria.push_back({"vertex_stress", "The vertex stress tensor (mass-weighted mean of its elements', eq. 1-2) has an eigenvalue past the threshold: split perpendicular to its eigenvector (§5.2). (on <1,2>; applies rule split_vertex)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(100.0)), "N/m", true, false},
-  }, kDimension, {}, {"corner_mass", "position", "f_membrane", "side"}});
+  }, kDimension, {}, {"membrane_mass", "membrane_stress", "position", "side"}});
   catalog_.criteria.push_back({"vertex_energy", "Griffith at the mesh scale: the strain energy of a vertex's share of its membrane triangles per unit of its size passes the toughness: split perpendicular to the largest principal stress. (on <1,2>; applies rule split_vertex)", {
     {"toughness", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N/m (energy release rate times thickness)", true, false},
   }, kDimension, {}, {"membrane_mu", "position", "f_membrane", "membrane_lambda", "corner_mass", "side"}});

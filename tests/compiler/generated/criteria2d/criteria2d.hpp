@@ -236,15 +236,11 @@ class VertexStressCriterion final : public rift::Criterion {
   std::string name_ = "vertex_stress";
   VertexStressParams p_;
   [[maybe_unused]] Params pack_;
-  rift::Embedding<rift::Real> e_corner_mass;
-  rift::Embedding<rift::Vec3> e_f_membrane;
+  rift::Embedding<rift::Real> e_membrane_mass;
+  rift::Embedding<rift::Mat3> e_membrane_stress;
   rift::Embedding<rift::Vec3> e_position;
   /// The cells collect() visits, kept while the map's links do not change.
   mutable rift::generated::CellCollection cells_;
-  /// Values collect() computes once per orbit rift::Orbit{0, 1} it meets (rift/generated/orbit_memo.hpp).
-  mutable rift::generated::OrbitMemo memo0_;
-  mutable rift::generated::OrbitMemoValues<rift::Real> memo0_0_;
-  mutable rift::generated::OrbitMemoValues<rift::Mat3> memo0_1_;
 };
 
 /// Parameters given by the scene.

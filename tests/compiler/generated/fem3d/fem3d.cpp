@@ -78,6 +78,16 @@ void declare_embeddings(rift::GMap& g) {
   } else if (g.find_column("f_fem")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_fem")->orbit() == rift::Orbit{1, 2}) || g.find_column("f_fem")->policy() != rift::MergePolicy::kKeepFirst) {
     throw std::invalid_argument("the map's embedding 'f_fem' is not the pack's vec3 on <1,2> merged by 'keep'");
   }
+  if (!g.has_embedding("fem_stress")) {
+    g.declare_embedding<rift::Mat3>("fem_stress", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
+  } else if (g.find_column("fem_stress")->type() != rift::ValueType::kMat3 || !(g.attachment_of("fem_stress")->orbit() == rift::Orbit{0, 1, 2}) || g.find_column("fem_stress")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'fem_stress' is not the pack's mat3 on <0,1,2> merged by 'keep'");
+  }
+  if (!g.has_embedding("fem_mass")) {
+    g.declare_embedding<rift::Real>("fem_mass", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+  } else if (g.find_column("fem_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("fem_mass")->orbit() == rift::Orbit{0, 1, 2}) || g.find_column("fem_mass")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'fem_mass' is not the pack's real on <0,1,2> merged by 'keep'");
+  }
   if (!g.has_embedding("position")) {
     g.declare_embedding<rift::Vec3>("position", rift::Orbit{1, 2, 3}, rift::MergePolicy::kMean, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
   } else if (g.find_column("position")->type() != rift::ValueType::kVec3 || !(g.attachment_of("position")->orbit() == rift::Orbit{1, 2, 3}) || g.find_column("position")->policy() != rift::MergePolicy::kMean) {
@@ -87,6 +97,11 @@ void declare_embeddings(rift::GMap& g) {
     g.declare_embedding<rift::Vec3>("velocity", rift::Orbit{1, 2, 3}, rift::MergePolicy::kMean, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
   } else if (g.find_column("velocity")->type() != rift::ValueType::kVec3 || !(g.attachment_of("velocity")->orbit() == rift::Orbit{1, 2, 3}) || g.find_column("velocity")->policy() != rift::MergePolicy::kMean) {
     throw std::invalid_argument("the map's embedding 'velocity' is not the pack's vec3 on <1,2,3> merged by 'mean'");
+  }
+  if (!g.has_embedding("corner_mass")) {
+    g.declare_embedding<rift::Real>("corner_mass", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+  } else if (g.find_column("corner_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("corner_mass")->orbit() == rift::Orbit{1, 2}) || g.find_column("corner_mass")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'corner_mass' is not the pack's real on <1,2> merged by 'keep'");
   }
   if (!g.has_embedding("corotational_first_dart")) {
     g.declare_embedding<rift::Bool>("corotational_first_dart", rift::Orbit(), rift::MergePolicy::kKeepFirst, rift::Bool(false));
@@ -301,10 +316,13 @@ bool CorotationalKernel::find(const rift::GMap& g, rift::Dart support, rift::Dar
 
 void CorotationalKernel::initialise(rift::GMap& g) {
   rift::packs::fem3d::declare_embeddings(g);
+  e_corner_mass = require_embedding<rift::Real>(g, "corner_mass", "interaction 'corotational'");
   e_f_fem = require_embedding<rift::Vec3>(g, "f_fem", "interaction 'corotational'");
   e_fem_b = require_embedding<rift::Mat3>(g, "fem_b", "interaction 'corotational'");
   e_fem_lambda = require_embedding<rift::Real>(g, "fem_lambda", "interaction 'corotational'");
+  e_fem_mass = require_embedding<rift::Real>(g, "fem_mass", "interaction 'corotational'");
   e_fem_mu = require_embedding<rift::Real>(g, "fem_mu", "interaction 'corotational'");
+  e_fem_stress = require_embedding<rift::Mat3>(g, "fem_stress", "interaction 'corotational'");
   e_fem_volume = require_embedding<rift::Real>(g, "fem_volume", "interaction 'corotational'");
   e_position = require_embedding<rift::Vec3>(g, "position", "interaction 'corotational'");
   // §3.2: the dart each element is first matched from fixes the order of its corners.
@@ -363,10 +381,10 @@ bool CorotationalKernel::match(const rift::GMap& g, rift::Dart support, Match& m
 }
 
 CorotationalKernel::Columns CorotationalKernel::columns() const {
-  return {e_fem_b.values().data(), e_fem_lambda.values().data(), e_fem_mu.values().data(), e_fem_volume.values().data()};
+  return {e_corner_mass.values().data(), e_fem_b.values().data(), e_fem_lambda.values().data(), e_fem_mu.values().data(), e_fem_volume.values().data()};
 }
 
-template <bool kForces>
+template <bool kForces, bool kStores>
 inline bool CorotationalKernel::evaluate(const Match& m, const rift::ForceInput& in, const Columns& c, Result& r) const {
   const rift::Mat3 l_b = c.fem_b[m.orbit012_c0];
   const rift::Mat3 l_f = ((rift::Mat3() << (in.x[m.vertex_c1] - in.x[m.vertex_c0]), (in.x[m.vertex_c2] - in.x[m.vertex_c0]), (in.x[m.vertex_c3] - in.x[m.vertex_c0])).finished() * l_b);
@@ -382,14 +400,21 @@ inline bool CorotationalKernel::evaluate(const Match& m, const rift::ForceInput&
   [[maybe_unused]] const rift::Vec3 l_f1 = rift::Vec3((l_hm)(0, 0), (l_hm)(1, 0), (l_hm)(2, 0));
   [[maybe_unused]] const rift::Vec3 l_f2 = rift::Vec3((l_hm)(0, 1), (l_hm)(1, 1), (l_hm)(2, 1));
   [[maybe_unused]] const rift::Vec3 l_f3 = rift::Vec3((l_hm)(0, 2), (l_hm)(1, 2), (l_hm)(2, 2));
+  [[maybe_unused]] const rift::Mat3 l_ds = ((rift::Mat3() << in.x[m.vertex_c1], in.x[m.vertex_c2], in.x[m.vertex_c3]).finished() - (rift::Mat3() << in.x[m.vertex_c0], in.x[m.vertex_c0], in.x[m.vertex_c0]).finished());
   if constexpr (kForces) {
     r.f_fem_c0 = (-((l_f1 + l_f2) + l_f3));
     r.f_fem_c1 = l_f1;
     r.f_fem_c2 = l_f2;
     r.f_fem_c3 = l_f3;
+    if constexpr (kStores) {
+      const rift::Real s0 = (std::abs((l_ds).determinant()) / 6.0);
+      const rift::Mat3 s1 = (l_hm * (l_ds).transpose());
+      r.stored_fem_stress_c0 = ((s0 > 0.0) ? rift::Mat3((((-0.5) / s0) * (s1 + (s1).transpose()))) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
+      r.stored_fem_mass_c0 = (((c.corner_mass[m.orbit12_c0] + c.corner_mass[m.orbit12_c1]) + c.corner_mass[m.orbit12_c2]) + c.corner_mass[m.orbit12_c3]);
+    }
   } else {
-    const rift::Real s0 = (l_strain).trace();
-    r.energy = (c.fem_volume[m.orbit012_c0] * ((l_mu * (((l_strain).transpose() * l_strain)).trace()) + (((0.5 * l_lambda) * s0) * s0)));
+    const rift::Real s2 = (l_strain).trace();
+    r.energy = (c.fem_volume[m.orbit012_c0] * ((l_mu * (((l_strain).transpose() * l_strain)).trace()) + (((0.5 * l_lambda) * s2) * s2)));
   }
   return true;
 }
@@ -397,25 +422,40 @@ inline bool CorotationalKernel::evaluate(const Match& m, const rift::ForceInput&
 void CorotationalKernel::add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store) {
   const Columns c = columns();
   rift::Vec3* const stored_f_fem = store ? e_f_fem.values().data() : nullptr;
-  for (const Match& m : ms) {
-    Result r;
-    if (!evaluate<true>(m, in, c, r)) {
-      if (store) {
-        stored_f_fem[m.orbit12_c0] = rift::Vec3::Zero();
-        stored_f_fem[m.orbit12_c1] = rift::Vec3::Zero();
-        stored_f_fem[m.orbit12_c2] = rift::Vec3::Zero();
-        stored_f_fem[m.orbit12_c3] = rift::Vec3::Zero();
+  auto* const stored_fem_mass = store ? e_fem_mass.values().data() : nullptr;
+  auto* const stored_fem_stress = store ? e_fem_stress.values().data() : nullptr;
+  auto pass = [&]<bool kStore>() __attribute__((noinline)) {
+    for (const Match& m : ms) {
+      Result r;
+      if (!evaluate<true, kStore>(m, in, c, r)) {
+        if constexpr (kStore) {
+          stored_f_fem[m.orbit12_c0] = rift::Vec3::Zero();
+          stored_f_fem[m.orbit12_c1] = rift::Vec3::Zero();
+          stored_f_fem[m.orbit12_c2] = rift::Vec3::Zero();
+          stored_f_fem[m.orbit12_c3] = rift::Vec3::Zero();
+          stored_fem_stress[m.orbit012_c0] = e_fem_stress.default_value();
+          stored_fem_mass[m.orbit012_c0] = e_fem_mass.default_value();
+        }
+        continue;
       }
-      continue;
+      f[m.vertex_c0] += r.f_fem_c0;
+      if constexpr (kStore) stored_f_fem[m.orbit12_c0] = r.f_fem_c0;
+      f[m.vertex_c1] += r.f_fem_c1;
+      if constexpr (kStore) stored_f_fem[m.orbit12_c1] = r.f_fem_c1;
+      f[m.vertex_c2] += r.f_fem_c2;
+      if constexpr (kStore) stored_f_fem[m.orbit12_c2] = r.f_fem_c2;
+      f[m.vertex_c3] += r.f_fem_c3;
+      if constexpr (kStore) stored_f_fem[m.orbit12_c3] = r.f_fem_c3;
+      if constexpr (kStore) {
+        stored_fem_stress[m.orbit012_c0] = r.stored_fem_stress_c0;
+        stored_fem_mass[m.orbit012_c0] = r.stored_fem_mass_c0;
+      }
     }
-    f[m.vertex_c0] += r.f_fem_c0;
-    if (store) stored_f_fem[m.orbit12_c0] = r.f_fem_c0;
-    f[m.vertex_c1] += r.f_fem_c1;
-    if (store) stored_f_fem[m.orbit12_c1] = r.f_fem_c1;
-    f[m.vertex_c2] += r.f_fem_c2;
-    if (store) stored_f_fem[m.orbit12_c2] = r.f_fem_c2;
-    f[m.vertex_c3] += r.f_fem_c3;
-    if (store) stored_f_fem[m.orbit12_c3] = r.f_fem_c3;
+  };
+  if (store) {
+    pass.template operator()<true>();
+  } else {
+    pass.template operator()<false>();
   }
 }
 
@@ -426,58 +466,13 @@ void CorotationalKernel::force_targets(const Match& m, rift::Slot* out) const {
   out[3] = m.vertex_c3;
 }
 
-void CorotationalKernel::group_key(const Match& m, std::uint64_t* out) const {
-  const Columns c = columns();
-  out = rift::key_words(m.vertex_c1, out);
-  out = rift::key_words(m.vertex_c0, out);
-  out = rift::key_words(m.vertex_c2, out);
-  out = rift::key_words(m.vertex_c3, out);
-  out = rift::key_words(c.fem_b[m.orbit012_c0], out);
-  out = rift::key_words(c.fem_lambda[m.orbit012_c0], out);
-  out = rift::key_words(c.fem_mu[m.orbit012_c0], out);
-  out = rift::key_words(c.fem_volume[m.orbit012_c0], out);
-  (void)out;
-}
-
-bool CorotationalKernel::evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const {
-  Result r;
-  if (!evaluate<true>(m, in, columns(), r)) {
-    for (int i = 0; i < 4; ++i) terms[i].setZero();
-    return false;
-  }
-  terms[0] = r.f_fem_c0;
-  terms[1] = r.f_fem_c1;
-  terms[2] = r.f_fem_c2;
-  terms[3] = r.f_fem_c3;
-  return true;
-}
-
-void CorotationalKernel::store_terms(const Match& m, const rift::Vec3* terms) {
-  e_f_fem.values()[m.orbit12_c0] = terms[0];
-  e_f_fem.values()[m.orbit12_c1] = terms[1];
-  e_f_fem.values()[m.orbit12_c2] = terms[2];
-  e_f_fem.values()[m.orbit12_c3] = terms[3];
-}
-
-void CorotationalKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f) {
-  const Columns c = columns();
-  for (std::size_t i = 0; i < reps.size(); ++i) {
-    const Match& m = reps[i];
-    Result r;
-    if (!evaluate<true>(m, in, c, r)) continue;
-    const rift::Real count = counts[i];
-    f[m.vertex_c0] += count * r.f_fem_c0;
-    f[m.vertex_c1] += count * r.f_fem_c1;
-    f[m.vertex_c2] += count * r.f_fem_c2;
-    f[m.vertex_c3] += count * r.f_fem_c3;
-  }
-}
-
 void CorotationalKernel::reset_stored(const Match& m) {
   if (m.orbit12_c0 < e_f_fem.values().size()) e_f_fem.values()[m.orbit12_c0] = rift::Vec3::Zero();
   if (m.orbit12_c1 < e_f_fem.values().size()) e_f_fem.values()[m.orbit12_c1] = rift::Vec3::Zero();
   if (m.orbit12_c2 < e_f_fem.values().size()) e_f_fem.values()[m.orbit12_c2] = rift::Vec3::Zero();
   if (m.orbit12_c3 < e_f_fem.values().size()) e_f_fem.values()[m.orbit12_c3] = rift::Vec3::Zero();
+  if (m.orbit012_c0 < e_fem_stress.values().size()) e_fem_stress.values()[m.orbit012_c0] = e_fem_stress.default_value();
+  if (m.orbit012_c0 < e_fem_mass.values().size()) e_fem_mass.values()[m.orbit012_c0] = e_fem_mass.default_value();
 }
 
 rift::Real CorotationalKernel::energy(const Match& m, const rift::ForceInput& in) const {
@@ -514,6 +509,7 @@ void CorotationalKernel::vertex_slots(const Match& m, rift::Slot* out) const {
   [[maybe_unused]] const rift::Vec3 l_f1 = rift::Vec3((l_hm)(0, 0), (l_hm)(1, 0), (l_hm)(2, 0));
   [[maybe_unused]] const rift::Vec3 l_f2 = rift::Vec3((l_hm)(0, 1), (l_hm)(1, 1), (l_hm)(2, 1));
   [[maybe_unused]] const rift::Vec3 l_f3 = rift::Vec3((l_hm)(0, 2), (l_hm)(1, 2), (l_hm)(2, 2));
+  [[maybe_unused]] const rift::Mat3 l_ds = ((rift::Mat3() << in.x[m.vertex_c1], in.x[m.vertex_c2], in.x[m.vertex_c3]).finished() - (rift::Mat3() << in.x[m.vertex_c0], in.x[m.vertex_c0], in.x[m.vertex_c0]).finished());
   #pragma GCC unroll 12
   for (int dir = 0; dir < 12; ++dir) {
     const int j = dir / 3, c3 = dir % 3;
@@ -575,6 +571,7 @@ void CorotationalKernel::vertex_slots(const Match& m, rift::Slot* out) const {
   [[maybe_unused]] const rift::Vec3 l_f1 = rift::Vec3((l_hm)(0, 0), (l_hm)(1, 0), (l_hm)(2, 0));
   [[maybe_unused]] const rift::Vec3 l_f2 = rift::Vec3((l_hm)(0, 1), (l_hm)(1, 1), (l_hm)(2, 1));
   [[maybe_unused]] const rift::Vec3 l_f3 = rift::Vec3((l_hm)(0, 2), (l_hm)(1, 2), (l_hm)(2, 2));
+  [[maybe_unused]] const rift::Mat3 l_ds = ((rift::Mat3() << in.x[m.vertex_c1], in.x[m.vertex_c2], in.x[m.vertex_c3]).finished() - (rift::Mat3() << in.x[m.vertex_c0], in.x[m.vertex_c0], in.x[m.vertex_c0]).finished());
   [[maybe_unused]] const rift::Vec3 tx[4] = {px[m.vertex_c1], px[m.vertex_c0], px[m.vertex_c2], px[m.vertex_c3]};
   [[maybe_unused]] const rift::Vec3 tv[4] = {pv[m.vertex_c1], pv[m.vertex_c0], pv[m.vertex_c2], pv[m.vertex_c3]};
   const rift::Mat3 t_l_f = ((rift::Mat3() << (tx[0] - tx[1]), (tx[2] - tx[1]), (tx[3] - tx[1])).finished() * l_b);
@@ -602,14 +599,17 @@ Pack::Pack(const Params& params) : params_(params), description_("Co-rotational 
   embeddings_.push_back({"f_shear", rift::ValueType::kVec3, rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_volume_shear", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_fem", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
+  embeddings_.push_back({"fem_stress", rift::ValueType::kMat3, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()))});
+  embeddings_.push_back({"fem_mass", rift::ValueType::kReal, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"position", rift::ValueType::kVec3, rift::Orbit{1, 2, 3}, rift::MergePolicy::kMean, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"velocity", rift::ValueType::kVec3, rift::Orbit{1, 2, 3}, rift::MergePolicy::kMean, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
+  embeddings_.push_back({"corner_mass", rift::ValueType::kReal, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"corotational_first_dart", rift::ValueType::kBool, rift::Orbit(), rift::MergePolicy::kKeepFirst, rift::Value(rift::Bool(false))});
-  catalog_.interactions.push_back({"corotational", "Co-rotational linear tetrahedron (Müller and Gross 2004): Young's modulus, Poisson ratio, damping. (support <0,1,2>; forces stored in f_fem)", {
+  catalog_.interactions.push_back({"corotational", "Co-rotational linear tetrahedron (Müller and Gross 2004): Young's modulus, Poisson ratio, damping. (support <0,1,2>; forces stored in f_fem; values stored in fem_stress, fem_mass)", {
     {"young", rift::ValueType::kReal, rift::Value(rift::Real(100000.0)), "Pa", true, false},
     {"poisson", rift::ValueType::kReal, rift::Value(rift::Real(0.3)), "", false, true},
     {"damping", rift::ValueType::kReal, rift::Value(rift::Real(0.0)), "s (stiffness-proportional)", false, true},
-  }, kDimension, {"f_fem"}});
+  }, kDimension, {"f_fem", "fem_stress", "fem_mass"}});
 }
 
 std::vector<std::string> Pack::rule_names() const {

@@ -70,16 +70,6 @@ class CorotationalKernel {
   /// them (the coloured scatter of several threads groups matches by them).
   static constexpr int kForceTerms = 4;
   void force_targets(const Match& m, rift::Slot* out) const;
-  /// Matches with equal keys give equal forces and are evaluated once
-  /// (rift/sim/match_groups.hpp): the vertex slots, then the bits of the values read.
-  static constexpr int kGroupKey = 16;
-  void group_key(const Match& m, std::uint64_t* out) const;
-  /// One match's kForceTerms forces (zero where a `when` fails; false then).
-  bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
-  /// Stores forces computed by evaluate_terms into m's stored-force slots.
-  void store_terms(const Match& m, const rift::Vec3* terms);
-  /// The force pass over groups: adds counts[i] times the forces of reps[i].
-  void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f);
   void reset_stored(const Match& m);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).
@@ -96,6 +86,7 @@ class CorotationalKernel {
  private:
   /// The columns the body reads, loaded once per pass.
   struct Columns {
+    const rift::Real* corner_mass;
     const rift::Mat3* fem_b;
     const rift::Real* fem_lambda;
     const rift::Real* fem_mu;
@@ -107,21 +98,26 @@ class CorotationalKernel {
     rift::Vec3 f_fem_c1;
     rift::Vec3 f_fem_c2;
     rift::Vec3 f_fem_c3;
+    rift::Mat3 stored_fem_stress_c0{};
+    rift::Real stored_fem_mass_c0{};
     rift::Real energy = 0;
   };
   /// The pattern's darts from one support dart, in pattern order; false when it does not match.
   bool find(const rift::GMap& g, rift::Dart support, rift::Dart* darts) const;
   Columns columns() const;
   /// The interaction's body; false where a `when` fails.
-  template <bool kForces>
+  template <bool kForces, bool kStores = false>
   [[gnu::always_inline]] inline bool evaluate(const Match& m, const rift::ForceInput& in, const Columns& c, Result& r) const;
   std::string name_ = "corotational";
   CorotationalParams p_;
   [[maybe_unused]] Params pack_;
+  rift::Embedding<rift::Real> e_corner_mass;
   rift::Embedding<rift::Vec3> e_f_fem;
   rift::Embedding<rift::Mat3> e_fem_b;
   rift::Embedding<rift::Real> e_fem_lambda;
+  rift::Embedding<rift::Real> e_fem_mass;
   rift::Embedding<rift::Real> e_fem_mu;
+  rift::Embedding<rift::Mat3> e_fem_stress;
   rift::Embedding<rift::Real> e_fem_volume;
   rift::Embedding<rift::Vec3> e_position;
   rift::Embedding<rift::Bool> tag_;
