@@ -138,24 +138,37 @@ void GMap::mark_orbit(Dart d, Orbit o, Mark m) const {
     for_each_in_orbit(d, o, [&](Dart x) { mark(x, m); });
     return;
   }
+  // Every cell pass (for_each_cell) runs this once per cell over the whole
+  // map: the links of the orbit are looked up once, and the mark's count is
+  // added once at the end rather than per dart.
+  std::array<const Dart*, kMaxDimension + 1> links{};
+  int link_count = 0;
+  for (int i = 0; i <= dimension_; ++i) {
+    if (o.contains(i)) links[static_cast<std::size_t>(link_count++)] = alpha_[i].data();
+  }
+  const std::uint32_t bit = 1u << m;
+  std::uint32_t* bits = mark_bits_.data();
+  std::size_t marked = 0;
   std::vector<Dart>& stack = acquire_scratch();
   stack.clear();
-  if (!is_marked(d, m)) {
-    mark(d, m);
+  if ((bits[d] & bit) == 0) {
+    bits[d] |= bit;
+    ++marked;
     stack.push_back(d);
   }
   while (!stack.empty()) {
     const Dart x = stack.back();
     stack.pop_back();
-    for (int i = 0; i <= dimension_; ++i) {
-      if (!o.contains(i)) continue;
-      const Dart y = alpha_[i][x];
-      if (!is_marked(y, m)) {
-        mark(y, m);
+    for (int l = 0; l < link_count; ++l) {
+      const Dart y = links[static_cast<std::size_t>(l)][x];
+      if ((bits[y] & bit) == 0) {
+        bits[y] |= bit;
+        ++marked;
         stack.push_back(y);
       }
     }
   }
+  mark_count_[static_cast<std::size_t>(m)] += marked;
   release_scratch();
 }
 
@@ -207,8 +220,46 @@ OrbitAttachment* GMap::attachment_of(std::string_view name) const {
   return nullptr;
 }
 
+// A fresh attachment (every embedding declared at set-up) has no slot on any
+// dart, so an orbit reached for the first time has none on any of its darts:
+// the slot array itself can be the walk's visited flag. That saves the mark
+// bits (one more per-dart array touched at random) and the unmarking pass of
+// the general walk, which together were most of a 10^6-vertex set-up's slot
+// assignment (issue 12). Slots are numbered by each orbit's smallest dart, as
+// the general walk numbers them, so both give the same slots.
 void GMap::assign_missing_slots(OrbitAttachment& att) {
   const Orbit o = att.orbit();
+  if (att.live_slots() == 0) {
+    std::array<const Dart*, kMaxDimension + 1> links{};
+    int link_count = 0;
+    for (int i = 0; i <= dimension_; ++i) {
+      if (o.contains(i)) links[static_cast<std::size_t>(link_count++)] = alpha_[i].data();
+    }
+    std::vector<Dart>& stack = acquire_scratch();
+    const std::size_t n = alive_.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const Dart d = static_cast<Dart>(k);
+      if (!alive_[d] || att.slot(d) != kNoSlot) continue;
+      const Slot s = att.reserve_slot();
+      att.assign(d, s);
+      stack.clear();
+      stack.push_back(d);
+      while (!stack.empty()) {
+        const Dart x = stack.back();
+        stack.pop_back();
+        for (int l = 0; l < link_count; ++l) {
+          const Dart y = links[static_cast<std::size_t>(l)][x];
+          if (att.slot(y) == kNoSlot) {
+            att.assign(y, s);
+            stack.push_back(y);
+          }
+        }
+      }
+    }
+    release_scratch();
+    att.grow_columns();
+    return;
+  }
   // The columns grow once at the end: growing each of them by one value per
   // new orbit dominated the set-up of large meshes (issue 12).
   for_each_dart([&](Dart d) {

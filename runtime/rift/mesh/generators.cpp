@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "rift/core/huge_pages.hpp"
+
 namespace rift {
 
 const char* const kGeneratorHelp =
@@ -36,15 +38,15 @@ MeshData make_grid(GridKind kind, int nx, int ny) {
   const char* names[] = {"quad", "tri", "mix"};
   mesh.source = "grid:" + std::string(names[static_cast<int>(kind)]) + ":" + std::to_string(nx) +
                 "x" + std::to_string(ny);
-  mesh.points.reserve(static_cast<std::size_t>(nx + 1) * (ny + 1));
+  reserve_huge(mesh.points, static_cast<std::size_t>(nx + 1) * (ny + 1));
   for (int j = 0; j <= ny; ++j) {
     for (int i = 0; i <= nx; ++i) {
       mesh.points.emplace_back(Real(i) / nx, Real(j) / ny, 0.0);
     }
   }
   auto id = [&](int i, int j) { return static_cast<std::uint32_t>(j * (nx + 1) + i); };
-  mesh.elements.reserve(static_cast<std::size_t>(nx) * ny * 2);
-  mesh.element_vertices.reserve(static_cast<std::size_t>(nx) * ny * 6);
+  reserve_huge(mesh.elements, static_cast<std::size_t>(nx) * ny * 2);
+  reserve_huge(mesh.element_vertices, static_cast<std::size_t>(nx) * ny * 6);
   for (int j = 0; j < ny; ++j) {
     for (int i = 0; i < nx; ++i) {
       const std::uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
@@ -66,6 +68,13 @@ MeshData make_block(BlockKind kind, int nx, int ny, int nz) {
   mesh.dimension = 3;
   mesh.source = std::string("block:") + (kind == BlockKind::Hex ? "hex:" : "tet:") +
                 std::to_string(nx) + "x" + std::to_string(ny) + "x" + std::to_string(nz);
+  // Sized once, advised for huge pages: grown by doubling, a 10^6-element
+  // block's arrays were copied ~20 times and faulted in 4 KiB at a time.
+  const std::size_t cells = static_cast<std::size_t>(nx) * ny * nz;
+  const std::size_t per_cell = kind == BlockKind::Hex ? 1 : 6;
+  reserve_huge(mesh.points, static_cast<std::size_t>(nx + 1) * (ny + 1) * (nz + 1));
+  reserve_huge(mesh.elements, cells * per_cell);
+  reserve_huge(mesh.element_vertices, cells * (kind == BlockKind::Hex ? 8 : 24));
   for (int k = 0; k <= nz; ++k) {
     for (int j = 0; j <= ny; ++j) {
       for (int i = 0; i <= nx; ++i) {
