@@ -159,13 +159,18 @@ ExprId ExprLowering::call(const Expr& e) {
   return g_.call(fn, sig->result, std::move(args), e.loc);
 }
 
-ExprId ExprLowering::fold(const Expr& e) {
+ir::Node ExprLowering::fold_node(const Expr& e) const {
   ir::Node n;
   n.op = Op::Fold;
   n.type = types_.of(e);
   n.loc = e.loc;
   n.place = place(e);
   ir::aggregate_from_name(e.op, n.aggregate);
+  return n;
+}
+
+ExprId ExprLowering::fold(const Expr& e) {
+  ir::Node n = fold_node(e);
   n.orbit = e.orbit.dims;
   n.outer = e.outer.dims;
   nodes_.push_back(e.var);
@@ -190,12 +195,7 @@ ExprId ExprLowering::fold(const Expr& e) {
 /// that passes twice through one vertex counts it twice, as its corners).
 ExprId ExprLowering::over(const Expr& e) {
   const ast::Embedding& embedding = *symbols_.binding(e).embedding;
-  ir::Node n;
-  n.op = Op::Fold;
-  n.type = types_.of(e);
-  n.loc = e.loc;
-  n.place = place(e);
-  ir::aggregate_from_name(e.op, n.aggregate);
+  ir::Node n = fold_node(e);
   n.outer = e.orbit.dims;
   for (int d : e.orbit.dims) {
     if (std::find(embedding.orbit.dims.begin(), embedding.orbit.dims.end(), d) !=

@@ -45,6 +45,8 @@ class ExprLowering {
   ir::ExprId read(const ast::Expr& e);
   ir::ExprId binary(const ast::Expr& e);
   ir::ExprId call(const ast::Expr& e);
+  /// The fold node of `e` (`OP of ...` or `OP E over ...`) before its orbits and body.
+  ir::Node fold_node(const ast::Expr& e) const;
   ir::ExprId fold(const ast::Expr& e);
   ir::ExprId over(const ast::Expr& e);
   ir::ExprId inline_call(const ast::Expr& e, const ast::Function& f);

@@ -80,9 +80,9 @@ class KeptLevel {
 }  // namespace detail
 
 /// Calls f(x) with one dart x of each distinct sub-orbit <sub>(x) inside
-/// <o>(d): the darts of GMap::for_each_sub_orbit, in its order. The whole
-/// walk comes before any f, so that f's own walks (a fold inside a fold)
-/// reuse the buffers freely.
+/// <o>(d): the darts of GMap::for_each_sub_orbit, in its order. A walk that
+/// keeps darts in the buffers finishes before any f, so that f's own walks
+/// (a fold inside a fold) reuse the buffers freely.
 template <class F>
 void for_each_sub_orbit(const GMap& g, Dart d, Orbit o, Orbit sub, F&& f) {
   const auto both = static_cast<std::uint8_t>(o.mask() & sub.mask());
@@ -90,43 +90,29 @@ void for_each_sub_orbit(const GMap& g, Dart d, Orbit o, Orbit sub, F&& f) {
     f(d);
     return;
   }
-  SubOrbitBuffers& b = sub_orbit_buffers();
   if (both == sub.mask() && o.size() <= 2) {
-    detail::KeptLevel level(b);
-    std::vector<Dart>& walked = level.darts();
-    g.for_each_in_orbit(d, o, [&](Dart x) { walked.push_back(x); });
-    if (sub.size() == 0) {
-      for (std::size_t k = 0; k < level.darts().size(); ++k) {
-        throw_if_interrupted();  // a polygon's face may have a million darts
-        f(level.darts()[k]);
-      }
+    // Streamed: f runs during the walk, which needs no buffer and no mark
+    // (these folds are the hot ones: the atomic criteria sum stored forces
+    // over each edge end's <1>, 2 darts, every step).
+    if (o.size() == 1) {  // <sub> is <>: d and its neighbour
+      const Dart e = g.alpha(d, o.first());
+      f(d);
+      if (e != d) f(e);
       return;
     }
-    // A sub-orbit <i> is x and its neighbour by i, both in the walk; the
-    // second one met is dropped (set to kNoDart: a dropped dart is the
-    // neighbour of none met after it). GMap's walk of two links goes along
-    // the path or cycle, so the neighbour is next to x in it; the search of
-    // the darts before x covers any other order.
-    const int i = sub.first();
-    const auto n = static_cast<std::ptrdiff_t>(walked.size());
-    for (std::ptrdiff_t k = 0; k < n; ++k) {
-      const Dart x = walked[static_cast<std::size_t>(k)];
-      const Dart partner = g.alpha(x, i);
-      if (partner == x) continue;
-      bool met = false;
-      if (k > 0 && walked[static_cast<std::size_t>(k - 1)] == partner) {
-        met = true;
-      } else if (k + 1 >= n || walked[static_cast<std::size_t>(k + 1)] != partner) {
-        met = std::find(walked.begin(), walked.begin() + k, partner) != walked.begin() + k;
-      }
-      if (met) walked[static_cast<std::size_t>(k)] = kNoDart;
-    }
-    for (std::size_t k = 0; k < level.darts().size(); ++k) {
-      throw_if_interrupted();
-      if (const Dart x = level.darts()[k]; x != kNoDart) f(x);
-    }
+    // A sub-orbit <k> is a dart and its neighbour by k. The walk meets the
+    // two one after the other, so the second is the one reached through k,
+    // except d's neighbour, met last (the end of a cycle or of a path's
+    // second leg), which d stands for.
+    const int k = sub.size() == 0 ? -1 : sub.first();
+    g.for_each_in_two_link_orbit(d, o.first(), o.second(), [&](Dart x, int via) {
+      throw_if_interrupted();  // a polygon's face may have a million darts
+      if (k >= 0 && x != d && (via == k || g.alpha(x, k) == d)) return;
+      f(x);
+    });
     return;
   }
+  SubOrbitBuffers& b = sub_orbit_buffers();
   const OrbitAttachment* slots = attachment_on(g, sub);
   if (!slots) {
     g.for_each_sub_orbit(d, o, sub, f);

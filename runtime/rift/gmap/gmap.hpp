@@ -143,6 +143,11 @@ class GMap {
   /// after warm-up; f may itself traverse orbits.
   template <class F>
   void for_each_in_orbit(Dart d, Orbit o, F&& f) const;
+  /// The walk of for_each_in_orbit on the orbit <i,j>(d) of two links, in
+  /// its order, calling f(x, via) with the link `via` (i or j) of the step
+  /// that reached x (-1 for d). The walk touches no state of the map.
+  template <class F>
+  void for_each_in_two_link_orbit(Dart d, int i, int j, F&& f) const;
   /// Marks every dart of <o>(d) with m (darts already marked stop the walk).
   void mark_orbit(Dart d, Orbit o, Mark m) const;
   std::size_t orbit_size(Dart d, Orbit o) const;
@@ -260,29 +265,8 @@ void GMap::for_each_in_orbit(Dart d, Orbit o, F&& f) const {
     return;
   }
   if (n == 2) {
-    // Darts of a two-link orbit form a path or a cycle alternating i and j.
-    const Dart* ai = alpha_[o.first()].data();
-    const Dart* aj = alpha_[o.second()].data();
-    f(d);
-    Dart cur = d;
-    bool use_i = true;
-    for (;;) {
-      const Dart next = use_i ? ai[cur] : aj[cur];
-      if (next == cur) break;  // free end: walk the other way from d
-      if (next == d) return;   // closed cycle
-      f(next);
-      cur = next;
-      use_i = !use_i;
-    }
-    cur = d;
-    use_i = false;
-    for (;;) {
-      const Dart next = use_i ? ai[cur] : aj[cur];
-      if (next == cur) return;
-      f(next);
-      cur = next;
-      use_i = !use_i;
-    }
+    for_each_in_two_link_orbit(d, o.first(), o.second(), [&](Dart x, int) { f(x); });
+    return;
   }
   // General orbit: breadth-first walk with a mark; the visit list doubles as queue.
   const Mark m = reserve_mark();
@@ -313,6 +297,33 @@ void GMap::for_each_in_orbit(Dart d, Orbit o, F&& f) const {
   const std::size_t count = visited.size();
   for (std::size_t k = 0; k < count; ++k)
     f(visited[k]);
+}
+
+template <class F>
+void GMap::for_each_in_two_link_orbit(Dart d, int i, int j, F&& f) const {
+  // Darts of a two-link orbit form a path or a cycle alternating i and j.
+  const Dart* ai = alpha_[i].data();
+  const Dart* aj = alpha_[j].data();
+  f(d, -1);
+  Dart cur = d;
+  bool use_i = true;
+  for (;;) {
+    const Dart next = use_i ? ai[cur] : aj[cur];
+    if (next == cur) break;  // free end: walk the other way from d
+    if (next == d) return;   // closed cycle
+    f(next, use_i ? i : j);
+    cur = next;
+    use_i = !use_i;
+  }
+  cur = d;
+  use_i = false;
+  for (;;) {
+    const Dart next = use_i ? ai[cur] : aj[cur];
+    if (next == cur) return;
+    f(next, use_i ? i : j);
+    cur = next;
+    use_i = !use_i;
+  }
 }
 
 template <class F>
