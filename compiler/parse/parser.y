@@ -421,17 +421,18 @@ interaction_stmt
     }
   /* `store` is a word of this statement only, not a keyword: names may be `store`. */
   | ident ident DOT ident ASSIGN expr SEMI {
-      if ($1.text != "store") {
+      // One mention of $1: bison's automove makes each mention a move.
+      if (const std::string& word = $1.text; word != "store") {
         ctx.diags.error(@1, "expected a statement of an interaction ('store NODE.EMBEDDING = "
-                            "...;' stores a value for criteria), not '" + $1.text + "'");
+                            "...;' stores a value for criteria), not '" + word + "'");
       }
       ctx.interaction.stores.push_back(rift::ast::Assign{$2, $4, $6, @$});
     }
   | ident ident DOT ident PLUS_ASSIGN expr SEMI {
-      if ($1.text != "store") {
+      if (const std::string& word = $1.text; word != "store") {
         ctx.diags.error(@1, "expected a statement of an interaction ('store NODE.EMBEDDING += "
                             "...;' accumulates a value per vertex for criteria), not '" +
-                            $1.text + "'");
+                            word + "'");
       }
       ctx.interaction.accumulations.push_back(rift::ast::Assign{$2, $4, $6, @$});
     }
@@ -441,11 +442,14 @@ interaction_stmt
     }
   /* `by` is a word of this statement only, not a keyword: names may be `by`. */
   | JACOBIAN ident DOT ident ident ident DOT ident ASSIGN expr SEMI {
-      if ($5.text != "by") {
-        ctx.diags.error(@5, "expected 'by' in 'jacobian " + $2.text + "." + $4.text +
-                                " by NODE.position = ...;', not '" + $5.text + "'");
+      // Named once each: the message must not move the names the block keeps.
+      rift::ast::JacobianBlock block{$2, $4, $6, $8, $10, @$};
+      if (const std::string& word = $5.text; word != "by") {
+        ctx.diags.error(@5, "expected 'by' in 'jacobian " + block.force_node.text + "." +
+                                block.force.text + " by NODE.position = ...;', not '" + word +
+                                "'");
       }
-      ctx.interaction.jacobians.push_back(rift::ast::JacobianBlock{$2, $4, $6, $8, $10, @$});
+      ctx.interaction.jacobians.push_back(std::move(block));
     }
   | SEMIDEFINITE SEMI {
       if (ctx.interaction.semidefinite) {
