@@ -110,6 +110,11 @@ struct Interaction {
   /// written into E at n's orbit on the evaluation whose forces are stored,
   /// for criteria to read; it adds nothing to any force.
   std::vector<Assign> stores;
+  /// `store v.E += value;`: E is on the vertex orbit of a node the
+  /// interaction exerts a force on; zeroed before the evaluation whose
+  /// forces are stored and added to by every match there, in the coloured
+  /// order of the forces' scatter (per-vertex sums for criteria).
+  std::vector<Assign> accumulations;
   std::vector<JacobianBlock> jacobians;  // blocks the rule gives explicitly
   ExprPtr energy;
   /// `semidefinite;`: the rule's author states that -∂f/∂x and -∂f/∂v of

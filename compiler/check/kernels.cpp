@@ -48,6 +48,8 @@ void check_kernels(const ast::Program& program, const resolve::Symbols& /*symbol
         kc.expr(*f.value);
       for (const auto& st : inter.stores)
         kc.expr(*st.value);
+      for (const auto& acc : inter.accumulations)
+        kc.expr(*acc.value);
       for (const auto& j : inter.jacobians)
         kc.expr(*j.value);
       if (inter.energy) kc.expr(*inter.energy);

@@ -1,5 +1,6 @@
 #include "check/types.hpp"
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -368,6 +369,96 @@ void check_stored_value(const ast::Interaction& inter, const ast::Assign& st,
   }
 }
 
+/// A `store v.E += value` adds into a per-vertex embedding during the force
+/// pass. The matches add without synchronisation in the coloured order of
+/// the forces' scatter, which keeps apart only the vertices the interaction
+/// exerts forces on: so E lives on the vertex orbit, at a node a `force`
+/// statement acts on, holds a value that adds (real, vec3, mat3), and is no
+/// state, force, init or `store =` of the same interaction.
+void check_accumulated_value(const ast::Interaction& inter, const ast::Assign& acc,
+                             const resolve::Symbols& symbols, int dimension,
+                             diag::Diagnostics& diags) {
+  const std::string& name = acc.embedding.text;
+  if (state::find(name) != nullptr) {
+    diags.error(acc.embedding.loc, "'" + name +
+                                       "' is the simulator's state and cannot be accumulated "
+                                       "by an interaction; accumulate into an embedding of the "
+                                       "pack");
+    return;
+  }
+  const ast::Embedding* target = symbols.target(acc);
+  if (!target) return;
+  if (target->type != Type::Real && target->type != Type::Vec3 && target->type != Type::Mat3) {
+    diags
+        .error(acc.embedding.loc, "'" + name + "' holds " + std::string(to_string(target->type)) +
+                                      " values, which do not add: 'store ... +=' accumulates "
+                                      "real, vec3 or mat3")
+        .notes.push_back({target->name.loc, "declared here"});
+    return;
+  }
+  std::vector<int> vertex;
+  for (int d = 1; d <= dimension; ++d)
+    vertex.push_back(d);
+  std::vector<int> dims = target->orbit.dims;
+  std::sort(dims.begin(), dims.end());
+  if (dims != vertex) {
+    std::string orbit = "<";
+    for (std::size_t i = 0; i < vertex.size(); ++i)
+      orbit += (i ? "," : "") + std::to_string(vertex[i]);
+    orbit += ">";
+    diags
+        .error(acc.embedding.loc,
+               "'" + name + "' is not on the vertex orbit " + orbit +
+                   ": 'store ... +=' adds per vertex, in the order the forces' scatter gives each "
+                   "vertex (use 'store ... =' for a value of the match's own orbit)")
+        .notes.push_back({target->orbit.loc, "its orbit"});
+    return;
+  }
+  for (const ast::Assign& f : inter.forces) {
+    if (f.embedding.text != name) continue;
+    diags
+        .error(acc.embedding.loc, "'" + name + "' is a force of interaction '" + inter.name.text +
+                                      "'; a store cannot also add to it")
+        .notes.push_back({f.embedding.loc, "the force"});
+    return;
+  }
+  for (const ast::Init& init : inter.inits) {
+    if (init.embedding.text != name) continue;
+    diags
+        .error(acc.embedding.loc, "'" + name + "' is initialised by interaction '" +
+                                      inter.name.text + "'; accumulating would overwrite it")
+        .notes.push_back({init.embedding.loc, "the init"});
+    return;
+  }
+  for (const ast::Assign& st : inter.stores) {
+    if (st.embedding.text != name) continue;
+    diags
+        .error(acc.embedding.loc,
+               "'" + name + "' is both stored ('=') and accumulated ('+=') by interaction '" +
+                   inter.name.text + "'")
+        .notes.push_back({st.embedding.loc, "the store"});
+    return;
+  }
+  for (const ast::Assign& other : inter.accumulations) {
+    if (&other == &acc) break;
+    if (other.embedding.text != name || other.node.text != acc.node.text) continue;
+    diags
+        .error(acc.embedding.loc, "'" + name + "' is accumulated twice at '" + acc.node.text +
+                                      "'; add the two values in one statement")
+        .notes.push_back({other.embedding.loc, "the first"});
+    return;
+  }
+  const bool pushed =
+      std::any_of(inter.forces.begin(), inter.forces.end(),
+                  [&](const ast::Assign& f) { return f.node.text == acc.node.text; });
+  if (!pushed) {
+    diags.error(acc.node.loc,
+                "interaction '" + inter.name.text + "' exerts no force on '" + acc.node.text +
+                    "': 'store ... +=' adds at the vertices of the forces, which the coloured "
+                    "scatter keeps apart between threads (deterministic sums)");
+  }
+}
+
 void check_component_params(const std::vector<ast::Param>& params, TypeChecker& tc,
                             diag::Diagnostics& diags) {
   for (const ast::Param& p : params) {
@@ -562,6 +653,10 @@ void check_types(const ast::Program& program, const resolve::Symbols& symbols, E
       for (const auto& st : inter.stores) {
         check_assign(st, symbols, tc, "the stored value of");
         check_stored_value(inter, st, diags);
+      }
+      for (const auto& acc : inter.accumulations) {
+        check_assign(acc, symbols, tc, "the accumulated value of");
+        check_accumulated_value(inter, acc, symbols, program.dimension, diags);
       }
       for (const auto& j : inter.jacobians)
         tc.expect(*j.value, Type::Mat3, "a Jacobian block");

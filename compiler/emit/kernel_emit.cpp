@@ -6,6 +6,7 @@
 // evaluate<kForces>(): straight-line code over those slots (no traversal, no
 // allocation, no virtual call) that the force pass and energy() share.
 #include <algorithm>
+#include <map>
 #include <set>
 #include <utility>
 
@@ -65,6 +66,18 @@ std::string force_field(const ir::Body& body, const ir::Force& f) {
 /// The field of Result a `store` is returned in: `stored_fem_stress_c0`.
 std::string store_field(const ir::Body& body, const ir::Store& st) {
   return "stored_" + st.embedding + "_" + body.nodes[static_cast<std::size_t>(st.node)];
+}
+
+/// The additive zero of a `store +=` value's type (real, vec3 or mat3).
+std::string zero_of(ir::Type t) {
+  if (t == ir::Type::Vec3) return "rift::Vec3::Zero()";
+  if (t == ir::Type::Mat3) return "rift::Mat3::Zero()";
+  return "rift::Real{0}";
+}
+
+bool accumulates(const ir::Body& b) {
+  return std::any_of(b.stores.begin(), b.stores.end(),
+                     [](const ir::Store& st) { return st.accumulate; });
 }
 
 struct Kernel {
@@ -452,8 +465,11 @@ void write_add_forces_all(Writer& w, const Kernel& k) {
       w.line("stored_" + f.embedding + "[m." + k.slots[static_cast<std::size_t>(f.store_slot)] +
              "] = rift::Vec3::Zero();");
     }
-    for (const ir::Store& st : b.stores)
-      w.line(store_at(st) + " = " + embedding_var(st.embedding) + ".default_value();");
+    for (const ir::Store& st : b.stores) {
+      // A sum skips the match (it adds nothing); a value is reset.
+      if (!st.accumulate)
+        w.line(store_at(st) + " = " + embedding_var(st.embedding) + ".default_value();");
+    }
     w.close();
     w.line("continue;");
     w.close();
@@ -466,7 +482,7 @@ void write_add_forces_all(Writer& w, const Kernel& k) {
     if (stores_values) {
       w.open(if_store + "{");
       for (const ir::Store& st : b.stores)
-        w.line(store_at(st) + " = r." + store_field(b, st) + ";");
+        w.line(store_at(st) + (st.accumulate ? " += r." : " = r.") + store_field(b, st) + ";");
       w.close();
     }
   } else {
@@ -797,11 +813,42 @@ void write_reset(Writer& w, const Kernel& k) {
     w.line("if (" + at + " < " + col + ".size()) " + col + "[" + at + "] = rift::Vec3::Zero();");
   }
   for (const ir::Store& st : b.stores) {
+    if (st.accumulate) continue;  // per vertex: reset_accumulated, by region
     const std::string col = embedding_var(st.embedding) + ".values()";
     const std::string at = std::string("m.") + k.slots[static_cast<std::size_t>(st.store_slot)];
     w.line("if (" + at + " < " + col + ".size()) " + col + "[" + at +
            "] = " + embedding_var(st.embedding) + ".default_value();");
   }
+  w.close();
+  w.line();
+}
+
+/// The sums of `store +=`: zeroed whole before the pass that stores (every
+/// match then adds its terms), and zeroed at the vertices a rewrite touched,
+/// whose elements changed, until that pass runs again.
+void write_accumulated(Writer& w, const Kernel& k) {
+  const ir::Body& b = k.plan->body;
+  if (!accumulates(b)) return;
+  std::map<std::string, ir::Type> sums;
+  for (const ir::Store& st : b.stores)
+    if (st.accumulate) sums.emplace(st.embedding, b.graph[st.value].type);
+  w.open("void " + k.cls + "::clear_accumulated() {");
+  for (const auto& [e, type] : sums) {
+    w.line("std::fill(" + embedding_var(e) + ".values().begin(), " + embedding_var(e) +
+           ".values().end(), " + zero_of(type) + ");");
+  }
+  w.close();
+  w.line();
+  w.open("void " + k.cls +
+         "::reset_accumulated(const rift::GMap& g, std::span<const rift::Dart> region) {");
+  w.open("for (const rift::Dart d : region) {");
+  w.line("if (!g.is_alive(d)) continue;");
+  for (const auto& [e, type] : sums) {
+    const std::string col = embedding_var(e) + ".values()";
+    w.line("if (const rift::Slot s = " + embedding_var(e) + ".slot(d); s < " + col + ".size()) " +
+           col + "[s] = " + zero_of(type) + ";");
+  }
+  w.close();
   w.close();
   w.line();
 }
@@ -892,6 +939,11 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
         "rift::ForceInput& in, rift::Vec3* f);");
   }
   w.line("void reset_stored(const Match& m);");
+  if (accumulates(k.plan->body)) {
+    w.line("/// The per-vertex sums of `store +=` (rift/sim/cached_interaction.hpp).");
+    w.line("void clear_accumulated();");
+    w.line("void reset_accumulated(const rift::GMap& g, std::span<const rift::Dart> region);");
+  }
   w.line("rift::Real energy(const Match& m, const rift::ForceInput& in) const;");
   if (k.plan->body.energy != ir::kNoExpr) {
     w.line("/// The rule gives an energy (the implicit Newton line search can use it).");
@@ -980,6 +1032,7 @@ void emit_kernel(Writer& w, const InteractionPlan& plan, const PackModel& model)
     write_group_passes(w, k);
   }
   write_reset(w, k);
+  write_accumulated(w, k);
   write_energy(w, k);
   if (k.derivative.available) {
     write_vertex_slots(w, k);

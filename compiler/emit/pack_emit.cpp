@@ -211,7 +211,14 @@ void write_pack_class(Writer& w, const PackModel& m) {
       forces += (forces.empty() ? "" : ", ") + f.embedding.text;
     }
     std::string values;
-    for (const ast::Assign& st : in.stores) {
+    std::vector<const ast::Assign*> kept;
+    kept.reserve(in.stores.size() + in.accumulations.size());
+    for (const ast::Assign& st : in.stores)
+      kept.push_back(&st);
+    for (const ast::Assign& acc : in.accumulations)
+      kept.push_back(&acc);
+    for (const ast::Assign* stp : kept) {
+      const ast::Assign& st = *stp;
       if (std::find(stores.begin(), stores.end(), st.embedding.text) != stores.end()) continue;
       stores.push_back(st.embedding.text);
       values += (values.empty() ? "" : ", ") + st.embedding.text;

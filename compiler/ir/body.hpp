@@ -44,6 +44,9 @@ struct Force {
 struct Store {
   int node = 0;  // index into Body::nodes
   std::string embedding;
+  /// `store node.embedding += value`: added at store_slot (a vertex slot
+  /// the forces' scatter orders) after the pass zeroed it, not written.
+  bool accumulate = false;
   int store_slot = -1;
   ExprId value = kNoExpr;
   diag::Location loc;

@@ -60,9 +60,12 @@ InteractionPlan plan_interaction(const check::CheckedInteraction& ci,
     f.loc = a.value->loc;
     body.forces.push_back(f);
   }
-  for (std::size_t k = 0; k < inter.stores.size(); ++k) {
-    const ast::Assign& a = inter.stores[k];
+  for (std::size_t k = 0; k < inter.stores.size() + inter.accumulations.size(); ++k) {
+    const bool accumulate = k >= inter.stores.size();
+    const ast::Assign& a =
+        accumulate ? inter.accumulations[k - inter.stores.size()] : inter.stores[k];
     ir::Store st;
+    st.accumulate = accumulate;
     for (std::size_t v = 0; v < body.nodes.size(); ++v) {
       if (body.nodes[v] == a.node.text) st.node = static_cast<int>(v);
     }

@@ -104,10 +104,12 @@ KernelPlan plan_kernel(const check::CheckedInteraction& ci, const resolve::Symbo
     store.store_slot = collect.add(node, {}, symbols.target(f)->orbit.dims, f.embedding.text);
     plan.forces.push_back(store);
   }
-  for (const ast::Assign& st : inter.stores) {
-    collect.reads(*st.value);
-    plan.stores.push_back(collect.add(g.left.find(st.node.text), {}, symbols.target(st)->orbit.dims,
-                                      st.embedding.text));
+  for (const auto* list : {&inter.stores, &inter.accumulations}) {
+    for (const ast::Assign& st : *list) {
+      collect.reads(*st.value);
+      plan.stores.push_back(collect.add(g.left.find(st.node.text), {},
+                                        symbols.target(st)->orbit.dims, st.embedding.text));
+    }
   }
   if (inter.energy) collect.reads(*inter.energy);
   // A block by b is of b's vertex, read or not; its value is a force-loop value.

@@ -35,7 +35,7 @@ struct KernelPlan {
   std::vector<int> depth;          // links from the support dart, per pattern node
   std::vector<SlotUse> slots;
   std::vector<ForceStore> forces;  // parallel to the interaction's `force` statements
-  std::vector<int> stores;         // the slot of each `store` statement, in order
+  std::vector<int> stores;         // the slot of each `store =`, then of each `store +=`
   int radius = 0;                  // kRadius: the farthest dart any read or check touches
 
   /// Index of the slot of node@hops on `orbit`, or -1.

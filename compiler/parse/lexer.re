@@ -209,6 +209,7 @@ Parser::symbol_type Lexer::next() {
       "!=" { return Parser::make_NE(RIFT_TOKEN()); }
       "<"  { return Parser::make_LT(RIFT_TOKEN()); }
       ">"  { return Parser::make_GT(RIFT_TOKEN()); }
+      "+=" { return Parser::make_PLUS_ASSIGN(RIFT_TOKEN()); }
       "+"  { return Parser::make_PLUS(RIFT_TOKEN()); }
       "-"  { return Parser::make_MINUS(RIFT_TOKEN()); }
       "*"  { return Parser::make_STAR(RIFT_TOKEN()); }

@@ -123,7 +123,7 @@ ExprPtr call(std::string name, std::vector<ExprPtr> args, const rift::diag::Loca
 
 %token SEMI ";" COLON ":" COMMA "," DOT "." AT_SIGN "@" ASSIGN "=" LBRACE "{" RBRACE "}"
        LPAREN "(" RPAREN ")" LBRACKET "[" RBRACKET "]" LT "<" GT ">" LE "<=" GE ">="
-       EQ "==" NE "!=" PLUS "+" MINUS "-" STAR "*" SLASH "/" UNDERSCORE "_"
+       EQ "==" NE "!=" PLUS "+" PLUS_ASSIGN "+=" MINUS "-" STAR "*" SLASH "/" UNDERSCORE "_"
 
 %type <rift::ast::ExprPtr> expr primary node_path
 %type <std::vector<rift::ast::ExprPtr>> args args1
@@ -426,6 +426,14 @@ interaction_stmt
                             "...;' stores a value for criteria), not '" + $1.text + "'");
       }
       ctx.interaction.stores.push_back(rift::ast::Assign{$2, $4, $6, @$});
+    }
+  | ident ident DOT ident PLUS_ASSIGN expr SEMI {
+      if ($1.text != "store") {
+        ctx.diags.error(@1, "expected a statement of an interaction ('store NODE.EMBEDDING += "
+                            "...;' accumulates a value per vertex for criteria), not '" +
+                            $1.text + "'");
+      }
+      ctx.interaction.accumulations.push_back(rift::ast::Assign{$2, $4, $6, @$});
     }
   | ENERGY expr SEMI {
       if (ctx.interaction.energy) ctx.diags.error(@1, "the interaction already has an energy");

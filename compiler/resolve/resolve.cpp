@@ -571,6 +571,11 @@ void resolve_names(const ast::Program& program, Symbols& symbols, diag::Diagnost
         r.node(st.node.text, st.node.loc, s);
         r.expr(*st.value, s);
       }
+      for (const auto& acc : inter.accumulations) {
+        r.bind_target(acc);
+        r.node(acc.node.text, acc.node.loc, s);
+        r.expr(*acc.value, s);
+      }
       for (const auto& j : inter.jacobians)
         r.expr(*j.value, s);
       if (inter.energy) r.expr(*inter.energy, s);

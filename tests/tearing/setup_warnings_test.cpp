@@ -33,14 +33,13 @@ TEST(SetupWarnings, InteractionsThatMatchNoElementAndTheCriteriaTheyStarveAreNam
   const auto hex = setup_warnings("hex", "block:hex:2x2x2",
                                   "[[interaction]]\nname = \"corotational\"\n"
                                   "[[criterion]]\nname = \"vertex_stress\"\n");
-  EXPECT_EQ(
-      hex,
-      (std::vector<std::string>{
-          "interaction 'corotational' matches no element of the mesh "
-          "'block:hex:2x2x2' (its pattern needs other elements): it exerts no force",
-          "criterion 'vertex_stress' cannot fire on the mesh 'block:hex:2x2x2': its "
-          "measure reads only the stored fem_mass, fem_stress, which no interaction of the scene "
-          "stores here ('corotational' matches no element of this mesh)"}));
+  EXPECT_EQ(hex, (std::vector<std::string>{
+                     "interaction 'corotational' matches no element of the mesh "
+                     "'block:hex:2x2x2' (its pattern needs other elements): it exerts no force",
+                     "criterion 'vertex_stress' cannot fire on the mesh 'block:hex:2x2x2': its "
+                     "measure reads only the stored stress_mass, stress_weighted, which no "
+                     "interaction of the scene "
+                     "stores here ('corotational' matches no element of this mesh)"}));
   const auto tet = setup_warnings("tet", "block:tet:2x2x2",
                                   "[[interaction]]\nname = \"volume_shear\"\n"
                                   "[[criterion]]\nname = \"shear_force\"\n");
@@ -66,12 +65,11 @@ TEST(SetupWarnings, CriteriaReadingForcesNoInteractionOfTheSceneStoresAreNamed) 
   const auto hex = setup_warnings("hex_springs", "block:hex:2x2x2",
                                   "[[interaction]]\nname = \"volume_shear\"\n"
                                   "[[criterion]]\nname = \"vertex_stress\"\n");
-  EXPECT_EQ(
-      hex,
-      (std::vector<std::string>{
-          "criterion 'vertex_stress' cannot fire on the mesh 'block:hex:2x2x2': its "
-          "measure reads only the stored fem_mass, fem_stress, which no interaction of the scene "
-          "stores here ('corotational' is not in the scene)"}));
+  EXPECT_EQ(hex, (std::vector<std::string>{
+                     "criterion 'vertex_stress' cannot fire on the mesh 'block:hex:2x2x2': its "
+                     "measure reads only the stored stress_mass, stress_weighted, which no "
+                     "interaction of the scene "
+                     "stores here ('corotational' is not in the scene)"}));
   // 2D: the co-rotational triangle's stress read on quadrangles with springs.
   const auto quads = setup_warnings("quads", "grid:quad:3x3",
                                     "[[interaction]]\nname = \"stretch\"\n"

@@ -113,6 +113,8 @@ void store_forces(Simulation& sim) {
   std::vector<Vec3> f(sim.position().values().size(), Vec3::Zero());
   const ForceInput in{sim.position().values().data(), sim.velocity().values().data()};
   for (const auto& model : sim.force_models())
+    model->clear_accumulated();  // the per-vertex sums of `store +=`, as the simulation does
+  for (const auto& model : sim.force_models())
     model->add_forces(in, f.data(), true);
   // The total internal force per vertex, where a pack declares it (as the
   // simulation stores it: same orbit as position, so the same slots).

@@ -117,6 +117,9 @@ class CachedInteraction final : public ForceModel {
   }
 
   void rematch(const GMap& map, std::span<const Dart> region) override {
+    if constexpr (kAccumulates) {
+      if (store_forces_) kernel_.reset_accumulated(map, region);
+    }
     auto match = [&](const GMap& m, Dart d, typename Kernel::Match& out) {
       return kernel_.match(m, d, out);
     };
@@ -139,6 +142,12 @@ class CachedInteraction final : public ForceModel {
       typename MatchCache<Match>::NoObserver none;
       cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost, none,
                      support_chooser());
+    }
+  }
+
+  void clear_accumulated() override {
+    if constexpr (kAccumulates) {
+      if (store_forces_) kernel_.clear_accumulated();
     }
   }
 
@@ -254,6 +263,13 @@ class CachedInteraction final : public ForceModel {
     Kernel::kForceTerms;
     k.force_targets(m, out);
     k.add_forces_all(ms, in, f, true);
+  };
+
+  /// Per-vertex sums (`store +=`), added in the coloured scatter's order.
+  static constexpr bool kAccumulates =
+      requires(Kernel & k, const GMap& g, std::span<const Dart> region) {
+    k.clear_accumulated();
+    k.reset_accumulated(g, region);
   };
 
   static constexpr int terms_per_match() {

@@ -31,13 +31,19 @@ class ForceModel {
   /// touched: re-match the support orbits containing one of them, forget the
   /// ones that were deleted, and zero the stored forces of matches that are
   /// lost (§4.1: an interaction whose pattern no longer matches contributes
-  /// nothing).
+  /// nothing), and the per-vertex sums at the region's vertices (their
+  /// elements changed: zero until the next pass that stores).
   virtual void rematch(const GMap& map, std::span<const Dart> region) = 0;
 
   /// Adds this interaction's forces to f (indexed by vertex slot). With
   /// `store`, also writes them into the interaction's force embeddings so
   /// that criteria can read them (Table 1, last column).
   virtual void add_forces(const ForceInput& in, Vec3* f, bool store) = 0;
+  /// Zeroes the per-vertex sums the interaction adds to on a pass that
+  /// stores (`store v.E += ...`, docs/language.md). Called for every model
+  /// before the models' add_forces(..., true): two interactions may add to
+  /// the same sum.
+  virtual void clear_accumulated() {}
   /// Before initialise: false when nothing reads this interaction's stored
   /// forces (no criterion, no output: the scene's set-up decides), which it
   /// then neither stores nor resets, leaving their columns without storage

@@ -148,6 +148,10 @@ void Simulation::accelerations(const std::vector<Vec3>& x, const std::vector<Vec
   forces_.resize(n);
   parallel_for(n, [&](std::size_t s) { forces_[s].setZero(); });
   const ForceInput in{x.data(), v.data()};
+  if (store) {
+    for (auto& model : models_)
+      model->clear_accumulated();
+  }
   for (auto& model : models_)
     model->add_forces(in, forces_.data(), store);
   if (store && vertex_force_) {

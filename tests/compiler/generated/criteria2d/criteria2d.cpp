@@ -194,15 +194,15 @@ void declare_embeddings(rift::GMap& g) {
   } else if (g.find_column("f_membrane")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_membrane")->orbit() == rift::Orbit{1}) || g.find_column("f_membrane")->policy() != rift::MergePolicy::kKeepFirst) {
     throw std::invalid_argument("the map's embedding 'f_membrane' is not the pack's vec3 on <1> merged by 'keep'");
   }
-  if (!g.has_embedding("membrane_stress")) {
-    g.declare_embedding<rift::Mat3>("membrane_stress", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
-  } else if (g.find_column("membrane_stress")->type() != rift::ValueType::kMat3 || !(g.attachment_of("membrane_stress")->orbit() == rift::Orbit{0, 1}) || g.find_column("membrane_stress")->policy() != rift::MergePolicy::kKeepFirst) {
-    throw std::invalid_argument("the map's embedding 'membrane_stress' is not the pack's mat3 on <0,1> merged by 'keep'");
+  if (!g.has_embedding("stress_weighted")) {
+    g.declare_embedding<rift::Mat3>("stress_weighted", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
+  } else if (g.find_column("stress_weighted")->type() != rift::ValueType::kMat3 || !(g.attachment_of("stress_weighted")->orbit() == rift::Orbit{1, 2}) || g.find_column("stress_weighted")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'stress_weighted' is not the pack's mat3 on <1,2> merged by 'keep'");
   }
-  if (!g.has_embedding("membrane_mass")) {
-    g.declare_embedding<rift::Real>("membrane_mass", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("membrane_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("membrane_mass")->orbit() == rift::Orbit{0, 1}) || g.find_column("membrane_mass")->policy() != rift::MergePolicy::kKeepFirst) {
-    throw std::invalid_argument("the map's embedding 'membrane_mass' is not the pack's real on <0,1> merged by 'keep'");
+  if (!g.has_embedding("stress_mass")) {
+    g.declare_embedding<rift::Real>("stress_mass", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+  } else if (g.find_column("stress_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("stress_mass")->orbit() == rift::Orbit{1, 2}) || g.find_column("stress_mass")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'stress_mass' is not the pack's real on <1,2> merged by 'keep'");
   }
   if (!g.has_embedding("position")) {
     g.declare_embedding<rift::Vec3>("position", rift::Orbit{1, 2}, rift::MergePolicy::kMean, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
@@ -471,20 +471,16 @@ bool InteractionForceCriterion::apply(rift::GMap& g, const rift::TearCandidate& 
 
 void VertexStressCriterion::initialise(rift::GMap& g) {
   rift::packs::criteria2d::declare_embeddings(g);
-  e_membrane_mass = require_embedding<rift::Real>(g, "membrane_mass", "criterion 'vertex_stress'");
-  e_membrane_stress = require_embedding<rift::Mat3>(g, "membrane_stress", "criterion 'vertex_stress'");
   e_position = require_embedding<rift::Vec3>(g, "position", "criterion 'vertex_stress'");
+  e_stress_mass = require_embedding<rift::Real>(g, "stress_mass", "criterion 'vertex_stress'");
+  e_stress_weighted = require_embedding<rift::Mat3>(g, "stress_weighted", "criterion 'vertex_stress'");
 }
 
 void VertexStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kOneThread, out, [&](rift::Dart d_v, std::vector<rift::TearCandidate>& found) {
+  cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_v, std::vector<rift::TearCandidate>& found) {
     rift::throw_if_interrupted();
-    rift::Mat3 s0 = rift::Mat3::Zero();
-    rift::Real s1 = rift::Real(0);
-    for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { s0 += (e_membrane_mass[d_f] * e_membrane_stress[d_f]); s1 += e_membrane_mass[d_f]; });
-    const rift::Mat3 l_weighted = s0;
-    const rift::Real l_mass = s1;
-    const rift::Mat3 l_s = ((l_mass > 0.0) ? rift::Mat3((l_weighted / l_mass)) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
+    const rift::Real l_mass = e_stress_mass[d_v];
+    const rift::Mat3 l_s = ((l_mass > 0.0) ? rift::Mat3((e_stress_weighted[d_v] / l_mass)) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
     const rift::Real measure = symmetric_max_eigenvalue(l_s);
     const rift::Real threshold = p_.threshold;
     if (!(measure > threshold)) return;
@@ -687,8 +683,8 @@ Pack::Pack(const Params& params) : params_(params), description_("2D tearing cri
   embeddings_.push_back({"f_abend", rift::ValueType::kVec3, rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_abend_wing", rift::ValueType::kVec3, rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_membrane", rift::ValueType::kVec3, rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
-  embeddings_.push_back({"membrane_stress", rift::ValueType::kMat3, rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()))});
-  embeddings_.push_back({"membrane_mass", rift::ValueType::kReal, rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
+  embeddings_.push_back({"stress_weighted", rift::ValueType::kMat3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()))});
+  embeddings_.push_back({"stress_mass", rift::ValueType::kReal, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"position", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kMean, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"corner_mass", rift::ValueType::kReal, rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"vertex_force", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
@@ -716,7 +712,7 @@ Pack::Pack(const Params& params) : params_(params), description_("2D tearing cri
   }, kDimension, {}, {"f_membrane", "f_shear", "f_stretch", "position"}});
   catalog_.criteria.push_back({"vertex_stress", "The vertex stress tensor (mass-weighted mean of its elements', eq. 1-2) has an eigenvalue past the threshold: split perpendicular to its eigenvector (§5.2). (on <1,2>; applies rule split_vertex)", {
     {"threshold", rift::ValueType::kReal, rift::Value(rift::Real(100.0)), "N/m", true, false},
-  }, kDimension, {}, {"membrane_mass", "membrane_stress", "position", "side"}});
+  }, kDimension, {}, {"stress_mass", "stress_weighted", "position", "side"}});
   catalog_.criteria.push_back({"vertex_energy", "Griffith at the mesh scale: the strain energy of a vertex's share of its membrane triangles per unit of its size passes the toughness: split perpendicular to the largest principal stress. (on <1,2>; applies rule split_vertex)", {
     {"toughness", rift::ValueType::kReal, rift::Value(rift::Real(1.0)), "N/m (energy release rate times thickness)", true, false},
   }, kDimension, {}, {"membrane_mu", "position", "f_membrane", "membrane_lambda", "corner_mass", "side"}});

@@ -236,9 +236,9 @@ class VertexStressCriterion final : public rift::Criterion {
   std::string name_ = "vertex_stress";
   VertexStressParams p_;
   [[maybe_unused]] Params pack_;
-  rift::Embedding<rift::Real> e_membrane_mass;
-  rift::Embedding<rift::Mat3> e_membrane_stress;
   rift::Embedding<rift::Vec3> e_position;
+  rift::Embedding<rift::Real> e_stress_mass;
+  rift::Embedding<rift::Mat3> e_stress_weighted;
   /// The cells collect() visits, kept while the map's links do not change.
   mutable rift::generated::CellCollection cells_;
 };

@@ -78,15 +78,15 @@ void declare_embeddings(rift::GMap& g) {
   } else if (g.find_column("f_fem")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_fem")->orbit() == rift::Orbit{1, 2}) || g.find_column("f_fem")->policy() != rift::MergePolicy::kKeepFirst) {
     throw std::invalid_argument("the map's embedding 'f_fem' is not the pack's vec3 on <1,2> merged by 'keep'");
   }
-  if (!g.has_embedding("fem_stress")) {
-    g.declare_embedding<rift::Mat3>("fem_stress", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
-  } else if (g.find_column("fem_stress")->type() != rift::ValueType::kMat3 || !(g.attachment_of("fem_stress")->orbit() == rift::Orbit{0, 1, 2}) || g.find_column("fem_stress")->policy() != rift::MergePolicy::kKeepFirst) {
-    throw std::invalid_argument("the map's embedding 'fem_stress' is not the pack's mat3 on <0,1,2> merged by 'keep'");
+  if (!g.has_embedding("stress_weighted")) {
+    g.declare_embedding<rift::Mat3>("stress_weighted", rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
+  } else if (g.find_column("stress_weighted")->type() != rift::ValueType::kMat3 || !(g.attachment_of("stress_weighted")->orbit() == rift::Orbit{1, 2, 3}) || g.find_column("stress_weighted")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'stress_weighted' is not the pack's mat3 on <1,2,3> merged by 'keep'");
   }
-  if (!g.has_embedding("fem_mass")) {
-    g.declare_embedding<rift::Real>("fem_mass", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("fem_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("fem_mass")->orbit() == rift::Orbit{0, 1, 2}) || g.find_column("fem_mass")->policy() != rift::MergePolicy::kKeepFirst) {
-    throw std::invalid_argument("the map's embedding 'fem_mass' is not the pack's real on <0,1,2> merged by 'keep'");
+  if (!g.has_embedding("stress_mass")) {
+    g.declare_embedding<rift::Real>("stress_mass", rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+  } else if (g.find_column("stress_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("stress_mass")->orbit() == rift::Orbit{1, 2, 3}) || g.find_column("stress_mass")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'stress_mass' is not the pack's real on <1,2,3> merged by 'keep'");
   }
   if (!g.has_embedding("position")) {
     g.declare_embedding<rift::Vec3>("position", rift::Orbit{1, 2, 3}, rift::MergePolicy::kMean, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
@@ -320,11 +320,11 @@ void CorotationalKernel::initialise(rift::GMap& g) {
   e_f_fem = require_embedding<rift::Vec3>(g, "f_fem", "interaction 'corotational'");
   e_fem_b = require_embedding<rift::Mat3>(g, "fem_b", "interaction 'corotational'");
   e_fem_lambda = require_embedding<rift::Real>(g, "fem_lambda", "interaction 'corotational'");
-  e_fem_mass = require_embedding<rift::Real>(g, "fem_mass", "interaction 'corotational'");
   e_fem_mu = require_embedding<rift::Real>(g, "fem_mu", "interaction 'corotational'");
-  e_fem_stress = require_embedding<rift::Mat3>(g, "fem_stress", "interaction 'corotational'");
   e_fem_volume = require_embedding<rift::Real>(g, "fem_volume", "interaction 'corotational'");
   e_position = require_embedding<rift::Vec3>(g, "position", "interaction 'corotational'");
+  e_stress_mass = require_embedding<rift::Real>(g, "stress_mass", "interaction 'corotational'");
+  e_stress_weighted = require_embedding<rift::Mat3>(g, "stress_weighted", "interaction 'corotational'");
   // §3.2: the dart each element is first matched from fixes the order of its corners.
   tag_ = require_embedding<rift::Bool>(g, "corotational_first_dart", "interaction 'corotational'");
   std::fill(tag_.values().begin(), tag_.values().end(), rift::Bool(false));
@@ -373,10 +373,10 @@ bool CorotationalKernel::match(const rift::GMap& g, rift::Dart support, Match& m
   m.vertex_c0 = e_position.slot(darts[0]);
   m.vertex_c2 = e_position.slot(darts[3]);
   m.vertex_c3 = e_position.slot(darts[6]);
-  m.orbit12_c0 = e_f_fem.slot(darts[0]);
-  m.orbit12_c1 = e_f_fem.slot(darts[1]);
-  m.orbit12_c2 = e_f_fem.slot(darts[3]);
-  m.orbit12_c3 = e_f_fem.slot(darts[6]);
+  m.orbit12_c0 = e_corner_mass.slot(darts[0]);
+  m.orbit12_c1 = e_corner_mass.slot(darts[1]);
+  m.orbit12_c2 = e_corner_mass.slot(darts[3]);
+  m.orbit12_c3 = e_corner_mass.slot(darts[6]);
   return true;
 }
 
@@ -401,16 +401,24 @@ inline bool CorotationalKernel::evaluate(const Match& m, const rift::ForceInput&
   [[maybe_unused]] const rift::Vec3 l_f2 = rift::Vec3((l_hm)(0, 1), (l_hm)(1, 1), (l_hm)(2, 1));
   [[maybe_unused]] const rift::Vec3 l_f3 = rift::Vec3((l_hm)(0, 2), (l_hm)(1, 2), (l_hm)(2, 2));
   [[maybe_unused]] const rift::Mat3 l_ds = ((rift::Mat3() << in.x[m.vertex_c1], in.x[m.vertex_c2], in.x[m.vertex_c3]).finished() - (rift::Mat3() << in.x[m.vertex_c0], in.x[m.vertex_c0], in.x[m.vertex_c0]).finished());
+  [[maybe_unused]] const rift::Real l_me = (((c.corner_mass[m.orbit12_c0] + c.corner_mass[m.orbit12_c1]) + c.corner_mass[m.orbit12_c2]) + c.corner_mass[m.orbit12_c3]);
+  const rift::Real s0 = (std::abs((l_ds).determinant()) / 6.0);
+  const rift::Mat3 s1 = (l_hm * (l_ds).transpose());
+  [[maybe_unused]] const rift::Mat3 l_weighted = (l_me * ((s0 > 0.0) ? rift::Mat3((((-0.5) / s0) * (s1 + (s1).transpose()))) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished())));
   if constexpr (kForces) {
     r.f_fem_c0 = (-((l_f1 + l_f2) + l_f3));
     r.f_fem_c1 = l_f1;
     r.f_fem_c2 = l_f2;
     r.f_fem_c3 = l_f3;
     if constexpr (kStores) {
-      const rift::Real s0 = (std::abs((l_ds).determinant()) / 6.0);
-      const rift::Mat3 s1 = (l_hm * (l_ds).transpose());
-      r.stored_fem_stress_c0 = ((s0 > 0.0) ? rift::Mat3((((-0.5) / s0) * (s1 + (s1).transpose()))) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
-      r.stored_fem_mass_c0 = (((c.corner_mass[m.orbit12_c0] + c.corner_mass[m.orbit12_c1]) + c.corner_mass[m.orbit12_c2]) + c.corner_mass[m.orbit12_c3]);
+      r.stored_stress_weighted_c0 = l_weighted;
+      r.stored_stress_weighted_c1 = l_weighted;
+      r.stored_stress_weighted_c2 = l_weighted;
+      r.stored_stress_weighted_c3 = l_weighted;
+      r.stored_stress_mass_c0 = l_me;
+      r.stored_stress_mass_c1 = l_me;
+      r.stored_stress_mass_c2 = l_me;
+      r.stored_stress_mass_c3 = l_me;
     }
   } else {
     const rift::Real s2 = (l_strain).trace();
@@ -422,8 +430,8 @@ inline bool CorotationalKernel::evaluate(const Match& m, const rift::ForceInput&
 void CorotationalKernel::add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store) {
   const Columns c = columns();
   rift::Vec3* const stored_f_fem = store ? e_f_fem.values().data() : nullptr;
-  auto* const stored_fem_mass = store ? e_fem_mass.values().data() : nullptr;
-  auto* const stored_fem_stress = store ? e_fem_stress.values().data() : nullptr;
+  auto* const stored_stress_mass = store ? e_stress_mass.values().data() : nullptr;
+  auto* const stored_stress_weighted = store ? e_stress_weighted.values().data() : nullptr;
   auto pass = [&]<bool kStore>() __attribute__((noinline)) {
     for (const Match& m : ms) {
       Result r;
@@ -433,8 +441,6 @@ void CorotationalKernel::add_forces_all(std::span<const Match> ms, const rift::F
           stored_f_fem[m.orbit12_c1] = rift::Vec3::Zero();
           stored_f_fem[m.orbit12_c2] = rift::Vec3::Zero();
           stored_f_fem[m.orbit12_c3] = rift::Vec3::Zero();
-          stored_fem_stress[m.orbit012_c0] = e_fem_stress.default_value();
-          stored_fem_mass[m.orbit012_c0] = e_fem_mass.default_value();
         }
         continue;
       }
@@ -447,8 +453,14 @@ void CorotationalKernel::add_forces_all(std::span<const Match> ms, const rift::F
       f[m.vertex_c3] += r.f_fem_c3;
       if constexpr (kStore) stored_f_fem[m.orbit12_c3] = r.f_fem_c3;
       if constexpr (kStore) {
-        stored_fem_stress[m.orbit012_c0] = r.stored_fem_stress_c0;
-        stored_fem_mass[m.orbit012_c0] = r.stored_fem_mass_c0;
+        stored_stress_weighted[m.vertex_c0] += r.stored_stress_weighted_c0;
+        stored_stress_weighted[m.vertex_c1] += r.stored_stress_weighted_c1;
+        stored_stress_weighted[m.vertex_c2] += r.stored_stress_weighted_c2;
+        stored_stress_weighted[m.vertex_c3] += r.stored_stress_weighted_c3;
+        stored_stress_mass[m.vertex_c0] += r.stored_stress_mass_c0;
+        stored_stress_mass[m.vertex_c1] += r.stored_stress_mass_c1;
+        stored_stress_mass[m.vertex_c2] += r.stored_stress_mass_c2;
+        stored_stress_mass[m.vertex_c3] += r.stored_stress_mass_c3;
       }
     }
   };
@@ -471,8 +483,19 @@ void CorotationalKernel::reset_stored(const Match& m) {
   if (m.orbit12_c1 < e_f_fem.values().size()) e_f_fem.values()[m.orbit12_c1] = rift::Vec3::Zero();
   if (m.orbit12_c2 < e_f_fem.values().size()) e_f_fem.values()[m.orbit12_c2] = rift::Vec3::Zero();
   if (m.orbit12_c3 < e_f_fem.values().size()) e_f_fem.values()[m.orbit12_c3] = rift::Vec3::Zero();
-  if (m.orbit012_c0 < e_fem_stress.values().size()) e_fem_stress.values()[m.orbit012_c0] = e_fem_stress.default_value();
-  if (m.orbit012_c0 < e_fem_mass.values().size()) e_fem_mass.values()[m.orbit012_c0] = e_fem_mass.default_value();
+}
+
+void CorotationalKernel::clear_accumulated() {
+  std::fill(e_stress_mass.values().begin(), e_stress_mass.values().end(), rift::Real{0});
+  std::fill(e_stress_weighted.values().begin(), e_stress_weighted.values().end(), rift::Mat3::Zero());
+}
+
+void CorotationalKernel::reset_accumulated(const rift::GMap& g, std::span<const rift::Dart> region) {
+  for (const rift::Dart d : region) {
+    if (!g.is_alive(d)) continue;
+    if (const rift::Slot s = e_stress_mass.slot(d); s < e_stress_mass.values().size()) e_stress_mass.values()[s] = rift::Real{0};
+    if (const rift::Slot s = e_stress_weighted.slot(d); s < e_stress_weighted.values().size()) e_stress_weighted.values()[s] = rift::Mat3::Zero();
+  }
 }
 
 rift::Real CorotationalKernel::energy(const Match& m, const rift::ForceInput& in) const {
@@ -510,6 +533,10 @@ void CorotationalKernel::vertex_slots(const Match& m, rift::Slot* out) const {
   [[maybe_unused]] const rift::Vec3 l_f2 = rift::Vec3((l_hm)(0, 1), (l_hm)(1, 1), (l_hm)(2, 1));
   [[maybe_unused]] const rift::Vec3 l_f3 = rift::Vec3((l_hm)(0, 2), (l_hm)(1, 2), (l_hm)(2, 2));
   [[maybe_unused]] const rift::Mat3 l_ds = ((rift::Mat3() << in.x[m.vertex_c1], in.x[m.vertex_c2], in.x[m.vertex_c3]).finished() - (rift::Mat3() << in.x[m.vertex_c0], in.x[m.vertex_c0], in.x[m.vertex_c0]).finished());
+  [[maybe_unused]] const rift::Real l_me = (((c.corner_mass[m.orbit12_c0] + c.corner_mass[m.orbit12_c1]) + c.corner_mass[m.orbit12_c2]) + c.corner_mass[m.orbit12_c3]);
+  const rift::Real s2 = (std::abs((l_ds).determinant()) / 6.0);
+  const rift::Mat3 s3 = (l_hm * (l_ds).transpose());
+  [[maybe_unused]] const rift::Mat3 l_weighted = (l_me * ((s2 > 0.0) ? rift::Mat3((((-0.5) / s2) * (s3 + (s3).transpose()))) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished())));
   #pragma GCC unroll 12
   for (int dir = 0; dir < 12; ++dir) {
     const int j = dir / 3, c3 = dir % 3;
@@ -572,6 +599,10 @@ void CorotationalKernel::vertex_slots(const Match& m, rift::Slot* out) const {
   [[maybe_unused]] const rift::Vec3 l_f2 = rift::Vec3((l_hm)(0, 1), (l_hm)(1, 1), (l_hm)(2, 1));
   [[maybe_unused]] const rift::Vec3 l_f3 = rift::Vec3((l_hm)(0, 2), (l_hm)(1, 2), (l_hm)(2, 2));
   [[maybe_unused]] const rift::Mat3 l_ds = ((rift::Mat3() << in.x[m.vertex_c1], in.x[m.vertex_c2], in.x[m.vertex_c3]).finished() - (rift::Mat3() << in.x[m.vertex_c0], in.x[m.vertex_c0], in.x[m.vertex_c0]).finished());
+  [[maybe_unused]] const rift::Real l_me = (((c.corner_mass[m.orbit12_c0] + c.corner_mass[m.orbit12_c1]) + c.corner_mass[m.orbit12_c2]) + c.corner_mass[m.orbit12_c3]);
+  const rift::Real s2 = (std::abs((l_ds).determinant()) / 6.0);
+  const rift::Mat3 s3 = (l_hm * (l_ds).transpose());
+  [[maybe_unused]] const rift::Mat3 l_weighted = (l_me * ((s2 > 0.0) ? rift::Mat3((((-0.5) / s2) * (s3 + (s3).transpose()))) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished())));
   [[maybe_unused]] const rift::Vec3 tx[4] = {px[m.vertex_c1], px[m.vertex_c0], px[m.vertex_c2], px[m.vertex_c3]};
   [[maybe_unused]] const rift::Vec3 tv[4] = {pv[m.vertex_c1], pv[m.vertex_c0], pv[m.vertex_c2], pv[m.vertex_c3]};
   const rift::Mat3 t_l_f = ((rift::Mat3() << (tx[0] - tx[1]), (tx[2] - tx[1]), (tx[3] - tx[1])).finished() * l_b);
@@ -599,17 +630,17 @@ Pack::Pack(const Params& params) : params_(params), description_("Co-rotational 
   embeddings_.push_back({"f_shear", rift::ValueType::kVec3, rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_volume_shear", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_fem", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
-  embeddings_.push_back({"fem_stress", rift::ValueType::kMat3, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()))});
-  embeddings_.push_back({"fem_mass", rift::ValueType::kReal, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
+  embeddings_.push_back({"stress_weighted", rift::ValueType::kMat3, rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()))});
+  embeddings_.push_back({"stress_mass", rift::ValueType::kReal, rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"position", rift::ValueType::kVec3, rift::Orbit{1, 2, 3}, rift::MergePolicy::kMean, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"velocity", rift::ValueType::kVec3, rift::Orbit{1, 2, 3}, rift::MergePolicy::kMean, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"corner_mass", rift::ValueType::kReal, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"corotational_first_dart", rift::ValueType::kBool, rift::Orbit(), rift::MergePolicy::kKeepFirst, rift::Value(rift::Bool(false))});
-  catalog_.interactions.push_back({"corotational", "Co-rotational linear tetrahedron (Müller and Gross 2004): Young's modulus, Poisson ratio, damping. (support <0,1,2>; forces stored in f_fem; values stored in fem_stress, fem_mass)", {
+  catalog_.interactions.push_back({"corotational", "Co-rotational linear tetrahedron (Müller and Gross 2004): Young's modulus, Poisson ratio, damping. (support <0,1,2>; forces stored in f_fem; values stored in stress_weighted, stress_mass)", {
     {"young", rift::ValueType::kReal, rift::Value(rift::Real(100000.0)), "Pa", true, false},
     {"poisson", rift::ValueType::kReal, rift::Value(rift::Real(0.3)), "", false, true},
     {"damping", rift::ValueType::kReal, rift::Value(rift::Real(0.0)), "s (stiffness-proportional)", false, true},
-  }, kDimension, {"f_fem", "fem_stress", "fem_mass"}});
+  }, kDimension, {"f_fem", "stress_weighted", "stress_mass"}});
 }
 
 std::vector<std::string> Pack::rule_names() const {

@@ -71,6 +71,9 @@ class CorotationalKernel {
   static constexpr int kForceTerms = 4;
   void force_targets(const Match& m, rift::Slot* out) const;
   void reset_stored(const Match& m);
+  /// The per-vertex sums of `store +=` (rift/sim/cached_interaction.hpp).
+  void clear_accumulated();
+  void reset_accumulated(const rift::GMap& g, std::span<const rift::Dart> region);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).
   static constexpr bool kHasEnergy = true;
@@ -98,8 +101,14 @@ class CorotationalKernel {
     rift::Vec3 f_fem_c1;
     rift::Vec3 f_fem_c2;
     rift::Vec3 f_fem_c3;
-    rift::Mat3 stored_fem_stress_c0{};
-    rift::Real stored_fem_mass_c0{};
+    rift::Mat3 stored_stress_weighted_c0{};
+    rift::Mat3 stored_stress_weighted_c1{};
+    rift::Mat3 stored_stress_weighted_c2{};
+    rift::Mat3 stored_stress_weighted_c3{};
+    rift::Real stored_stress_mass_c0{};
+    rift::Real stored_stress_mass_c1{};
+    rift::Real stored_stress_mass_c2{};
+    rift::Real stored_stress_mass_c3{};
     rift::Real energy = 0;
   };
   /// The pattern's darts from one support dart, in pattern order; false when it does not match.
@@ -115,11 +124,11 @@ class CorotationalKernel {
   rift::Embedding<rift::Vec3> e_f_fem;
   rift::Embedding<rift::Mat3> e_fem_b;
   rift::Embedding<rift::Real> e_fem_lambda;
-  rift::Embedding<rift::Real> e_fem_mass;
   rift::Embedding<rift::Real> e_fem_mu;
-  rift::Embedding<rift::Mat3> e_fem_stress;
   rift::Embedding<rift::Real> e_fem_volume;
   rift::Embedding<rift::Vec3> e_position;
+  rift::Embedding<rift::Real> e_stress_mass;
+  rift::Embedding<rift::Mat3> e_stress_weighted;
   rift::Embedding<rift::Bool> tag_;
 };
 using CorotationalInteraction = rift::CachedInteraction<CorotationalKernel>;

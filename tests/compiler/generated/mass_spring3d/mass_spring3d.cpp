@@ -130,15 +130,15 @@ void declare_embeddings(rift::GMap& g) {
   } else if (g.find_column("f_fem")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_fem")->orbit() == rift::Orbit{1, 2}) || g.find_column("f_fem")->policy() != rift::MergePolicy::kKeepFirst) {
     throw std::invalid_argument("the map's embedding 'f_fem' is not the pack's vec3 on <1,2> merged by 'keep'");
   }
-  if (!g.has_embedding("fem_stress")) {
-    g.declare_embedding<rift::Mat3>("fem_stress", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
-  } else if (g.find_column("fem_stress")->type() != rift::ValueType::kMat3 || !(g.attachment_of("fem_stress")->orbit() == rift::Orbit{0, 1, 2}) || g.find_column("fem_stress")->policy() != rift::MergePolicy::kKeepFirst) {
-    throw std::invalid_argument("the map's embedding 'fem_stress' is not the pack's mat3 on <0,1,2> merged by 'keep'");
+  if (!g.has_embedding("stress_weighted")) {
+    g.declare_embedding<rift::Mat3>("stress_weighted", rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
+  } else if (g.find_column("stress_weighted")->type() != rift::ValueType::kMat3 || !(g.attachment_of("stress_weighted")->orbit() == rift::Orbit{1, 2, 3}) || g.find_column("stress_weighted")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'stress_weighted' is not the pack's mat3 on <1,2,3> merged by 'keep'");
   }
-  if (!g.has_embedding("fem_mass")) {
-    g.declare_embedding<rift::Real>("fem_mass", rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("fem_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("fem_mass")->orbit() == rift::Orbit{0, 1, 2}) || g.find_column("fem_mass")->policy() != rift::MergePolicy::kKeepFirst) {
-    throw std::invalid_argument("the map's embedding 'fem_mass' is not the pack's real on <0,1,2> merged by 'keep'");
+  if (!g.has_embedding("stress_mass")) {
+    g.declare_embedding<rift::Real>("stress_mass", rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+  } else if (g.find_column("stress_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("stress_mass")->orbit() == rift::Orbit{1, 2, 3}) || g.find_column("stress_mass")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'stress_mass' is not the pack's real on <1,2,3> merged by 'keep'");
   }
   if (!g.has_embedding("position")) {
     g.declare_embedding<rift::Vec3>("position", rift::Orbit{1, 2, 3}, rift::MergePolicy::kMean, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
@@ -2421,8 +2421,8 @@ Pack::Pack(const Params& params) : params_(params), description_("Mass-spring in
   embeddings_.push_back({"f_shear", rift::ValueType::kVec3, rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_volume_shear", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_fem", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
-  embeddings_.push_back({"fem_stress", rift::ValueType::kMat3, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()))});
-  embeddings_.push_back({"fem_mass", rift::ValueType::kReal, rift::Orbit{0, 1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
+  embeddings_.push_back({"stress_weighted", rift::ValueType::kMat3, rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()))});
+  embeddings_.push_back({"stress_mass", rift::ValueType::kReal, rift::Orbit{1, 2, 3}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"position", rift::ValueType::kVec3, rift::Orbit{1, 2, 3}, rift::MergePolicy::kMean, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"velocity", rift::ValueType::kVec3, rift::Orbit{1, 2, 3}, rift::MergePolicy::kMean, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"shear_first_dart", rift::ValueType::kBool, rift::Orbit(), rift::MergePolicy::kKeepFirst, rift::Value(rift::Bool(false))});

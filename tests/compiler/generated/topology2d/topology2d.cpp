@@ -66,15 +66,15 @@ void declare_embeddings(rift::GMap& g) {
   } else if (g.find_column("f_membrane")->type() != rift::ValueType::kVec3 || !(g.attachment_of("f_membrane")->orbit() == rift::Orbit{1}) || g.find_column("f_membrane")->policy() != rift::MergePolicy::kKeepFirst) {
     throw std::invalid_argument("the map's embedding 'f_membrane' is not the pack's vec3 on <1> merged by 'keep'");
   }
-  if (!g.has_embedding("membrane_stress")) {
-    g.declare_embedding<rift::Mat3>("membrane_stress", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
-  } else if (g.find_column("membrane_stress")->type() != rift::ValueType::kMat3 || !(g.attachment_of("membrane_stress")->orbit() == rift::Orbit{0, 1}) || g.find_column("membrane_stress")->policy() != rift::MergePolicy::kKeepFirst) {
-    throw std::invalid_argument("the map's embedding 'membrane_stress' is not the pack's mat3 on <0,1> merged by 'keep'");
+  if (!g.has_embedding("stress_weighted")) {
+    g.declare_embedding<rift::Mat3>("stress_weighted", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
+  } else if (g.find_column("stress_weighted")->type() != rift::ValueType::kMat3 || !(g.attachment_of("stress_weighted")->orbit() == rift::Orbit{1, 2}) || g.find_column("stress_weighted")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'stress_weighted' is not the pack's mat3 on <1,2> merged by 'keep'");
   }
-  if (!g.has_embedding("membrane_mass")) {
-    g.declare_embedding<rift::Real>("membrane_mass", rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
-  } else if (g.find_column("membrane_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("membrane_mass")->orbit() == rift::Orbit{0, 1}) || g.find_column("membrane_mass")->policy() != rift::MergePolicy::kKeepFirst) {
-    throw std::invalid_argument("the map's embedding 'membrane_mass' is not the pack's real on <0,1> merged by 'keep'");
+  if (!g.has_embedding("stress_mass")) {
+    g.declare_embedding<rift::Real>("stress_mass", rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Real(0.0));
+  } else if (g.find_column("stress_mass")->type() != rift::ValueType::kReal || !(g.attachment_of("stress_mass")->orbit() == rift::Orbit{1, 2}) || g.find_column("stress_mass")->policy() != rift::MergePolicy::kKeepFirst) {
+    throw std::invalid_argument("the map's embedding 'stress_mass' is not the pack's real on <1,2> merged by 'keep'");
   }
   if (!g.has_embedding("position")) {
     g.declare_embedding<rift::Vec3>("position", rift::Orbit{1, 2}, rift::MergePolicy::kMean, rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)));
@@ -416,8 +416,8 @@ Pack::Pack(const Params& params) : params_(params), description_("Tearing rewrit
   embeddings_.push_back({"f_abend", rift::ValueType::kVec3, rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_abend_wing", rift::ValueType::kVec3, rift::Orbit{}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
   embeddings_.push_back({"f_membrane", rift::ValueType::kVec3, rift::Orbit{1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
-  embeddings_.push_back({"membrane_stress", rift::ValueType::kMat3, rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()))});
-  embeddings_.push_back({"membrane_mass", rift::ValueType::kReal, rift::Orbit{0, 1}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
+  embeddings_.push_back({"stress_weighted", rift::ValueType::kMat3, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()))});
+  embeddings_.push_back({"stress_mass", rift::ValueType::kReal, rift::Orbit{1, 2}, rift::MergePolicy::kKeepFirst, rift::Value(rift::Real(0.0))});
   embeddings_.push_back({"position", rift::ValueType::kVec3, rift::Orbit{1, 2}, rift::MergePolicy::kMean, rift::Value(rift::Vec3(rift::Vec3(0.0, 0.0, 0.0)))});
 }
 
