@@ -299,5 +299,49 @@ TEST(Grouping, GroupsFollowTears) {
   }
 }
 
+// The groups' table is sized up front for half as many groups as matches;
+// with far more groups (every key but a few distinct) it must still grow and
+// give each entry the group of its key's first match, numbered in order of
+// first appearance, as a plain search over the keys seen so far does.
+TEST(Grouping, MoreGroupsThanTheTableExpectsKeepFirstAppearanceOrder) {
+  struct Pair {
+    std::uint32_t a, b;
+  };
+  // Scattered but fixed numbers (a multiplicative hash of the index).
+  auto scatter = [](std::uint32_t i) { return i * 2654435761u; };
+  std::vector<Pair> matches;
+  for (std::uint32_t i = 0; i < 5000; ++i) {
+    if (i % 10 == 9) {
+      matches.push_back(matches[scatter(i) % matches.size()]);  // a repeat
+    } else {
+      matches.push_back({i, scatter(i + 1)});
+    }
+  }
+  auto key = [](const Pair& m, std::uint64_t* out) {
+    out = key_words(m.a, out);
+    key_words(m.b, out);
+  };
+  MatchGroups<Pair> groups;
+  MatchGroups<Pair>::NoObserver none;
+  groups.build(std::span<const Pair>(matches), 2, key, none);
+  ASSERT_EQ(groups.check(std::span<const Pair>(matches), key), "");
+  std::vector<Pair> firsts;
+  std::vector<std::uint32_t> counts;
+  for (std::uint32_t e = 0; e < matches.size(); ++e) {
+    std::uint32_t g = 0;
+    while (g < firsts.size() && (firsts[g].a != matches[e].a || firsts[g].b != matches[e].b))
+      ++g;
+    if (g == firsts.size()) {
+      firsts.push_back(matches[e]);
+      counts.push_back(0);
+    }
+    ++counts[g];
+    ASSERT_EQ(groups.group_of(e), g) << "entry " << e;
+  }
+  EXPECT_GT(firsts.size(), matches.size() / 2);
+  ASSERT_EQ(groups.size(), firsts.size());
+  for (std::uint32_t g = 0; g < firsts.size(); ++g)
+    EXPECT_EQ(groups.counts()[g], counts[g]) << "group " << g;
+}
 }  // namespace
 }  // namespace rift::physics_test

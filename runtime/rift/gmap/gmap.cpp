@@ -237,6 +237,8 @@ void GMap::assign_missing_slots(OrbitAttachment& att) {
     }
     std::vector<Dart>& stack = acquire_scratch();
     const std::size_t n = alive_.size();
+    // At most one orbit per dart: the dart counts are reserved once.
+    att.reserve_slots(att.slot_capacity() + n);
     for (std::size_t k = 0; k < n; ++k) {
       const Dart d = static_cast<Dart>(k);
       if (!alive_[d] || att.slot(d) != kNoSlot) continue;

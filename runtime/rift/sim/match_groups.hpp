@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "rift/core/huge_pages.hpp"
 #include "rift/core/types.hpp"
 #include "rift/embed/value.hpp"
 
@@ -105,9 +106,18 @@ class MatchGroups {
     keys_.clear();
     group_of_.assign(matches.size(), kNone);
     next_.assign(matches.size(), kNone);
-    // Sized for the groups as they come (add grows it), not for the
-    // matches: half as many groups as matches is the usual case.
-    table_.assign(table_size_for(0), kNone);
+    // Never more groups than matches: reserved once (advised for huge pages),
+    // the per-group arrays neither move nor fault in 4 KiB at a time, and
+    // only what the groups fill becomes resident (issue 12's set-up).
+    reserve_huge(reps_, matches.size());
+    reserve_huge(count_, matches.size());
+    reserve_huge(head_, matches.size());
+    reserve_huge(keys_, matches.size() * static_cast<std::size_t>(words));
+    // Sized for half as many groups as matches (the usual case: an interior
+    // edge's two faces) rather than grown by rehashing; add still grows it
+    // for more. Group ids come in order of first match whatever the table's
+    // size, so the groups are the same.
+    table_.assign(table_size_for(matches.size() / 2), kNone);
     for (std::uint32_t e = 0; e < matches.size(); ++e)
       add(e, matches[e], key, observer);
   }
@@ -147,7 +157,7 @@ class MatchGroups {
     (void)before;
     std::uint64_t b[kMaxKey];
     key(after, b);
-    if (std::equal(b, b + words_, key_of(group_of_[e]))) {
+    if (same_key(b, key_of(group_of_[e]))) {
       // Same group; its representative may have been this entry's old match
       // (whose slots a rewrite may have freed): take the new one.
       reps_[group_of_[e]] = after;
@@ -178,7 +188,7 @@ class MatchGroups {
       if (g >= reps_.size()) return "entry " + std::to_string(e) + " has no group";
       ++seen[g];
       key(matches[e], a);
-      if (!std::equal(a, a + words_, key_of(g)))
+      if (!same_key(a, key_of(g)))
         return "entry " + std::to_string(e) + " is in a group of another key";
     }
     for (std::uint32_t g = 0; g < reps_.size(); ++g) {
@@ -216,12 +226,21 @@ class MatchGroups {
     return keys_.data() + static_cast<std::size_t>(g) * static_cast<std::size_t>(words_);
   }
 
+  /// Keys are a few words: compared in line, word by word (a call to memcmp
+  /// per probe was a visible share of the set-up).
+  bool same_key(const std::uint64_t* a, const std::uint64_t* b) const {
+    for (int i = 0; i < words_; ++i) {
+      if (a[i] != b[i]) return false;
+    }
+    return true;
+  }
+
   /// The group with key k, or kNone.
   std::uint32_t find(const std::uint64_t* k) const {
     for (std::size_t i = hash(k);; i = (i + 1) & (table_.size() - 1)) {
       const std::uint32_t g = table_[i];
       if (g == kNone) return kNone;
-      if (std::equal(k, k + words_, key_of(g))) return g;
+      if (same_key(k, key_of(g))) return g;
     }
   }
 
