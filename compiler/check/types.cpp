@@ -331,6 +331,32 @@ void reject_mass_init(const ast::Init& init, diag::Diagnostics& diags) {
                   "remove this init");
 }
 
+/// Whether `embedding`, which a store of `inter` writes, is also one of its
+/// forces or init targets (reported, `as_force` / `as_init` saying why the
+/// store may not write it).
+bool written_by_forces_or_inits(const ast::Interaction& inter, const ast::Ident& embedding,
+                                const std::string& as_force, const std::string& as_init,
+                                diag::Diagnostics& diags) {
+  const std::string& name = embedding.text;
+  for (const ast::Assign& f : inter.forces) {
+    if (f.embedding.text != name) continue;
+    diags
+        .error(embedding.loc,
+               "'" + name + "' is a force of interaction '" + inter.name.text + "'; " + as_force)
+        .notes.push_back({f.embedding.loc, "the force"});
+    return true;
+  }
+  for (const ast::Init& init : inter.inits) {
+    if (init.embedding.text != name) continue;
+    diags
+        .error(embedding.loc,
+               "'" + name + "' is initialised by interaction '" + inter.name.text + "'; " + as_init)
+        .notes.push_back({init.embedding.loc, "the init"});
+    return true;
+  }
+  return false;
+}
+
 /// A `store` writes an embedding no other statement of the simulation
 /// writes: not the simulator's state (positions, masses, ... are its own),
 /// not a force of the same interaction, not one of its inits' embeddings,
@@ -344,22 +370,9 @@ void check_stored_value(const ast::Interaction& inter, const ast::Assign& st,
                                       "interaction; store into an embedding of the pack");
     return;
   }
-  for (const ast::Assign& f : inter.forces) {
-    if (f.embedding.text != name) continue;
-    diags
-        .error(st.embedding.loc, "'" + name + "' is a force of interaction '" + inter.name.text +
-                                     "'; a store cannot also write it")
-        .notes.push_back({f.embedding.loc, "the force"});
+  if (written_by_forces_or_inits(inter, st.embedding, "a store cannot also write it",
+                                 "a store would overwrite it", diags))
     return;
-  }
-  for (const ast::Init& init : inter.inits) {
-    if (init.embedding.text != name) continue;
-    diags
-        .error(st.embedding.loc, "'" + name + "' is initialised by interaction '" +
-                                     inter.name.text + "'; a store would overwrite it")
-        .notes.push_back({init.embedding.loc, "the init"});
-    return;
-  }
   for (const ast::Assign& other : inter.stores) {
     if (&other == &st) break;
     if (other.embedding.text != name || other.node.text != st.node.text) continue;
@@ -403,8 +416,10 @@ void check_accumulated_value(const ast::Interaction& inter, const ast::Assign& a
   std::sort(dims.begin(), dims.end());
   if (dims != vertex) {
     std::string orbit = "<";
-    for (std::size_t i = 0; i < vertex.size(); ++i)
-      orbit += (i ? "," : "") + std::to_string(vertex[i]);
+    for (std::size_t i = 0; i < vertex.size(); ++i) {
+      if (i > 0) orbit += ',';
+      orbit += std::to_string(vertex[i]);
+    }
     orbit += ">";
     diags
         .error(acc.embedding.loc,
@@ -414,22 +429,9 @@ void check_accumulated_value(const ast::Interaction& inter, const ast::Assign& a
         .notes.push_back({target->orbit.loc, "its orbit"});
     return;
   }
-  for (const ast::Assign& f : inter.forces) {
-    if (f.embedding.text != name) continue;
-    diags
-        .error(acc.embedding.loc, "'" + name + "' is a force of interaction '" + inter.name.text +
-                                      "'; a store cannot also add to it")
-        .notes.push_back({f.embedding.loc, "the force"});
+  if (written_by_forces_or_inits(inter, acc.embedding, "a store cannot also add to it",
+                                 "accumulating would overwrite it", diags))
     return;
-  }
-  for (const ast::Init& init : inter.inits) {
-    if (init.embedding.text != name) continue;
-    diags
-        .error(acc.embedding.loc, "'" + name + "' is initialised by interaction '" +
-                                      inter.name.text + "'; accumulating would overwrite it")
-        .notes.push_back({init.embedding.loc, "the init"});
-    return;
-  }
   for (const ast::Assign& st : inter.stores) {
     if (st.embedding.text != name) continue;
     diags
