@@ -12,6 +12,39 @@ std::uint64_t next_identity() {
   static std::atomic<std::uint64_t> next{1};
   return next.fetch_add(1, std::memory_order_relaxed);
 }
+
+/// The involutions of an orbit as raw arrays, looked up once per walk.
+struct OrbitLinks {
+  std::array<const Dart*, kMaxDimension + 1> arrays{};
+  int count = 0;
+};
+
+OrbitLinks orbit_links(const std::array<std::vector<Dart>, kMaxDimension + 1>& alpha, int dimension,
+                       Orbit o) {
+  OrbitLinks l;
+  for (int i = 0; i <= dimension; ++i) {
+    if (o.contains(i)) l.arrays[static_cast<std::size_t>(l.count++)] = alpha[i].data();
+  }
+  return l;
+}
+
+/// Depth-first walk of the orbit of d (already claimed by the caller) along
+/// `links`: claim(y) claims dart y if no one has yet and says whether it did.
+/// The walks of set-up use it with their own "visited" state (a mark bit, a
+/// slot), without the general walk's visit list and unmarking pass.
+template <class Claim>
+void flood_orbit(Dart d, const OrbitLinks& links, std::vector<Dart>& stack, Claim&& claim) {
+  stack.clear();
+  stack.push_back(d);
+  while (!stack.empty()) {
+    const Dart x = stack.back();
+    stack.pop_back();
+    for (int l = 0; l < links.count; ++l) {
+      const Dart y = links.arrays[static_cast<std::size_t>(l)][x];
+      if (claim(y)) stack.push_back(y);
+    }
+  }
+}
 }  // namespace
 
 GMap::GMap(int dimension) : dimension_(dimension), identity_(next_identity()) {
@@ -141,33 +174,17 @@ void GMap::mark_orbit(Dart d, Orbit o, Mark m) const {
   // Every cell pass (for_each_cell) runs this once per cell over the whole
   // map: the links of the orbit are looked up once, and the mark's count is
   // added once at the end rather than per dart.
-  std::array<const Dart*, kMaxDimension + 1> links{};
-  int link_count = 0;
-  for (int i = 0; i <= dimension_; ++i) {
-    if (o.contains(i)) links[static_cast<std::size_t>(link_count++)] = alpha_[i].data();
-  }
   const std::uint32_t bit = 1u << m;
   std::uint32_t* bits = mark_bits_.data();
   std::size_t marked = 0;
-  std::vector<Dart>& stack = acquire_scratch();
-  stack.clear();
-  if ((bits[d] & bit) == 0) {
-    bits[d] |= bit;
+  const auto claim = [&](Dart y) {
+    if ((bits[y] & bit) != 0) return false;
+    bits[y] |= bit;
     ++marked;
-    stack.push_back(d);
-  }
-  while (!stack.empty()) {
-    const Dart x = stack.back();
-    stack.pop_back();
-    for (int l = 0; l < link_count; ++l) {
-      const Dart y = links[static_cast<std::size_t>(l)][x];
-      if ((bits[y] & bit) == 0) {
-        bits[y] |= bit;
-        ++marked;
-        stack.push_back(y);
-      }
-    }
-  }
+    return true;
+  };
+  if (!claim(d)) return;
+  flood_orbit(d, orbit_links(alpha_, dimension_, o), acquire_scratch(), claim);
   mark_count_[static_cast<std::size_t>(m)] += marked;
   release_scratch();
 }
@@ -230,11 +247,7 @@ OrbitAttachment* GMap::attachment_of(std::string_view name) const {
 void GMap::assign_missing_slots(OrbitAttachment& att) {
   const Orbit o = att.orbit();
   if (att.live_slots() == 0) {
-    std::array<const Dart*, kMaxDimension + 1> links{};
-    int link_count = 0;
-    for (int i = 0; i <= dimension_; ++i) {
-      if (o.contains(i)) links[static_cast<std::size_t>(link_count++)] = alpha_[i].data();
-    }
+    const OrbitLinks links = orbit_links(alpha_, dimension_, o);
     std::vector<Dart>& stack = acquire_scratch();
     const std::size_t n = alive_.size();
     // At most one orbit per dart: the dart counts are reserved once.
@@ -244,19 +257,11 @@ void GMap::assign_missing_slots(OrbitAttachment& att) {
       if (!alive_[d] || att.slot(d) != kNoSlot) continue;
       const Slot s = att.reserve_slot();
       att.assign(d, s);
-      stack.clear();
-      stack.push_back(d);
-      while (!stack.empty()) {
-        const Dart x = stack.back();
-        stack.pop_back();
-        for (int l = 0; l < link_count; ++l) {
-          const Dart y = links[static_cast<std::size_t>(l)][x];
-          if (att.slot(y) == kNoSlot) {
-            att.assign(y, s);
-            stack.push_back(y);
-          }
-        }
-      }
+      flood_orbit(d, links, stack, [&](Dart y) {
+        if (att.slot(y) != kNoSlot) return false;
+        att.assign(y, s);
+        return true;
+      });
     }
     release_scratch();
     att.grow_columns();
