@@ -61,6 +61,7 @@ std::vector<std::string> check_with_strings(const GMap& g, std::size_t limit) {
     }
   }
   for (const auto& att : g.attachments()) {
+    if (att->dormant()) continue;  // no slots (attachment.hpp)
     const rift::Orbit o = att->orbit();
     std::vector<std::uint32_t> count(att->slot_capacity(), 0);
     for (std::size_t k = 0; k < n && problems.size() < limit; ++k) {
@@ -82,6 +83,7 @@ std::vector<std::string> check_with_strings(const GMap& g, std::size_t limit) {
     }
   }
   for (const auto& att : g.attachments()) {
+    if (att->dormant()) continue;  // no slots (attachment.hpp)
     const rift::Orbit o = att->orbit();
     std::vector<std::uint8_t> seen(att->slot_capacity(), 0);
     g.for_each_cell(o, [&](Dart d) {

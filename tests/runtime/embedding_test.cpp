@@ -180,6 +180,69 @@ TEST(Embedding, DeclaredColumnsGetStorageOnlyWhenAskedFor) {
   EXPECT_TRUE(map.is_valid());
 }
 
+// An attachment keeps no slots until one of its columns is asked for
+// (attachment.hpp: dormant, issue 12, lean memory). Tears, new darts,
+// deleted darts and compaction pass it by; once woken it holds one slot per
+// orbit of the map as it is then, every value the default, and from then on
+// follows the topology like any other attachment.
+TEST(Embedding, AnAttachmentKeepsNoSlotsUntilAColumnIsAskedFor) {
+  GMap map = assemble_gmap(make_grid(GridKind::Quad, 3, 3));
+  map.declare_embedding<Real>("wing", Orbit{0, 2}, MergePolicy::kKeepFirst, 2.5);
+  map.declare_embedding<Real>("wing_sum", Orbit{0, 2}, MergePolicy::kSum, 0.0);
+  OrbitAttachment* att = map.attachment_of("wing");
+  ASSERT_NE(att, nullptr);
+  EXPECT_TRUE(att->dormant());
+  EXPECT_EQ(att->slot_capacity(), 0u);
+  // Tear two interior edges, add and delete darts, compact: nothing to keep.
+  for (int tear = 0; tear < 2; ++tear) {
+    Dart inner = kNoDart;
+    map.for_each_dart([&](Dart d) {
+      if (inner == kNoDart && !map.is_free(d, 2)) inner = d;
+    });
+    ASSERT_NE(inner, kNoDart);
+    map.unsew(inner, 2);
+  }
+  const Dart fresh = map.create_darts(6);
+  map.link(fresh, fresh + 1, 0);
+  map.link(fresh + 2, fresh + 3, 0);
+  map.delete_dart(fresh + 5);
+  for (const auto& attachment : map.attachments())
+    map.assign_missing_slots(*attachment);
+  EXPECT_TRUE(att->dormant());
+  EXPECT_TRUE(map.is_valid());
+  map.compact();
+  EXPECT_TRUE(att->dormant());
+  // Asking for a column wakes the attachment: one slot per <0,2> orbit.
+  Embedding<Real> wing = map.embedding<Real>("wing");
+  EXPECT_FALSE(att->dormant());
+  EXPECT_EQ(map.check_validity(), std::vector<std::string>{});
+  EXPECT_EQ(att->live_slots(), map.count_cells(Orbit{0, 2}));
+  map.for_each_dart([&](Dart d) { EXPECT_EQ(wing[d], 2.5) << d; });
+  // Awake, it follows a tear: the two halves of a torn <0,2> orbit (the
+  // darts of an edge on both sides) each keep the value.
+  Dart inner = kNoDart;
+  map.for_each_dart([&](Dart d) {
+    if (inner == kNoDart && !map.is_free(d, 2)) inner = d;
+  });
+  ASSERT_NE(inner, kNoDart);
+  const Dart other = map.alpha(inner, 2);
+  wing[inner] = 7.0;
+  EXPECT_EQ(wing[other], 7.0);
+  map.unsew(inner, 2);
+  EXPECT_EQ(map.check_validity(), std::vector<std::string>{});
+  EXPECT_NE(wing.slot(inner), wing.slot(other));
+  EXPECT_EQ(wing[inner], 7.0);
+  EXPECT_EQ(wing[other], 7.0);
+  EXPECT_EQ(att->live_slots(), map.count_cells(Orbit{0, 2}));
+  // Sewing back merges the two slots again.
+  ASSERT_TRUE(map.sew(inner, other, 2));
+  EXPECT_EQ(wing.slot(inner), wing.slot(other));
+  EXPECT_EQ(map.check_validity(), std::vector<std::string>{});
+  // The other column of the attachment shares its slots.
+  Embedding<Real> sum = map.embedding<Real>("wing_sum");
+  EXPECT_EQ(sum.slot(inner), wing.slot(inner));
+}
+
 // A sum of two non-zero defaults is not the default: such a merge needs
 // storage, and gets it; a zero default or a mean merges to itself without it.
 TEST(Embedding, UnallocatedColumnsMergeLikeAllocatedOnes) {

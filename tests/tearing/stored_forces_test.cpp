@@ -109,6 +109,37 @@ TEST(StoredForces, AColumnNoInteractionWritesReadsAsZeroWithoutStorage) {
   EXPECT_FALSE(has_storage(*lean, "f_membrane"));
 }
 
+// The quad cloth's packs declare the angular bending's parameters on
+// <0,2>, which no component of a stretch/shear/bend scene asks for: that
+// attachment keeps no slots (attachment.hpp, dormant) through the scene's
+// tears, and a column asked for afterwards gets one slot per orbit of the
+// torn map. The motion and tears are those of a run where the attachment
+// was woken before the first step and kept its slots through every tear.
+TEST(StoredForces, AnOrbitNoComponentAsksForKeepsNoSlotsThroughTears) {
+  const std::string toml = static_scene(
+      "grid:quad:4x4", "1.0", 1.0,
+      std::string(kSprings) + "[[criterion]]\nname = \"spring_split\"\nthreshold = 2.0\n");
+  auto lean = build("dormant_lean", toml);
+  auto awake = build("dormant_awake", toml);
+  const OrbitAttachment* wing = lean->map().attachment_of("abend_k");
+  ASSERT_NE(wing, nullptr);
+  ASSERT_EQ(wing->orbit(), (Orbit{0, 2}));
+  EXPECT_TRUE(wing->dormant());
+  const Embedding<Real> kept = awake->map().embedding<Real>("abend_k");
+  EXPECT_FALSE(kept.attachment().dormant());
+  expect_same_run(*lean, *awake, 3);
+  ASSERT_GT(lean->tears(), 0u);
+  EXPECT_TRUE(wing->dormant());
+  // Woken after the tears: as many slots as the awake run kept, valid.
+  const Embedding<Real> late = lean->map().embedding<Real>("abend_k");
+  EXPECT_FALSE(wing->dormant());
+  EXPECT_EQ(lean->map().check_validity(), std::vector<std::string>{});
+  EXPECT_EQ(wing->live_slots(), kept.attachment().live_slots());
+  EXPECT_EQ(wing->live_slots(), lean->map().count_cells(Orbit{0, 2}));
+  EXPECT_EQ(awake->map().check_validity(), std::vector<std::string>{});
+  lean->map().for_each_dart([&](Dart d) { EXPECT_EQ(late[d], late.default_value()) << d; });
+}
+
 TEST(StoredForces, AnOutputArrayNamingAStoredForceIsStored) {
   const std::string toml = static_scene("grid:quad:4x4", "1.0", 1.0, kSprings);
   const std::vector<std::string> bend = {"f_bend"};

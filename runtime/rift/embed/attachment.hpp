@@ -2,6 +2,14 @@
 // every dart of an orbit holds the same slot, so reading a value is
 // `column[slot_of_dart[d]]`, O(1), and the columns themselves are dense arrays
 // that integrators sweep directly.
+//
+// An attachment is *dormant* until one of its columns is asked for
+// (GMap::embedding, GMap::attachment_of): it then keeps no slot per dart and
+// no dart count per slot, and every topology change passes it by. Packs
+// declare embeddings on orbits that a scene may never use (a quad cloth without
+// angular springs never reads the <0,2> orbit's parameters; the hexahedra's
+// <1> orbit holds only shear forces that nothing reads): at 4.8e7 darts each
+// such slot array was 192 MB to fill at set-up and keep (issue 12, lean memory).
 #pragma once
 
 #include <memory>
@@ -19,6 +27,15 @@ class OrbitAttachment {
   explicit OrbitAttachment(Orbit orbit) : orbit_(orbit) {}
 
   Orbit orbit() const { return orbit_; }
+  /// True while the attachment keeps no slots (see the file comment): slot()
+  /// must not be called, and every column reads as its default.
+  bool dormant() const { return dormant_; }
+  /// Ends dormancy with room for `darts` darts, none holding a slot yet;
+  /// GMap::wake then gives every orbit its slot.
+  void wake(std::size_t darts) {
+    dormant_ = false;
+    resize_darts(darts);
+  }
   Slot slot(Dart d) const { return slot_of_dart_[d]; }
   const Slot* slot_data() const { return slot_of_dart_.data(); }
 
@@ -45,7 +62,9 @@ class OrbitAttachment {
     column->resize(slot_capacity());
     columns_.push_back(std::move(column));
   }
-  void resize_darts(std::size_t capacity) { grow_huge(slot_of_dart_, capacity, kNoSlot); }
+  void resize_darts(std::size_t capacity) {
+    if (!dormant_) grow_huge(slot_of_dart_, capacity, kNoSlot);
+  }
 
   /// A fresh slot holding every column's default value, not yet owned by any dart.
   Slot allocate_slot() {
@@ -86,6 +105,7 @@ class OrbitAttachment {
   }
 
   void release(Dart d) {
+    if (dormant_) return;
     Slot old = slot_of_dart_[d];
     if (old == kNoSlot) return;
     slot_of_dart_[d] = kNoSlot;
@@ -94,6 +114,7 @@ class OrbitAttachment {
 
   /// Renumbers darts after compaction: new_index[old] (kNoDart for dead darts).
   void remap_darts(const std::vector<Dart>& new_index, std::size_t new_capacity) {
+    if (dormant_) return;
     std::vector<Slot> remapped(new_capacity, kNoSlot);
     for (std::size_t old = 0; old < new_index.size(); ++old) {
       if (new_index[old] != kNoDart) remapped[new_index[old]] = slot_of_dart_[old];
@@ -103,6 +124,7 @@ class OrbitAttachment {
 
   /// Packs live slots to [0, live_slots()), keeping their order.
   void compact_slots() {
+    if (dormant_) return;
     std::vector<Slot> new_slot(dart_count_.size(), kNoSlot);
     Slot next = 0;
     for (Slot s = 0; s < dart_count_.size(); ++s) {
@@ -123,6 +145,7 @@ class OrbitAttachment {
 
  private:
   Orbit orbit_;
+  bool dormant_ = true;
   std::vector<Slot> slot_of_dart_;
   std::vector<std::uint32_t> dart_count_;
   std::vector<Slot> free_slots_;

@@ -39,7 +39,7 @@ class OrbitMemo {
     // the orbit's slot: the slot is the key, found without walking the orbit.
     slots_ = nullptr;
     for (const auto& a : g.attachments()) {
-      if (a->orbit() == o) slots_ = a.get();
+      if (a->orbit() == o && !a->dormant()) slots_ = a.get();
     }
     grow(by_slot_, slots_ ? slots_->slot_capacity() : 0);
     grow(by_dart_, g.capacity());

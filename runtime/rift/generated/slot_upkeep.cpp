@@ -8,6 +8,7 @@ void update_embedding_slots(GMap& g, const Dart* darts, std::size_t count, Scrat
                             std::vector<Dart>* touched) {
   for (const auto& attachment : g.attachments()) {
     OrbitAttachment& att = *attachment;
+    if (att.dormant()) continue;  // no slots until a column is asked for
     const Mark m = g.reserve_mark();
     s.claimed.clear();
     s.marked.clear();

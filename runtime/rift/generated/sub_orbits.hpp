@@ -42,10 +42,10 @@ inline SubOrbitBuffers& sub_orbit_buffers() {
   return buffers;
 }
 
-/// The map's attachment on orbit `o`, or nullptr.
+/// The map's attachment on orbit `o` when it holds slots, or nullptr.
 inline const OrbitAttachment* attachment_on(const GMap& g, Orbit o) {
   for (const auto& a : g.attachments()) {
-    if (a->orbit() == o) return a.get();
+    if (a->orbit() == o && !a->dormant()) return a.get();
   }
   return nullptr;
 }

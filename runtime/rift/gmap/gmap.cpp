@@ -237,6 +237,12 @@ OrbitAttachment* GMap::attachment_of(std::string_view name) const {
   return nullptr;
 }
 
+void GMap::wake(OrbitAttachment& att) const {
+  if (!att.dormant()) return;
+  att.wake(alive_.size());
+  assign_missing_slots(att);
+}
+
 // A fresh attachment (every embedding declared at set-up) has no slot on any
 // dart, so an orbit reached for the first time has none on any of its darts:
 // the slot array itself can be the walk's visited flag. That saves the mark
@@ -244,7 +250,8 @@ OrbitAttachment* GMap::attachment_of(std::string_view name) const {
 // the general walk, which together were most of a 10^6-vertex set-up's slot
 // assignment (issue 12). Slots are numbered by each orbit's smallest dart, as
 // the general walk numbers them, so both give the same slots.
-void GMap::assign_missing_slots(OrbitAttachment& att) {
+void GMap::assign_missing_slots(OrbitAttachment& att) const {
+  if (att.dormant()) return;
   const Orbit o = att.orbit();
   if (att.live_slots() == 0) {
     const OrbitLinks links = orbit_links(alpha_, dimension_, o);
@@ -325,6 +332,7 @@ std::vector<std::string> GMap::check_validity(std::size_t limit) const {
   // slot's dart count is right, and one orbit only holds each slot.
   for (const auto& att : attachments_) {
     if (full()) break;
+    if (att->dormant()) continue;  // no slots to check
     const Orbit o = att->orbit();
     const Slot* slot = att->slot_data();
     const std::size_t slots = att->slot_capacity();

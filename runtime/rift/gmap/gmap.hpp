@@ -194,11 +194,18 @@ class GMap {
     return true;
   }
   ColumnBase* find_column(std::string_view name) const;
+  /// The attachment holding column `name`; it may be dormant (no slots yet,
+  /// attachment.hpp): wake it before reading slots, as embedding() does.
   OrbitAttachment* attachment_of(std::string_view name) const;
   const std::vector<std::unique_ptr<OrbitAttachment>>& attachments() const { return attachments_; }
   /// Gives every orbit of the attachment's type that has no slot a fresh one
   /// (default values), splitting orbits whose darts disagree is not attempted.
-  void assign_missing_slots(OrbitAttachment& attachment);
+  /// A dormant attachment (attachment.hpp) stays so.
+  void assign_missing_slots(OrbitAttachment& attachment) const;
+  /// Ends the dormancy of an attachment: every orbit gets its slot, numbered
+  /// by its smallest dart as at declaration. embedding() calls it: whoever
+  /// holds a handle reads slots.
+  void wake(OrbitAttachment& attachment) const;
 
   // ---- validity and maintenance ------------------------------------------------------
 
@@ -388,6 +395,7 @@ void GMap::declare_embedding(std::string name, Orbit orbit, MergePolicy policy, 
     throw std::invalid_argument("embedding '" + name + "': orbit " + orbit.str() +
                                 " does not fit a map of dimension " + std::to_string(dimension_));
   }
+  // The attachment stays dormant (no slots) until a column of it is asked for.
   OrbitAttachment& att = attachment_for(orbit);
   att.add_column(std::make_unique<Column<T>>(std::move(name), policy, std::move(default_value)));
   assign_missing_slots(att);
@@ -401,6 +409,8 @@ Embedding<T> GMap::embedding(std::string_view name) const {
         throw std::invalid_argument("embedding '" + std::string(name) + "' holds " +
                                     std::string(to_string(c->type())) + " values");
       }
+      // A withheld column's handle reads slots too: its attachment wakes.
+      wake(*att);
       if (!c->withheld()) c->allocate();
       return Embedding<T>(att.get(), static_cast<Column<T>*>(c));
     }

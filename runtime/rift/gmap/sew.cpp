@@ -63,7 +63,8 @@ std::string GMap::pair_sewing_orbits(Dart a, Dart b, int i, std::vector<Dart>& p
 
   // Refusing embeddings veto the merge of two different values.
   for (const auto& att : attachments_) {
-    if (!att->orbit().contains(i)) continue;
+    // A dormant attachment's columns hold only defaults, which merge.
+    if (!att->orbit().contains(i) || att->dormant()) continue;
     for (const auto& column : att->columns()) {
       if (column->policy() != MergePolicy::kRefuse) continue;
       for (std::size_t k = 0; k < pairs.size(); k += 2) {
@@ -105,7 +106,7 @@ bool GMap::sew(Dart a, Dart b, int i) {
 void GMap::merge_embeddings_after_sew(const std::vector<Dart>& pairs, int i) {
   for (auto& att : attachments_) {
     const Orbit o = att->orbit();
-    if (!o.contains(i)) continue;
+    if (!o.contains(i) || att->dormant()) continue;
     for (std::size_t k = 0; k < pairs.size(); k += 2) {
       const Dart x = pairs[k];
       const Slot sx = att->slot(x);
@@ -151,7 +152,7 @@ void GMap::split_embeddings_after_unsew(const std::vector<Dart>& pairs, int i) {
   // slot, each further part of the same old orbit gets a copy of its values.
   for (auto& att : attachments_) {
     const Orbit o = att->orbit();
-    if (!o.contains(i)) continue;
+    if (!o.contains(i) || att->dormant()) continue;
     const Mark m = reserve_mark();
     std::vector<Dart>& claimed = acquire_scratch();  // slots already kept by a part
     claimed.clear();
