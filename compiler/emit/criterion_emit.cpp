@@ -145,6 +145,7 @@ void emit_criterion(Writer& w, const lower::CriterionPlan& plan, const PackModel
   const ir::Body& b = plan.body;
   RenderContext collect_ctx = criterion_context(b);
   collect_ctx.memos = &plan.memos;
+  collect_ctx.readers = true;
   const std::string d = dart_name(crit.dart.text);
   w.line("// ---- criterion '" + crit.name.text + "' on " + orbit_code(crit.orbit.dims));
   w.line();
@@ -163,6 +164,12 @@ void emit_criterion(Writer& w, const lower::CriterionPlan& plan, const PackModel
          "::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {");
   for (std::size_t m = 0; m < plan.memos.size(); ++m)
     w.line(memo_var(m) + ".begin(g, " + orbit_code(plan.memos[m].orbit) + ");");
+  // The map does not change during collect: each embedding's arrays are
+  // taken once (EmbeddingReader), not checked again at every read.
+  for (const std::string& name : criterion_embeddings(plan)) {
+    w.line("[[maybe_unused]] const rift::EmbeddingReader<" + embedding_storage(model, name) + "> " +
+           reader_var(name) + " = " + embedding_var(name) + ".reader();");
+  }
   // A criterion riftc proves free of shared scratch (CriterionPlan::parallel_collect)
   // evaluates blocks of cells on every core; the candidates come out in the
   // cells' order whatever the number of threads.

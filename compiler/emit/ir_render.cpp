@@ -273,7 +273,7 @@ std::string BodyRenderer::node(ExprId id) {
     case Op::Velocity:
     case Op::Read:
       if (ctx_.read) return ctx_.read(n);
-      return embedding_var(n.embedding) + "[" + place(n.place) + "]";
+      return embedding_access(n.embedding) + "[" + place(n.place) + "]";
     case Op::Param:
       return ctx_.args + "." + member_name(n.name);
     case Op::PackParam:
@@ -325,6 +325,10 @@ std::string BodyRenderer::index(ExprId id) {
 
 std::string BodyRenderer::place(const ir::Place& p) {
   return render_place(p, ctx_);
+}
+
+std::string BodyRenderer::embedding_access(const std::string& name) const {
+  return ctx_.readers ? reader_var(name) : embedding_var(name);
 }
 
 std::string render_place(const ir::Place& p, const RenderContext& ctx) {
@@ -401,7 +405,7 @@ std::string BodyRenderer::fold_of_embedding(const Node& n) {
     return {};
   if (body.op == Op::ToReal && n.aggregate != ir::Aggregate::Mean) return {};
   return std::string("fold_") + std::string(ir::aggregate_name(n.aggregate)) + "(" + ctx_.map +
-         ", " + embedding_var(read.embedding) + ", " + walk + ")";
+         ", " + embedding_access(read.embedding) + ", " + walk + ")";
 }
 
 std::string BodyRenderer::dart_parameter(int var, const std::vector<ExprId>& bodies) const {

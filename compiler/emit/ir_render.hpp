@@ -32,11 +32,15 @@ namespace rift::emit {
 struct RenderContext {
   /// The C++ expression of a dart place (pattern node or fold variable).
   std::function<std::string(int node)> dart;
-  /// Position, Velocity and Read nodes; when empty, reads are `e_NAME[dart]`.
+  /// Position, Velocity and Read nodes; when empty, reads are `e_NAME[dart]`,
+  /// or `r_NAME[dart]` with `readers`.
   std::function<std::string(const ir::Node& read)> read;
   std::string args = "args";      // the declaration's parameters
   std::string params = "params";  // the pack's parameters
   std::string map = "g";          // the rift::GMap
+  /// Reads go through the locals reader_var(NAME), the EmbeddingReaders a
+  /// pass over an unchanging map takes first (a criterion's collect).
+  bool readers = false;
   /// A criterion's collect(): the values it computes once per orbit
   /// (lower/orbit_memo.hpp), read through the members memo_var() and
   /// memo_values_var(). Null elsewhere: nothing is memoised.
@@ -84,6 +88,8 @@ class BodyRenderer {
   std::string node(ir::ExprId id);
   std::string index(ir::ExprId id);
   std::string place(const ir::Place& p);
+  /// How the body names an embedding it reads (RenderContext::readers).
+  std::string embedding_access(const std::string& name) const;
   std::string fold(const ir::Node& n);
   /// A memoised node (`memo`, value `k`), computed into a local of the fold at `level`.
   std::string memoised(ir::ExprId id, int level, std::size_t memo, std::size_t k);

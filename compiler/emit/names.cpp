@@ -93,6 +93,9 @@ std::string dart_name(std::string_view node) {
 std::string embedding_var(std::string_view name) {
   return "e_" + std::string(name);
 }
+std::string reader_var(std::string_view name) {
+  return "r_" + std::string(name);
+}
 std::string memo_var(std::size_t memo) {
   return "memo" + std::to_string(memo) + "_";
 }

@@ -26,6 +26,7 @@ std::string orbit_code(const std::vector<int>& dims);
 std::string let_name(std::string_view name);       // l_x
 std::string dart_name(std::string_view node);      // d_a (left/matched), n_a (right)
 std::string embedding_var(std::string_view name);  // e_position
+std::string reader_var(std::string_view name);     // r_position, its EmbeddingReader
 std::string rule_function(std::string_view rule);  // apply_rule
 /// An orbit memo of a criterion (ir::OrbitMemo): the member numbering its
 /// orbits, the member holding its value k, the local of a fold's entry.

@@ -141,13 +141,20 @@ TEST(OrbitValues, EveryPairOfOrbitsSumsOneValuePerSubOrbit) {
   std::vector<Embedding<std::int64_t>> columns;
   const GMap g = cut_block_with_embeddings(columns);
   for (const auto& e : columns) {
+    // Generated criteria fold through a reader (EmbeddingReader), other code
+    // through the embedding: both sum the same values.
+    const EmbeddingReader<std::int64_t> reader = e.reader();
     for (unsigned walk = 0; walk < 16; ++walk) {
       const Orbit o = Orbit::from_mask(static_cast<std::uint8_t>(walk));
       const Orbit sub = Orbit::from_mask(static_cast<std::uint8_t>(e.orbit().mask() & walk));
       for (Dart d = 0; d < g.capacity(); d += 5) {
         if (!g.is_alive(d)) continue;
-        ASSERT_EQ(generated::fold_sum(g, e, d, o, sub), sum_by_definition(g, e, d, o))
+        const std::int64_t expected = sum_by_definition(g, e, d, o);
+        ASSERT_EQ(generated::fold_sum(g, e, d, o, sub), expected)
             << "embedding on " << e.orbit().str() << ", walk " << o.str() << ", dart " << d;
+        ASSERT_EQ(generated::fold_sum(g, reader, d, o, sub), expected)
+            << "reader of the embedding on " << e.orbit().str() << ", walk " << o.str() << ", dart "
+            << d;
       }
     }
   }

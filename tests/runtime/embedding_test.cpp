@@ -300,5 +300,33 @@ TEST(Embedding, WithheldColumnsGetStorageAtTheirFirstMutableUse) {
   EXPECT_FALSE(map.withhold_storage("force"));
 }
 
+// A criterion's collect reads through EmbeddingReaders taken once: each
+// reads what the embedding reads, at every dart, from a column with storage
+// and from a withheld one (its default, never allocating it).
+TEST(Embedding, ReadersReadWhatTheEmbeddingReads) {
+  GMap map = assemble_gmap(make_grid(GridKind::Quad, 3, 2));
+  map.declare_embedding<Real>("edge_value", Orbit{0}, MergePolicy::kKeepFirst, -1.0);
+  map.declare_embedding<Vec3>("held", Orbit{}, MergePolicy::kKeepFirst, Vec3(1, 2, 3));
+  ASSERT_TRUE(map.withhold_storage("held"));
+  Embedding<Vec3> pos = map.embedding<Vec3>("position");
+  Embedding<Real> edge = map.embedding<Real>("edge_value");
+  Embedding<Vec3> held = map.embedding<Vec3>("held");
+  map.for_each_dart([&](Dart d) { edge[d] = static_cast<Real>(edge.slot(d)) + 0.5; });
+  const EmbeddingReader<Vec3> pos_reader = pos.reader();
+  const EmbeddingReader<Real> edge_reader = edge.reader();
+  const EmbeddingReader<Vec3> held_reader = held.reader();
+  int darts = 0;
+  map.for_each_dart([&](Dart d) {
+    ++darts;
+    EXPECT_EQ(pos_reader[d], pos[d]) << d;
+    EXPECT_EQ(&pos_reader[d], &pos.values()[pos.slot(d)]) << d;
+    EXPECT_EQ(edge_reader[d], static_cast<Real>(edge.slot(d)) + 0.5) << d;
+    EXPECT_EQ(edge_reader.slot(d), edge.slot(d)) << d;
+    EXPECT_EQ(held_reader[d], Vec3(1, 2, 3)) << d;
+  });
+  EXPECT_EQ(darts, 3 * 2 * 8);
+  EXPECT_FALSE(map.find_column("held")->allocated());
+}
+
 }  // namespace
 }  // namespace rift

@@ -93,6 +93,9 @@ class Column final : public ColumnBase {
   }
   /// The value of slot s, the default while the column has no storage.
   const T& read(Slot s) const { return allocated() ? values_[s] : default_; }
+  /// The values by slot, or null while the column has no storage (readers
+  /// then read the default: EmbeddingReader).
+  const T* storage() const { return allocated() ? values_.data() : nullptr; }
   const T& default_value() const { return default_; }
 
   void allocate() override {

@@ -30,9 +30,10 @@ T zero() {
 // Inlined into the generated criteria, whose collect functions are too
 // large for the compiler's own choice: a call per fold was a third of the
 // atomic edge criterion's time.
-template <class T, class F>
-[[gnu::always_inline]] inline void for_each_value(const GMap& g, const Embedding<T>& e, Dart d,
-                                                  Orbit o, Orbit sub, F&& f) {
+// E: an Embedding or an EmbeddingReader of the value type.
+template <class E, class F>
+[[gnu::always_inline]] inline void for_each_value(const GMap& g, const E& e, Dart d, Orbit o,
+                                                  Orbit sub, F&& f) {
   // The hottest folds, in a form small enough to inline: a value per dart
   // over one link (the atomic criteria's sum of f_stretch over each edge
   // end's <1>, every step): d, then its neighbour, as for_each_sub_orbit.
@@ -47,17 +48,16 @@ template <class T, class F>
   });
 }
 
-template <class T>
-[[gnu::always_inline]] inline T fold_sum(const GMap& g, const Embedding<T>& e, Dart d, Orbit o,
-                                         Orbit sub) {
+template <class E, class T = typename E::value_type>
+[[gnu::always_inline]] inline T fold_sum(const GMap& g, const E& e, Dart d, Orbit o, Orbit sub) {
   T acc = zero<T>();
   for_each_value(g, e, d, o, sub, [&](const T& v) { acc = acc + v; });
   return acc;
 }
 
 /// The mean of the values; of integers, a real.
-template <class T>
-[[gnu::always_inline]] inline auto fold_mean(const GMap& g, const Embedding<T>& e, Dart d, Orbit o,
+template <class E, class T = typename E::value_type>
+[[gnu::always_inline]] inline auto fold_mean(const GMap& g, const E& e, Dart d, Orbit o,
                                              Orbit sub) {
   using R = std::conditional_t<std::is_same_v<T, std::int64_t>, Real, T>;
   R acc = zero<R>();
@@ -69,17 +69,15 @@ template <class T>
   return n > 0 ? R(acc / static_cast<Real>(n)) : zero<R>();
 }
 
-template <class T>
-[[gnu::always_inline]] inline T fold_min(const GMap& g, const Embedding<T>& e, Dart d, Orbit o,
-                                         Orbit sub) {
+template <class E, class T = typename E::value_type>
+[[gnu::always_inline]] inline T fold_min(const GMap& g, const E& e, Dart d, Orbit o, Orbit sub) {
   T best = std::numeric_limits<T>::max();
   for_each_value(g, e, d, o, sub, [&](const T& v) { best = std::min(best, v); });
   return best;
 }
 
-template <class T>
-[[gnu::always_inline]] inline T fold_max(const GMap& g, const Embedding<T>& e, Dart d, Orbit o,
-                                         Orbit sub) {
+template <class E, class T = typename E::value_type>
+[[gnu::always_inline]] inline T fold_max(const GMap& g, const E& e, Dart d, Orbit o, Orbit sub) {
   T best = std::numeric_limits<T>::lowest();
   for_each_value(g, e, d, o, sub, [&](const T& v) { best = std::max(best, v); });
   return best;

@@ -21,10 +21,34 @@ namespace rift {
 /// Handle to one mark; at most kMaxMarks are reserved at a time.
 using Mark = int;
 
+/// Reads of one embedding for a pass that neither adds darts nor gives the
+/// column storage (a criterion's collect): the slot and value arrays are
+/// taken once, so each read is two plain loads that the compiler may share
+/// and reorder. Embedding's own reads check the column's storage with an
+/// acquire load each, which keeps the compiler from reusing any address
+/// across them. A column without storage reads its default: every slot is
+/// masked to 0 and the values point at the default.
+template <class T>
+class EmbeddingReader {
+ public:
+  using value_type = T;
+  EmbeddingReader(const Slot* slots, const T* values, Slot mask)
+      : slots_(slots), values_(values), mask_(mask) {}
+
+  const T& operator[](Dart d) const { return values_[slots_[d] & mask_]; }
+  Slot slot(Dart d) const { return slots_[d]; }
+
+ private:
+  const Slot* slots_;
+  const T* values_;
+  Slot mask_;
+};
+
 /// Typed, O(1) access to an embedding: all darts of one orbit read the same value.
 template <class T>
 class Embedding {
  public:
+  using value_type = T;
   Embedding() = default;
   Embedding(OrbitAttachment* attachment, Column<T>* column)
       : attachment_(attachment), column_(column) {}
@@ -34,6 +58,12 @@ class Embedding {
   /// Reads the default without allocating a withheld column (column.hpp).
   const T& operator[](Dart d) const { return column_->read(attachment_->slot(d)); }
   Slot slot(Dart d) const { return attachment_->slot(d); }
+  /// Reads for one pass over an unchanging map (EmbeddingReader); valid
+  /// until a dart is created or the column gets storage.
+  EmbeddingReader<T> reader() const {
+    if (const T* values = column_->storage()) return {attachment_->slot_data(), values, ~Slot{0}};
+    return {attachment_->slot_data(), &column_->default_value(), 0};
+  }
   /// The column's default value (what a reset slot holds).
   const T& default_value() const { return column_->default_value(); }
   /// The dense value array, indexed by slot; dead slots hold stale values.
