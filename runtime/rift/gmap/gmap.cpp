@@ -2,6 +2,8 @@
 
 #include <atomic>
 #include <stdexcept>
+#include <type_traits>
+#include <variant>
 
 #include "rift/core/huge_pages.hpp"
 
@@ -44,6 +46,32 @@ void flood_orbit(Dart d, const OrbitLinks& links, std::vector<Dart>& stack, Clai
       if (claim(y)) stack.push_back(y);
     }
   }
+}
+/// Whether merging two default values of some column of `att` gives
+/// something else (Column::merge's policies applied to the default).
+bool merges_away_from_default(const OrbitAttachment& att) {
+  for (const auto& column : att.columns()) {
+    const MergePolicy policy = column->policy();
+    if (policy != MergePolicy::kSum && policy != MergePolicy::kMean) continue;
+    if (column->allocated()) return true;  // values to keep, whatever they merge to
+    const bool changes = std::visit(
+        [&](const auto& value) {
+          using T = std::decay_t<decltype(value)>;
+          if constexpr (std::is_same_v<T, Bool>) {
+            return false;  // a || a == a
+          } else if constexpr (std::is_same_v<T, std::int64_t>) {
+            const T merged = policy == MergePolicy::kSum ? value + value : (value + value) / 2;
+            return merged != value;
+          } else {
+            const T merged =
+                policy == MergePolicy::kSum ? T(value + value) : T((value + value) * Real(0.5));
+            return !(merged == value);
+          }
+        },
+        column->get(0));
+    if (changes) return true;
+  }
+  return false;
 }
 }  // namespace
 
@@ -251,7 +279,13 @@ void GMap::wake(OrbitAttachment& att) const {
 // assignment (issue 12). Slots are numbered by each orbit's smallest dart, as
 // the general walk numbers them, so both give the same slots.
 void GMap::assign_missing_slots(OrbitAttachment& att) const {
-  if (att.dormant()) return;
+  if (att.dormant()) {
+    // A sum of two non-zero defaults is not the default: sews and rewrites
+    // must merge such a column's values, so its attachment keeps slots from
+    // its declaration on.
+    if (!merges_away_from_default(att)) return;
+    att.wake(alive_.size());
+  }
   const Orbit o = att.orbit();
   if (att.live_slots() == 0) {
     const OrbitLinks links = orbit_links(alpha_, dimension_, o);
