@@ -784,20 +784,30 @@ void write_group_passes(Writer& w, const Kernel& k) {
   }
   w.close();
   w.line();
-  // As add_forces_all without storing, each force added count times.
+  // As add_forces_all, each force added count times; a pass that stores
+  // also keeps each group's terms, which its members' stored forces copy.
   w.open("void " + k.cls +
          "::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const "
-         "rift::ForceInput& in, rift::Vec3* f) {");
+         "rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {");
   w.line("const Columns c = columns();");
   w.open("for (std::size_t i = 0; i < reps.size(); ++i) {");
   w.line("const Match& m = reps[i];");
   w.line("Result r;");
-  w.line("if (!evaluate<true>(m, in, c, r)) continue;");
+  w.open("if (!evaluate<true>(m, in, c, r)) {");
+  w.line("if (terms) for (int t = 0; t < " + n + "; ++t) terms[i * " + n + " + t].setZero();");
+  w.line("continue;");
+  w.close();
   w.line("const rift::Real count = counts[i];");
   for (const ir::Force& f : b.forces) {
     w.line("f[m." + k.slots[static_cast<std::size_t>(f.vertex_slot)] + "] += count * r." +
            force_field(b, f) + ";");
   }
+  w.open("if (terms) {");
+  for (std::size_t i = 0; i < b.forces.size(); ++i) {
+    w.line("terms[i * " + n + " + " + std::to_string(i) + "] = r." + force_field(b, b.forces[i]) +
+           ";");
+  }
+  w.close();
   w.close();
   w.close();
   w.line();
@@ -933,10 +943,11 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
         "const;");
     w.line("/// Stores forces computed by evaluate_terms into m's stored-force slots.");
     w.line("void store_terms(const Match& m, const rift::Vec3* terms);");
-    w.line("/// The force pass over groups: adds counts[i] times the forces of reps[i].");
+    w.line("/// The force pass over groups: adds counts[i] times the forces of reps[i];");
+    w.line("/// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.");
     w.line(
         "void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const "
-        "rift::ForceInput& in, rift::Vec3* f);");
+        "rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);");
   }
   w.line("void reset_stored(const Match& m);");
   if (accumulates(k.plan->body)) {

@@ -43,7 +43,8 @@
 //   bool evaluate_terms(const Match&, const ForceInput&, Vec3* terms) const;
 //   void store_terms(const Match&, const Vec3* terms);       // the stored forces
 //   void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts,
-//                           const ForceInput&, Vec3* f);     // f += count × forces
+//                           const ForceInput&, Vec3* f,      // f += count × forces
+//                           Vec3* terms);                    // and each rep's forces
 //
 // evaluates identical matches once (rift/sim/match_groups.hpp): the
 // coloured scatter then runs over groups instead of matches, and a pass that
@@ -288,7 +289,7 @@ class CachedInteraction final : public ForceModel {
     k.group_key(m, key);
     k.evaluate_terms(m, in, t);
     mk.store_terms(m, t);
-    mk.add_forces_grouped(ms, counts, in, t);
+    mk.add_forces_grouped(ms, counts, in, t, t);
   };
 
   auto key_fn() const {
@@ -351,36 +352,37 @@ class CachedInteraction final : public ForceModel {
       const std::span<const Match> reps = groups_.representatives();
       const std::span<const std::uint32_t> counts = groups_.counts();
       const std::span<const Match> all = cache_.matches();
+      // A pass that stores runs the same loop, which also hands back each
+      // group's terms (kGather groups at a time): every member stores them.
       auto body = [&](const std::uint32_t* entries, std::size_t n, bool consecutive) {
         if (n == 0) return;
-        if (store) {
-          for (std::size_t i = 0; i < n; ++i) {
-            const std::uint32_t g = entries[i];
-            Vec3 t[kTerms];
-            Slot s[kTerms];
-            kernel_.evaluate_terms(reps[g], in, t);
-            kernel_.force_targets(reps[g], s);
-            const Real w = counts[g];
-            for (int k = 0; k < kTerms; ++k)
-              f[s[k]] += w * t[k];
-            groups_.for_each_member(g, [&](std::uint32_t e) { kernel_.store_terms(all[e], t); });
-          }
-          return;
-        }
-        if (consecutive) {
-          kernel_.add_forces_grouped(reps.subspan(entries[0], n), counts.data() + entries[0], in,
-                                     f);
+        if (consecutive && !store) {
+          kernel_.add_forces_grouped(reps.subspan(entries[0], n), counts.data() + entries[0], in, f,
+                                     nullptr);
           return;
         }
         Match buffer[kGather];
         std::uint32_t weights[kGather];
+        Vec3 terms[kGather * kTerms];  // Eigen leaves it uninitialised: free when not storing
         for (std::size_t first = 0; first < n; first += kGather) {
           const std::size_t count = std::min(kGather, n - first);
-          for (std::size_t i = 0; i < count; ++i) {
-            buffer[i] = reps[entries[first + i]];
-            weights[i] = counts[entries[first + i]];
+          if (consecutive) {
+            kernel_.add_forces_grouped(reps.subspan(entries[first], count),
+                                       counts.data() + entries[first], in, f, terms);
+          } else {
+            for (std::size_t i = 0; i < count; ++i) {
+              buffer[i] = reps[entries[first + i]];
+              weights[i] = counts[entries[first + i]];
+            }
+            kernel_.add_forces_grouped(std::span<const Match>(buffer, count), weights, in, f,
+                                       store ? terms : nullptr);
           }
-          kernel_.add_forces_grouped(std::span<const Match>(buffer, count), weights, in, f);
+          if (!store) continue;
+          for (std::size_t i = 0; i < count; ++i) {
+            const Vec3* t = terms + i * kTerms;
+            groups_.for_each_member(entries[first + i],
+                                    [&](std::uint32_t e) { kernel_.store_terms(all[e], t); });
+          }
         }
       };
       colouring_.run(body);

@@ -289,15 +289,22 @@ void StretchKernel::store_terms(const Match& m, const rift::Vec3* terms) {
   e_f_stretch.values()[m.dart_b] = terms[1];
 }
 
-void StretchKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f) {
+void StretchKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {
   const Columns c = columns();
   for (std::size_t i = 0; i < reps.size(); ++i) {
     const Match& m = reps[i];
     Result r;
-    if (!evaluate<true>(m, in, c, r)) continue;
+    if (!evaluate<true>(m, in, c, r)) {
+      if (terms) for (int t = 0; t < 2; ++t) terms[i * 2 + t].setZero();
+      continue;
+    }
     const rift::Real count = counts[i];
     f[m.vertex_a] += count * r.f_stretch_a;
     f[m.vertex_b] += count * r.f_stretch_b;
+    if (terms) {
+      terms[i * 2 + 0] = r.f_stretch_a;
+      terms[i * 2 + 1] = r.f_stretch_b;
+    }
   }
 }
 
@@ -579,17 +586,26 @@ void ShearKernel::store_terms(const Match& m, const rift::Vec3* terms) {
   e_f_shear.values()[m.orbit1_c3] = terms[3];
 }
 
-void ShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f) {
+void ShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {
   const Columns c = columns();
   for (std::size_t i = 0; i < reps.size(); ++i) {
     const Match& m = reps[i];
     Result r;
-    if (!evaluate<true>(m, in, c, r)) continue;
+    if (!evaluate<true>(m, in, c, r)) {
+      if (terms) for (int t = 0; t < 4; ++t) terms[i * 4 + t].setZero();
+      continue;
+    }
     const rift::Real count = counts[i];
     f[m.vertex_c0] += count * r.f_shear_c0;
     f[m.vertex_c2] += count * r.f_shear_c2;
     f[m.vertex_c1] += count * r.f_shear_c1;
     f[m.vertex_c3] += count * r.f_shear_c3;
+    if (terms) {
+      terms[i * 4 + 0] = r.f_shear_c0;
+      terms[i * 4 + 1] = r.f_shear_c2;
+      terms[i * 4 + 2] = r.f_shear_c1;
+      terms[i * 4 + 3] = r.f_shear_c3;
+    }
   }
 }
 
@@ -2187,12 +2203,15 @@ void VolumeShearKernel::store_terms(const Match& m, const rift::Vec3* terms) {
   e_f_volume_shear.values()[m.orbit12_s12] = terms[7];
 }
 
-void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f) {
+void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {
   const Columns c = columns();
   for (std::size_t i = 0; i < reps.size(); ++i) {
     const Match& m = reps[i];
     Result r;
-    if (!evaluate<true>(m, in, c, r)) continue;
+    if (!evaluate<true>(m, in, c, r)) {
+      if (terms) for (int t = 0; t < 8; ++t) terms[i * 8 + t].setZero();
+      continue;
+    }
     const rift::Real count = counts[i];
     f[m.vertex_b0] += count * r.f_volume_shear_b0;
     f[m.vertex_s22] += count * r.f_volume_shear_s22;
@@ -2202,6 +2221,16 @@ void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const st
     f[m.vertex_s02] += count * r.f_volume_shear_s02;
     f[m.vertex_b6] += count * r.f_volume_shear_b6;
     f[m.vertex_s12] += count * r.f_volume_shear_s12;
+    if (terms) {
+      terms[i * 8 + 0] = r.f_volume_shear_b0;
+      terms[i * 8 + 1] = r.f_volume_shear_s22;
+      terms[i * 8 + 2] = r.f_volume_shear_b2;
+      terms[i * 8 + 3] = r.f_volume_shear_s32;
+      terms[i * 8 + 4] = r.f_volume_shear_b4;
+      terms[i * 8 + 5] = r.f_volume_shear_s02;
+      terms[i * 8 + 6] = r.f_volume_shear_b6;
+      terms[i * 8 + 7] = r.f_volume_shear_s12;
+    }
   }
 }
 

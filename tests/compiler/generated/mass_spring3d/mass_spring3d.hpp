@@ -76,8 +76,9 @@ class StretchKernel {
   bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
   /// Stores forces computed by evaluate_terms into m's stored-force slots.
   void store_terms(const Match& m, const rift::Vec3* terms);
-  /// The force pass over groups: adds counts[i] times the forces of reps[i].
-  void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f);
+  /// The force pass over groups: adds counts[i] times the forces of reps[i];
+  /// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.
+  void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
   void reset_stored(const Match& m);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).
@@ -163,8 +164,9 @@ class ShearKernel {
   bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
   /// Stores forces computed by evaluate_terms into m's stored-force slots.
   void store_terms(const Match& m, const rift::Vec3* terms);
-  /// The force pass over groups: adds counts[i] times the forces of reps[i].
-  void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f);
+  /// The force pass over groups: adds counts[i] times the forces of reps[i];
+  /// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.
+  void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
   void reset_stored(const Match& m);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).
@@ -263,8 +265,9 @@ class VolumeShearKernel {
   bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
   /// Stores forces computed by evaluate_terms into m's stored-force slots.
   void store_terms(const Match& m, const rift::Vec3* terms);
-  /// The force pass over groups: adds counts[i] times the forces of reps[i].
-  void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f);
+  /// The force pass over groups: adds counts[i] times the forces of reps[i];
+  /// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.
+  void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
   void reset_stored(const Match& m);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).
