@@ -8,6 +8,15 @@
 namespace rift {
 namespace {
 
+/// The first dart sewn along dimension 2 (an interior edge to tear), or kNoDart.
+Dart first_sewn_dart(const GMap& map) {
+  Dart inner = kNoDart;
+  map.for_each_dart([&](Dart d) {
+    if (inner == kNoDart && !map.is_free(d, 2)) inner = d;
+  });
+  return inner;
+}
+
 struct TwoTriangles {
   GMap map{2};
   Dart a = test::make_polygon(map, 3);
@@ -144,10 +153,7 @@ TEST(Embedding, DeclaredColumnsGetStorageOnlyWhenAskedFor) {
   EXPECT_FALSE(k->allocated());
   EXPECT_EQ(std::get<Vec3>(force->get(5)), Vec3(1, 2, 3));
   // Tearing an interior edge (unsew) and adding darts: still no storage.
-  Dart inner = kNoDart;
-  map.for_each_dart([&](Dart d) {
-    if (inner == kNoDart && !map.is_free(d, 2)) inner = d;
-  });
+  const Dart inner = first_sewn_dart(map);
   ASSERT_NE(inner, kNoDart);
   map.unsew(inner, 2);
   const Dart fresh = map.create_darts(4);
@@ -195,10 +201,7 @@ TEST(Embedding, AnAttachmentKeepsNoSlotsUntilAColumnIsAskedFor) {
   EXPECT_EQ(att->slot_capacity(), 0u);
   // Tear two interior edges, add and delete darts, compact: nothing to keep.
   for (int tear = 0; tear < 2; ++tear) {
-    Dart inner = kNoDart;
-    map.for_each_dart([&](Dart d) {
-      if (inner == kNoDart && !map.is_free(d, 2)) inner = d;
-    });
+    const Dart inner = first_sewn_dart(map);
     ASSERT_NE(inner, kNoDart);
     map.unsew(inner, 2);
   }
@@ -220,10 +223,7 @@ TEST(Embedding, AnAttachmentKeepsNoSlotsUntilAColumnIsAskedFor) {
   map.for_each_dart([&](Dart d) { EXPECT_EQ(wing[d], 2.5) << d; });
   // Awake, it follows a tear: the two halves of a torn <0,2> orbit (the
   // darts of an edge on both sides) each keep the value.
-  Dart inner = kNoDart;
-  map.for_each_dart([&](Dart d) {
-    if (inner == kNoDart && !map.is_free(d, 2)) inner = d;
-  });
+  const Dart inner = first_sewn_dart(map);
   ASSERT_NE(inner, kNoDart);
   const Dart other = map.alpha(inner, 2);
   wing[inner] = 7.0;
@@ -283,10 +283,7 @@ TEST(Embedding, WithheldColumnsGetStorageAtTheirFirstMutableUse) {
   const Embedding<Vec3>& read = f;
   map.for_each_dart([&](Dart d) { EXPECT_EQ(read[d], Vec3(1, 2, 3)) << d; });
   EXPECT_EQ(f.slot(7), f.attachment().slot(7));
-  Dart inner = kNoDart;
-  map.for_each_dart([&](Dart d) {
-    if (inner == kNoDart && !map.is_free(d, 2)) inner = d;
-  });
+  const Dart inner = first_sewn_dart(map);
   ASSERT_NE(inner, kNoDart);
   map.unsew(inner, 2);
   EXPECT_FALSE(column->allocated());
