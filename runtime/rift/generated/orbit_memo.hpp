@@ -27,6 +27,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "rift/generated/sub_orbits.hpp"
 #include "rift/gmap/gmap.hpp"
 
 namespace rift::generated {
@@ -37,10 +38,7 @@ class OrbitMemo {
   void begin(const GMap& g, Orbit o) {
     // Where the map attaches embeddings to <o>, every dart of an orbit holds
     // the orbit's slot: the slot is the key, found without walking the orbit.
-    slots_ = nullptr;
-    for (const auto& a : g.attachments()) {
-      if (a->orbit() == o && !a->dormant()) slots_ = a.get();
-    }
+    slots_ = attachment_on(g, o);
     grow(by_slot_, slots_ ? slots_->slot_capacity() : 0);
     grow(by_dart_, g.capacity());
     known_.clear();
