@@ -224,9 +224,9 @@ TEST(HostileInputs, MixedDimensionsKeepTheSolids) {
 // Every format, with CRLF line ends and with a UTF-8 byte-order mark, reads
 // to the same mesh as the plain file.
 TEST(HostileInputs, CrlfAndByteOrderMarkReadLikeThePlainFile) {
-  using Reader = MeshData (*)(const std::string&, std::string_view);
+  using ReadFn = MeshData (*)(const std::string&, std::string_view);
   const Shape s = shapes()[1];
-  const std::pair<Reader, std::string> files[] = {{io::read_obj, to_obj(s)},
+  const std::pair<ReadFn, std::string> files[] = {{io::read_obj, to_obj(s)},
                                                   {io::read_gmsh, to_gmsh12(s, 2)},
                                                   {io::read_gmsh, to_gmsh41(s)},
                                                   {io::read_medit, to_medit(s)},

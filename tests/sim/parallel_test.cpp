@@ -11,18 +11,14 @@
 #include <vector>
 
 #include "rift/sim/term_gather.hpp"
+#include "same_bits.hpp"
+#include "thread_count_guard.hpp"
 
 namespace rift {
 namespace {
 
-/// Restores the default thread count when a test ends.
-struct ThreadCountGuard {
-  ~ThreadCountGuard() { set_thread_count(0); }
-};
-
-bool same_bits(Real a, Real b) {
-  return std::memcmp(&a, &b, sizeof(Real)) == 0;
-}
+using test::same_bits;
+using test::ThreadCountGuard;
 
 // Values of very different magnitudes: any change of the order of the
 // additions changes the rounded sum.

@@ -13,13 +13,12 @@
 #include <vector>
 
 #include "rift/core/parallel.hpp"
+#include "thread_count_guard.hpp"
 
 namespace rift {
 namespace {
 
-struct ThreadCountGuard {
-  ~ThreadCountGuard() { set_thread_count(0); }
-};
+using test::ThreadCountGuard;
 
 using Spring = std::array<Slot, 2>;
 

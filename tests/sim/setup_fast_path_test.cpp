@@ -16,10 +16,13 @@
 #include "rift/mesh/assemble.hpp"
 #include "rift/mesh/generators.hpp"
 #include "rift/sim/mass_model.hpp"
+#include "same_bits.hpp"
 #include "shared_test_data.hpp"
 
 namespace rift {
 namespace {
+
+using test::same_bits;
 
 // Slots as the general walk numbers them: each orbit gets the next slot when
 // the sweep in dart order reaches its first dart.
@@ -80,10 +83,6 @@ Real masses_measured_twice(GMap& map, Real total_mass, Embedding<Real>& corner_m
     total += mass;
   });
   return total;
-}
-
-bool same_bits(Real a, Real b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
 
 void expect_same_masses(GMap& map, const std::string& what) {

@@ -22,16 +22,7 @@ std::string strip(const std::string& kind, const std::string& components) {
   return static_scene("grid:" + kind + ":6x1", "[1.0, 0.2, 1.0]", kStripMass, components);
 }
 
-std::string interaction(const std::string& name, const std::string& params) {
-  return "[[interaction]]\nname = \"" + name + "\"\n" + params + "\n";
-}
-
-std::string criterion(const std::string& name, double threshold, const std::string& more = "") {
-  return "[[criterion]]\nname = \"" + name + "\"\nthreshold = " + std::to_string(threshold) + "\n" +
-         more + "\n";
-}
-
-const std::string kStretch = interaction("stretch", "stiffness = 60.0\ndamping = 0.0");
+const std::string kStripStretch = interaction_table("stretch", "stiffness = 60.0\ndamping = 0.0");
 
 /// Column 3 (x in [0.5, 0.667]) stretched by 0.05 along x: strain 0.3, and a
 /// stretch spring force of 60 N/m * 0.05 m = 3 N on its horizontal edges.
@@ -87,44 +78,49 @@ void expect_untorn(const Simulation& sim, std::size_t faces) {
 }
 
 TEST(Criteria2D, StretchStrainRemovesTheElementsOfTheStretchedEdges) {
-  auto torn = step_once("strain", strip("quad", kStretch + criterion("stretch_strain", 0.2)),
-                        pull_column_3);
+  auto torn =
+      step_once("strain", strip("quad", kStripStretch + criterion_table("stretch_strain", 0.2)),
+                pull_column_3);
   EXPECT_GE(torn->tears(), 1u);
   expect_column_3_removed(*torn, 1);
-  expect_untorn(
-      *step_once("strain_below", strip("quad", kStretch + criterion("stretch_strain", 0.35)),
-                 pull_column_3),
-      6);
+  expect_untorn(*step_once("strain_below",
+                           strip("quad", kStripStretch + criterion_table("stretch_strain", 0.35)),
+                           pull_column_3),
+                6);
 }
 
 TEST(Criteria2D, StretchForceRemovesTheElementsOfTheStretchedEdges) {
-  auto torn = step_once("stretch_force", strip("quad", kStretch + criterion("stretch_force", 2.0)),
+  auto torn = step_once("stretch_force",
+                        strip("quad", kStripStretch + criterion_table("stretch_force", 2.0)),
                         pull_column_3);
   expect_column_3_removed(*torn, 1);
-  expect_untorn(
-      *step_once("stretch_force_below", strip("quad", kStretch + criterion("stretch_force", 4.0)),
-                 pull_column_3),
-      6);
+  expect_untorn(*step_once("stretch_force_below",
+                           strip("quad", kStripStretch + criterion_table("stretch_force", 4.0)),
+                           pull_column_3),
+                6);
 }
 
 TEST(Criteria2D, SpringSplitSplitsBothExtremitiesAcrossTheSpring) {
-  auto torn = step_once("spring_split", strip("quad", kStretch + criterion("spring_split", 2.0)),
-                        pull_column_3);
+  auto torn =
+      step_once("spring_split", strip("quad", kStripStretch + criterion_table("spring_split", 2.0)),
+                pull_column_3);
   expect_column_3_cut_out(*torn, 1);
   expect_untorn(*step_once("spring_split_below",
-                           strip("quad", kStretch + criterion("spring_split", 4.0)), pull_column_3),
+                           strip("quad", kStripStretch + criterion_table("spring_split", 4.0)),
+                           pull_column_3),
                 6);
 }
 
 TEST(Criteria2D, ShearForceRemovesTheShearedQuad) {
   // The diagonals of column 3 grow from 0.2603 to 0.2949: 43 N/m * 0.0345 m = 1.48 N.
-  const std::string shear = interaction("shear", "stiffness = 43.0\ndamping = 0.0");
+  const std::string shear = interaction_table("shear", "stiffness = 43.0\ndamping = 0.0");
   auto torn =
-      step_once("shear", strip("quad", shear + criterion("shear_force", 1.0)), pull_column_3);
+      step_once("shear", strip("quad", shear + criterion_table("shear_force", 1.0)), pull_column_3);
   expect_column_3_removed(*torn, 1);
-  expect_untorn(*step_once("shear_below", strip("quad", shear + criterion("shear_force", 2.0)),
-                           pull_column_3),
-                6);
+  expect_untorn(
+      *step_once("shear_below", strip("quad", shear + criterion_table("shear_force", 2.0)),
+                 pull_column_3),
+      6);
 }
 
 /// The right part of the strip (x > 0.5) folded up by 60 degrees about x = 0.5:
@@ -137,8 +133,8 @@ Vec3 fold_at_half(const Vec3& p) {
 }
 
 TEST(Criteria2D, BendForceSeparatesTheFacesOfTheFoldedEdge) {
-  const std::string bend = interaction("bend", "stiffness = 10.0\ndamping = 0.0");
-  auto sim = simulate("bend", strip("quad", bend + criterion("bend_force", 0.3)));
+  const std::string bend = interaction_table("bend", "stiffness = 10.0\ndamping = 0.0");
+  auto sim = simulate("bend", strip("quad", bend + criterion_table("bend_force", 0.3)));
   const ForceModel& model = *sim->force_models()[0];
   EXPECT_EQ(model.active_matches(), 10u);  // 5 interior edges, 2 extremities each
   deform(*sim, fold_at_half);
@@ -165,73 +161,79 @@ TEST(Criteria2D, BendForceSeparatesTheFacesOfTheFoldedEdge) {
     EXPECT_EQ(f_bend[g.alpha(g.alpha(d, 1), 0)], Vec3::Zero());
   });
   EXPECT_EQ(cut_darts, 4u);
-  expect_untorn(
-      *step_once("bend_below", strip("quad", bend + criterion("bend_force", 0.6)), fold_at_half),
-      6);
+  expect_untorn(*step_once("bend_below", strip("quad", bend + criterion_table("bend_force", 0.6)),
+                           fold_at_half),
+                6);
 }
 
 const std::string kMembrane =
-    interaction("membrane", "young = 1000.0\npoisson = 0.3\ndamping = 0.0");
+    interaction_table("membrane", "young = 1000.0\npoisson = 0.3\ndamping = 0.0");
 
 TEST(Criteria2D, ElementStressRemovesTheStretchedTriangles) {
   // Strain 0.3 along x: a principal stress of about E / (1 - nu^2) * 0.3 = 330 N/m.
   auto torn =
-      step_once("element_stress", strip("tri", kMembrane + criterion("element_stress", 100.0)),
-                pull_column_3);
+      step_once("element_stress",
+                strip("tri", kMembrane + criterion_table("element_stress", 100.0)), pull_column_3);
   expect_column_3_removed(*torn, 2);
-  expect_untorn(
-      *step_once("element_stress_below",
-                 strip("tri", kMembrane + criterion("element_stress", 1000.0)), pull_column_3),
-      12);
+  expect_untorn(*step_once("element_stress_below",
+                           strip("tri", kMembrane + criterion_table("element_stress", 1000.0)),
+                           pull_column_3),
+                12);
 }
 
 TEST(Criteria2D, InteractionForceSplitsTheVerticesOfTheStretchedColumn) {
-  auto torn =
-      step_once("interaction_force", strip("quad", kStretch + criterion("interaction_force", 2.0)),
-                pull_column_3);
+  auto torn = step_once("interaction_force",
+                        strip("quad", kStripStretch + criterion_table("interaction_force", 2.0)),
+                        pull_column_3);
   expect_column_3_cut_out(*torn, 1);
-  expect_untorn(
-      *step_once("interaction_force_below",
-                 strip("quad", kStretch + criterion("interaction_force", 4.0)), pull_column_3),
-      6);
+  expect_untorn(*step_once("interaction_force_below",
+                           strip("quad", kStripStretch + criterion_table("interaction_force", 4.0)),
+                           pull_column_3),
+                6);
 }
 
 TEST(Criteria2D, VertexStressSplitsTheVerticesOfTheStretchedColumn) {
-  auto torn = step_once("vertex_stress",
-                        strip("tri", kMembrane + criterion("vertex_stress", 100.0)), pull_column_3);
+  auto torn =
+      step_once("vertex_stress", strip("tri", kMembrane + criterion_table("vertex_stress", 100.0)),
+                pull_column_3);
   expect_column_3_cut_out(*torn, 2);
   expect_untorn(
       *step_once("vertex_stress_below",
-                 strip("tri", kMembrane + criterion("vertex_stress", 1000.0)), pull_column_3),
+                 strip("tri", kMembrane + criterion_table("vertex_stress", 1000.0)), pull_column_3),
       12);
 }
 
 TEST(Criteria2D, VertexSumSplitsTheVerticesOfTheStretchedColumn) {
   // The ends of column 3 are pulled by 3 N each, every other vertex by none.
-  auto torn = step_once("vertex_sum", strip("quad", kStretch + criterion("vertex_sum", 2.0)),
-                        pull_column_3);
+  auto torn =
+      step_once("vertex_sum", strip("quad", kStripStretch + criterion_table("vertex_sum", 2.0)),
+                pull_column_3);
   expect_column_3_cut_out(*torn, 1);
-  expect_untorn(*step_once("vertex_sum_below",
-                           strip("quad", kStretch + criterion("vertex_sum", 4.0)), pull_column_3),
-                6);
+  expect_untorn(
+      *step_once("vertex_sum_below",
+                 strip("quad", kStripStretch + criterion_table("vertex_sum", 4.0)), pull_column_3),
+      6);
 }
 
 TEST(Criteria2D, GlobalEdgeSeparatesTheEdgesOfTheStretchedColumn) {
   // |(fA + fB).n| = 3 N + 3 N on the edges x = 0.5 and x = 0.667, 0 elsewhere.
-  auto torn = step_once("global_edge", strip("quad", kStretch + criterion("global_edge", 5.0)),
-                        pull_column_3);
+  auto torn =
+      step_once("global_edge", strip("quad", kStripStretch + criterion_table("global_edge", 5.0)),
+                pull_column_3);
   expect_column_3_cut_out(*torn, 1);
   EXPECT_EQ(torn->tears(), 2u);
-  expect_untorn(*step_once("global_edge_below",
-                           strip("quad", kStretch + criterion("global_edge", 7.0)), pull_column_3),
-                6);
+  expect_untorn(
+      *step_once("global_edge_below",
+                 strip("quad", kStripStretch + criterion_table("global_edge", 7.0)), pull_column_3),
+      6);
 }
 
 TEST(Criteria2D, AtomicEdgeSeparatesTheEdgeBothFacesContract) {
   // At x = 0.5 both faces pull the edge into themselves (f1 = -6 N, f2 = +6 N
   // along x): |(f1 - f2).n| = 12 N. At x = 1/3 and 2/3 one face does not pull.
-  auto torn = step_once("atomic_edge", strip("quad", kStretch + criterion("atomic_edge", 10.0)),
-                        pull_columns_2_3);
+  auto torn =
+      step_once("atomic_edge", strip("quad", kStripStretch + criterion_table("atomic_edge", 10.0)),
+                pull_columns_2_3);
   EXPECT_EQ(torn->tears(), 1u);
   const Counts c = counts(torn->map());
   EXPECT_EQ(c.vertices, 16u);
@@ -240,10 +242,10 @@ TEST(Criteria2D, AtomicEdgeSeparatesTheEdgeBothFacesContract) {
   EXPECT_NEAR(torn->total_mass(), kStripMass, 1e-12);
   for (const Vec3& p : split_positions(*torn))
     EXPECT_NEAR(p.x(), 0.55, 1e-9);
-  expect_untorn(
-      *step_once("atomic_edge_below", strip("quad", kStretch + criterion("atomic_edge", 14.0)),
-                 pull_columns_2_3),
-      6);
+  expect_untorn(*step_once("atomic_edge_below",
+                           strip("quad", kStripStretch + criterion_table("atomic_edge", 14.0)),
+                           pull_columns_2_3),
+                6);
 }
 
 }  // namespace

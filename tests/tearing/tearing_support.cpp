@@ -45,6 +45,15 @@ std::string static_scene(const std::string& mesh, const std::string& scale, doub
          std::to_string(total_mass) + "\n" + components;
 }
 
+std::string interaction_table(const std::string& name, const std::string& params) {
+  return "[[interaction]]\nname = \"" + name + "\"\n" + params + "\n";
+}
+
+std::string criterion_table(const std::string& name, double threshold, const std::string& more) {
+  return "[[criterion]]\nname = \"" + name + "\"\nthreshold = " + std::to_string(threshold) + "\n" +
+         more + "\n";
+}
+
 void deform(Simulation& sim, const std::function<Vec3(const Vec3&)>& f) {
   const GMap& g = sim.map();
   g.for_each_cell(Orbit::cell(0, g.dimension()),

@@ -32,6 +32,13 @@ std::unique_ptr<Simulation> simulate(const std::string& name, const std::string&
 std::string static_scene(const std::string& mesh, const std::string& scale, double total_mass,
                          const std::string& components);
 
+/// An [[interaction]] table: its name, then `params` (TOML lines).
+std::string interaction_table(const std::string& name, const std::string& params);
+
+/// A [[criterion]] table with its threshold, then `more` (TOML lines).
+std::string criterion_table(const std::string& name, double threshold,
+                            const std::string& more = "");
+
 /// Moves every vertex to f(position), after the rest state was recorded.
 void deform(Simulation& sim, const std::function<Vec3(const Vec3&)>& f);
 
