@@ -209,7 +209,7 @@ void Simulation::step() {
     handles_->reactions(position_.attachment(), time_, start_forces_, vertex_mass_.values(),
                         settings_.gravity, reactions_);
   }
-  if (tracks_external_work()) x_before_ = x;
+  keep_positions_before(x);
   if (implicit_) {
     implicit_step();
   } else {
@@ -278,20 +278,51 @@ std::size_t Simulation::apply_criteria() {
   return applied;
 }
 
+void Simulation::keep_positions_before(const std::vector<Vec3>& x) {
+  if (!external_.empty()) {
+    x_before_ = x;  // loads act on every vertex
+  } else if (handles_) {
+    // Only handles do work: their vertices' positions are enough.
+    const std::vector<Slot>& held = handles_->held_slots(position_.attachment());
+    held_x_before_.resize(held.size());
+    for (std::size_t k = 0; k < held.size(); ++k)
+      held_x_before_[k] = held[k] < x.size() ? x[held[k]] : Vec3(Vec3::Zero());
+  }
+}
+
 void Simulation::account_external_work(const std::vector<Vec3>& x) {
   // W += sum over vertices of (external force + handle reaction) . dx, with
   // the forces at the start of the step (first order in dt).
   if (!tracks_external_work()) return;
+  const auto& mass = vertex_mass_.values();
+  const Real t0 = time_ - settings_.dt;
+  // Adds the reaction of a handle on a vertex it held during the step.
+  auto add_reaction = [&](Slot s, Vec3& f) {
+    if (handles_ && inverse_mass_[s] == 0 && handles_->holds(s, t0)) {
+      f += -(start_forces_[s] + mass[s] * settings_.gravity);
+    }
+  };
+  if (external_.empty()) {
+    // Handles only: the other vertices' terms are 0 · dx, which leave the
+    // sum's bits as they are, so the held slots alone (ascending, the order
+    // of a sweep of every slot) give the same sum.
+    const std::vector<Slot>& held = handles_->held_slots(position_.attachment());
+    for (std::size_t k = 0; k < held.size() && k < held_x_before_.size(); ++k) {
+      const Slot s = held[k];
+      if (s >= x.size()) continue;
+      Vec3 f = Vec3::Zero();
+      add_reaction(s, f);
+      external_work_ += f.dot(x[s] - held_x_before_[k]);
+    }
+    return;
+  }
   const bool any_external = !external_forces_.empty();
   const OrbitAttachment& att = position_.attachment();
   const std::size_t n = std::min(x.size(), x_before_.size());
-  const auto& mass = vertex_mass_.values();
   for (Slot s = 0; s < n; ++s) {
     if (!att.slot_alive(s)) continue;
     Vec3 f = any_external && s < external_forces_.size() ? external_forces_[s] : Vec3::Zero();
-    if (handles_ && inverse_mass_[s] == 0 && handles_->holds(s, time_ - settings_.dt)) {
-      f += -(start_forces_[s] + mass[s] * settings_.gravity);  // the handle's reaction
-    }
+    add_reaction(s, f);
     external_work_ += f.dot(x[s] - x_before_[s]);
   }
 }
@@ -317,6 +348,7 @@ void Simulation::on_topology_changed(std::span<const Dart> touched) {
   map_.free_mark(m);
   for (auto& model : models_)
     model->rematch(map_, region_);
+  if (handles_) handles_->topology_changed();
   if (implicit_) implicit_->topology_changed();
   bdf2_.restart();  // the slots' history no longer matches the map
   refresh_inverse_masses(region_);
@@ -326,7 +358,7 @@ std::size_t Simulation::per_vertex_bytes() const {
   std::size_t bytes = integrator_.buffer_bytes() + inverse_mass_.capacity() * sizeof(Real) +
                       is_free_.capacity() * sizeof(char);
   for (const std::vector<Vec3>* a :
-       {&forces_, &start_forces_, &external_forces_, &x_before_, &target_v_})
+       {&forces_, &start_forces_, &external_forces_, &x_before_, &held_x_before_, &target_v_})
     bytes += a->capacity() * sizeof(Vec3);
   return bytes;
 }

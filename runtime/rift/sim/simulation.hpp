@@ -161,6 +161,9 @@ class Simulation {
   void refresh_inverse_mass(Slot s);
   void implicit_step();  // simulation_implicit.cpp
   std::size_t apply_criteria();
+  /// Before the integrator, what account_external_work needs: every
+  /// position with loads, the held vertices' with handles only.
+  void keep_positions_before(const std::vector<Vec3>& x);
   void account_external_work(const std::vector<Vec3>& x);
 
   GMap map_;
@@ -186,6 +189,7 @@ class Simulation {
   std::vector<std::unique_ptr<ExternalForce>> external_;
   std::unique_ptr<Contact> contact_;
   std::vector<Vec3> external_forces_, x_before_, reactions_;
+  std::vector<Vec3> held_x_before_;  // handles without loads: by Handles::held_slots()
   Real external_work_ = 0;
   std::vector<Dart> region_;
   std::vector<std::unique_ptr<Criterion>> criteria_;
