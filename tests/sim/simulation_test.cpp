@@ -83,6 +83,25 @@ TEST(Simulation, UndampedSpringsConserveEnergyWithRk4) {
   EXPECT_NEAR(e1, e0, 1e-6 * e0);
 }
 
+TEST(Simulation, ALoopHoldsOnlyThePerVertexArraysItsScenesIntegratorNeeds) {
+  // Counted by hand (docs/architecture.md, "The step's arrays"): every
+  // explicit loop holds the forces (the stage buffer between steps), the
+  // start forces and the inverse masses; RK4 adds its four stage arrays
+  // (next stage x and v, two running sums); no acceleration array, no copy
+  // of the positions without loads or handles.
+  for (IntegratorKind kind : {IntegratorKind::kRK4, IntegratorKind::kSymplecticEuler}) {
+    Simulation sim = make_cloth(kind, Vec3(0, 0, -9.81), 0.1);
+    sim.initialise();
+    for (int s = 0; s < 3; ++s)
+      sim.step();
+    const std::size_t n = sim.position().values().size();
+    ASSERT_EQ(n, 25u);
+    const std::size_t vec3_arrays = kind == IntegratorKind::kRK4 ? 6 : 2;
+    EXPECT_EQ(sim.per_vertex_bytes(), n * (vec3_arrays * sizeof(Vec3) + sizeof(Real)))
+        << to_string(kind);
+  }
+}
+
 TEST(Simulation, RejectsNonPositiveSettings) {
   EXPECT_THROW(Simulation(assemble_gmap(make_grid(GridKind::Quad, 1, 1)),
                           {IntegratorKind::kRK4, 0.0, Vec3::Zero()}),

@@ -142,44 +142,37 @@ void Simulation::refresh_inverse_mass(Slot s) {
   }
 }
 
-void Simulation::accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
-                               std::vector<Vec3>& a, bool store) {
+void Simulation::start_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& v) {
   const std::size_t n = x.size();
-  forces_.resize(n);
-  parallel_for(n, [&](std::size_t s) { forces_[s].setZero(); });
-  const ForceInput in{x.data(), v.data()};
-  if (store) {
-    for (auto& model : models_)
-      model->clear_accumulated();
+  // The integrator hands the stage buffer back zeroed (forces_zero_): then
+  // only slots a tear added need zeros, else the whole array does.
+  if (forces_zero_) {
+    forces_.resize(n, Vec3::Zero());
+  } else {
+    forces_.resize(n);
+    parallel_for(n, [&](std::size_t s) { forces_[s].setZero(); });
   }
+  forces_zero_ = false;
+  const ForceInput in{x.data(), v.data()};
   for (auto& model : models_)
-    model->add_forces(in, forces_.data(), store);
-  if (store && vertex_force_) {
+    model->clear_accumulated();
+  for (auto& model : models_)
+    model->add_forces(in, forces_.data(), true);
+  if (vertex_force_) {
     // Same orbit as position, so the same slots.
     std::vector<Vec3>& out = vertex_force_.values();
     std::copy(forces_.begin(), forces_.begin() + std::min(n, out.size()), out.begin());
   }
   if (!external_.empty()) {
-    // After vertex_force: criteria see internal forces only.
+    // After vertex_force: criteria see internal forces only. Kept apart for
+    // the external work.
     const ExternalInput ext{time_, x.data(), v.data(), vertex_mass_.values().data(), n};
-    if (store) {
-      // Kept apart for the external work.
-      external_forces_.assign(n, Vec3::Zero());
-      for (auto& e : external_)
-        e->add_forces(map_, ext, external_forces_.data());
-      for (std::size_t s = 0; s < n; ++s)
-        forces_[s] += external_forces_[s];
-    } else {
-      for (auto& e : external_)
-        e->add_forces(map_, ext, forces_.data());
-    }
+    external_forces_.assign(n, Vec3::Zero());
+    for (auto& e : external_)
+      e->add_forces(map_, ext, external_forces_.data());
+    for (std::size_t s = 0; s < n; ++s)
+      forces_[s] += external_forces_[s];
   }
-  a.resize(n);
-  const Vec3 g = settings_.gravity;
-  parallel_for(n, [&](std::size_t s) {
-    const Real w = inverse_mass_[s];
-    a[s] = w > 0 ? Vec3(forces_[s] * w + g) : Vec3::Zero();
-  });
 }
 
 void Simulation::add_stage_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
@@ -203,13 +196,14 @@ void Simulation::step() {
   std::vector<Vec3>& x = position_.values();
   std::vector<Vec3>& v = velocity_.values();
   // Forces at the current state are stored in their orbits (criteria read
-  // them) and reused as the integrator's first stage.
-  accelerations(x, v, a0_, true);
+  // them) and are the integrator's first stage.
+  start_forces(x, v);
   tears_last_step_ = criteria_.empty() ? 0 : apply_criteria();
-  if (tears_last_step_ > 0) accelerations(x, v, a0_, true);
+  if (tears_last_step_ > 0) start_forces(x, v);
   // Kept for the step's readers (divergence check, outputs, reactions, the
-  // implicit step): a swap, not a copy (24 MB at 10⁶ vertices); the next
-  // accelerations() refills forces_ whole.
+  // implicit step): a swap, not a copy (24 MB at 10⁶ vertices). forces_ is
+  // then free until the next step's start_forces(): the integrator's stage
+  // buffer, or the implicit step's start forces with gravity.
   start_forces_.swap(forces_);
   if (handles_) {
     handles_->reactions(position_.attachment(), time_, start_forces_, vertex_mass_.values(),
@@ -220,11 +214,12 @@ void Simulation::step() {
     implicit_step();
   } else {
     // The stages' forces only: the integrator turns them into accelerations
-    // in its own sweeps.
+    // in its own sweeps, and hands forces_ back zeroed.
     integrator_.step([this](const std::vector<Vec3>& xs, const std::vector<Vec3>& vs,
                             std::vector<Vec3>& f) { add_stage_forces(xs, vs, f); },
                      ForceToAcceleration{inverse_mass_.data(), settings_.gravity}, x, v,
-                     settings_.dt, a0_);
+                     settings_.dt, start_forces_, forces_);
+    forces_zero_ = true;
   }
   const Real t0 = time_;
   time_ += settings_.dt;
@@ -325,6 +320,15 @@ void Simulation::on_topology_changed(std::span<const Dart> touched) {
   if (implicit_) implicit_->topology_changed();
   bdf2_.restart();  // the slots' history no longer matches the map
   refresh_inverse_masses(region_);
+}
+
+std::size_t Simulation::per_vertex_bytes() const {
+  std::size_t bytes = integrator_.buffer_bytes() + inverse_mass_.capacity() * sizeof(Real) +
+                      is_free_.capacity() * sizeof(char);
+  for (const std::vector<Vec3>* a :
+       {&forces_, &start_forces_, &external_forces_, &x_before_, &target_v_})
+    bytes += a->capacity() * sizeof(Vec3);
+  return bytes;
 }
 
 Real Simulation::kinetic_energy() const {
