@@ -89,7 +89,22 @@ struct Kernel {
   std::set<std::pair<std::string, int>> reads;  // (embedding, slot) the forces depend on
   bool reads_state = false;                     // the body reads ForceInput (positions, velocities)
   lower::DerivativePlan derivative;             // Jacobians for implicit integrators
+  // Per slot: only a stored force or a `store` writes it and nothing reads it.
+  // Such slots are cached apart, in Stored, which an interaction that does not
+  // store does not keep (rift::CachedInteraction).
+  std::vector<bool> stored_only;
+  // Embeddings only those slots reach: bound only when the interaction stores,
+  // so that a scene that stores nothing leaves their orbit's attachment
+  // without slots (rift::GMap's dormant attachments).
+  std::set<std::string> store_only_embeddings;
 };
+
+/// Where the force pass finds slot s: the match's field or, for a slot only
+/// stores write, the field of its Stored `stored` (e.g. "ss[i]" or "s").
+std::string slot_at(const Kernel& k, int s, const std::string& stored) {
+  const auto i = static_cast<std::size_t>(s);
+  return (k.stored_only[i] ? stored + "." : std::string("m.")) + k.slots[i];
+}
 
 Kernel kernel_of(const InteractionPlan& plan) {
   Kernel k;
@@ -129,7 +144,46 @@ Kernel kernel_of(const InteractionPlan& plan) {
     scan_reads(s.cond);
   for (const ir::Force& f : b.forces)
     scan_reads(f.value);
+  const std::vector<lower::SlotUse>& uses = plan.kernel.slots;
+  k.stored_only.assign(uses.size(), false);
+  for (const ir::Force& f : b.forces)
+    k.stored_only[static_cast<std::size_t>(f.store_slot)] = true;
+  for (const ir::Store& st : b.stores)
+    k.stored_only[static_cast<std::size_t>(st.store_slot)] = true;
+  for (std::size_t s = 0; s < uses.size(); ++s)
+    if (uses[s].vertex) k.stored_only[s] = false;
+  for (const ir::Force& f : b.forces)
+    k.stored_only[static_cast<std::size_t>(f.vertex_slot)] = false;
+  for (int s : k.derivative.vertex_slots)
+    k.stored_only[static_cast<std::size_t>(s)] = false;
+  // Any read through a slot keeps it in the match (every node of the body,
+  // whether or not a root reaches it: the conservative choice).
+  for (std::size_t i = 0; i < b.graph.size(); ++i) {
+    const ir::Node& n = b.graph[static_cast<ir::ExprId>(i)];
+    if (n.place.slot >= 0 && static_cast<std::size_t>(n.place.slot) < uses.size())
+      k.stored_only[static_cast<std::size_t>(n.place.slot)] = false;
+  }
+  std::set<std::string> written;
+  for (const ir::Force& f : b.forces)
+    written.insert(f.embedding);
+  for (const ir::Store& st : b.stores)
+    written.insert(st.embedding);
+  std::set<std::string> kept = k.columns;  // read by the body
+  for (const lower::InitPlan& init : plan.inits) {
+    kept.insert(init.embedding);
+    ir::visit(b.graph, init.value, [&](const ir::Node& n) {
+      if (n.op == ir::Op::Read || n.op == ir::Op::Fold) kept.insert(n.embedding);
+    });
+  }
+  for (std::size_t s = 0; s < uses.size(); ++s)
+    if (!k.stored_only[s]) kept.insert(uses[s].via);
+  for (const std::string& e : written)
+    if (!kept.contains(e) && plan.embeddings.contains(e)) k.store_only_embeddings.insert(e);
   return k;
+}
+
+bool has_stored_slots(const Kernel& k) {
+  return std::find(k.stored_only.begin(), k.stored_only.end(), true) != k.stored_only.end();
 }
 
 /// Words of a group key: one per vertex slot, then the values read.
@@ -239,7 +293,9 @@ void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
   w.open("void " + k.cls + "::initialise(rift::GMap& g) {");
   w.line(model.pack_namespace + "::declare_embeddings(g);");
   for (const std::string& name : plan.embeddings) {
-    w.line(embedding_var(name) + " = require_embedding<" + embedding_storage(model, name) +
+    // Asking for a column wakes its orbit's attachment: not when nothing is stored.
+    w.line(std::string(k.store_only_embeddings.contains(name) ? "if (store_) " : "") +
+           embedding_var(name) + " = require_embedding<" + embedding_storage(model, name) +
            ">(g, " + quote(name) + ", " + quote(user) + ");");
   }
   if (k.inter->tagged) {
@@ -292,15 +348,23 @@ void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
 
 void write_match(Writer& w, const Kernel& k) {
   const lower::KernelPlan& plan = k.plan->kernel;
-  w.open("bool " + k.cls + "::match(const rift::GMap& g, rift::Dart support, Match& m) const {");
+  w.open("bool " + k.cls + "::match(const rift::GMap& g, rift::Dart support, Match& m, " +
+         (has_stored_slots(k) ? "Stored* s" : "Stored* /*s*/") + ") const {");
   w.line("rift::Dart darts[" + std::to_string(plan.nodes.size()) + "];");
   w.line("if (!find(g, support, darts)) return false;");
-  for (std::size_t s = 0; s < plan.slots.size(); ++s) {
-    const lower::SlotUse& u = plan.slots[s];
-    std::string d = std::string("darts[") + std::to_string(u.node) + "]";
-    for (int h : u.hops)
-      d = std::string("g.alpha(") + d + ", " + std::to_string(h) + ")";
-    w.line("m." + k.slots[s] + " = " + embedding_var(u.via) + ".slot(" + d + ");");
+  for (int pass = 0; pass < 2; ++pass) {
+    // The match's slots, then (only when asked) those stores alone write.
+    if (pass == 1 && has_stored_slots(k)) w.open("if (s) {");
+    for (std::size_t s = 0; s < plan.slots.size(); ++s) {
+      if (k.stored_only[s] != (pass == 1)) continue;
+      const lower::SlotUse& u = plan.slots[s];
+      std::string d = std::string("darts[") + std::to_string(u.node) + "]";
+      for (int h : u.hops)
+        d = std::string("g.alpha(") + d + ", " + std::to_string(h) + ")";
+      w.line((pass == 1 ? "s->" : "m.") + k.slots[s] + " = " + embedding_var(u.via) + ".slot(" + d +
+             ");");
+    }
+    if (pass == 1 && has_stored_slots(k)) w.close();
   }
   w.line("return true;");
   w.close();
@@ -423,8 +487,9 @@ void write_add_forces_all(Writer& w, const Kernel& k) {
   const ir::Body& b = k.plan->body;
   const bool forces = !b.forces.empty();
   const bool stores_values = !b.stores.empty();
-  w.open("void " + k.cls +
-         "::add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, " +
+  w.open("void " + k.cls + "::add_forces_all(std::span<const Match> ms, " +
+         (has_stored_slots(k) ? "const Stored* ss" : "const Stored* /*ss*/") +
+         ", const rift::ForceInput& in, " +
          (forces          ? "rift::Vec3* f, bool store"
           : stores_values ? "rift::Vec3* /*f*/, bool store"
                           : "rift::Vec3* /*f*/, bool /*store*/") +
@@ -445,8 +510,7 @@ void write_add_forces_all(Writer& w, const Kernel& k) {
     w.line("auto* const stored_" + e + " = store ? " + embedding_var(e) +
            ".values().data() : nullptr;");
   auto store_at = [&](const ir::Store& st) {
-    return "stored_" + st.embedding + "[m." + k.slots[static_cast<std::size_t>(st.store_slot)] +
-           "]";
+    return "stored_" + st.embedding + "[" + slot_at(k, st.store_slot, "ss[i]") + "]";
   };
   // With stored values, one loop per kind of evaluation (storing or not),
   // each with its own instantiation of the body: the integrator's other
@@ -455,14 +519,15 @@ void write_add_forces_all(Writer& w, const Kernel& k) {
   // Not inlined: two instantiations of the body in one function exceed the
   // inliner's growth limits, and the matrix products of both would be calls.
   if (stores_values) w.open("auto pass = [&]<bool kStore>() __attribute__((noinline)) {");
-  w.open("for (const Match& m : ms) {");
+  w.open("for (std::size_t i = 0; i < ms.size(); ++i) {");
+  w.line("const Match& m = ms[i];");
   w.line("Result r;");
   if (forces || stores_values) {
     w.open(stores_values ? "if (!evaluate<true, kStore>(m, in, c, r)) {"
                          : "if (!evaluate<true>(m, in, c, r)) {");
     w.open(if_store + "{");
     for (const ir::Force& f : b.forces) {
-      w.line("stored_" + f.embedding + "[m." + k.slots[static_cast<std::size_t>(f.store_slot)] +
+      w.line("stored_" + f.embedding + "[" + slot_at(k, f.store_slot, "ss[i]") +
              "] = rift::Vec3::Zero();");
     }
     for (const ir::Store& st : b.stores) {
@@ -476,8 +541,8 @@ void write_add_forces_all(Writer& w, const Kernel& k) {
     for (const ir::Force& f : b.forces) {
       const std::string field = std::string("r.") + force_field(b, f);
       w.line("f[m." + k.slots[static_cast<std::size_t>(f.vertex_slot)] + "] += " + field + ";");
-      w.line(if_store + "stored_" + f.embedding + "[m." +
-             k.slots[static_cast<std::size_t>(f.store_slot)] + "] = " + field + ";");
+      w.line(if_store + "stored_" + f.embedding + "[" + slot_at(k, f.store_slot, "ss[i]") +
+             "] = " + field + ";");
     }
     if (stores_values) {
       w.open(if_store + "{");
@@ -775,12 +840,13 @@ void write_group_passes(Writer& w, const Kernel& k) {
   w.line("return true;");
   w.close();
   w.line();
-  w.open("void " + k.cls + "::store_terms(const Match& m, const rift::Vec3* terms) {");
+  w.open("void " + k.cls +
+         "::store_terms([[maybe_unused]] const Match& m, [[maybe_unused]] const Stored& s, const "
+         "rift::Vec3* terms) {");
   for (std::size_t i = 0; i < b.forces.size(); ++i) {
     const ir::Force& f = b.forces[i];
-    w.line(embedding_var(f.embedding) + ".values()[m." +
-           k.slots[static_cast<std::size_t>(f.store_slot)] + "] = terms[" + std::to_string(i) +
-           "];");
+    w.line(embedding_var(f.embedding) + ".values()[" + slot_at(k, f.store_slot, "s") +
+           "] = terms[" + std::to_string(i) + "];");
   }
   w.close();
   w.line();
@@ -815,17 +881,17 @@ void write_group_passes(Writer& w, const Kernel& k) {
 
 void write_reset(Writer& w, const Kernel& k) {
   const ir::Body& b = k.plan->body;
-  w.open("void " + k.cls + "::reset_stored(" +
-         (b.forces.empty() && b.stores.empty() ? "const Match& /*m*/" : "const Match& m") + ") {");
+  w.open("void " + k.cls +
+         "::reset_stored([[maybe_unused]] const Match& m, [[maybe_unused]] const Stored& s) {");
   for (const ir::Force& f : b.forces) {
     const std::string col = embedding_var(f.embedding) + ".values()";
-    const std::string at = std::string("m.") + k.slots[static_cast<std::size_t>(f.store_slot)];
+    const std::string at = slot_at(k, f.store_slot, "s");
     w.line("if (" + at + " < " + col + ".size()) " + col + "[" + at + "] = rift::Vec3::Zero();");
   }
   for (const ir::Store& st : b.stores) {
     if (st.accumulate) continue;  // per vertex: reset_accumulated, by region
     const std::string col = embedding_var(st.embedding) + ".values()";
-    const std::string at = std::string("m.") + k.slots[static_cast<std::size_t>(st.store_slot)];
+    const std::string at = slot_at(k, st.store_slot, "s");
     w.line("if (" + at + " < " + col + ".size()) " + col + "[" + at +
            "] = " + embedding_var(st.embedding) + ".default_value();");
   }
@@ -894,14 +960,23 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
   w.open("class " + k.cls + " {");
   w.middle(" public:");
   w.line("/// The slots a match caches (trivially copyable, fixed size).");
-  w.open("struct Match {");
-  for (std::size_t s = 0; s < plan.kernel.slots.size(); ++s) {
-    const lower::SlotUse& u = plan.kernel.slots[s];
-    w.line("rift::Slot " + k.slots[s] + " = rift::kNoSlot;  // " +
-           (u.vertex ? std::string("vertex") : orbit_text(u.orbit)) + " of " +
-           path_text(plan.kernel.nodes[static_cast<std::size_t>(u.node)], u.hops));
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 0) {
+      w.open("struct Match {");
+    } else {
+      w.line("/// The slots only stored forces and `store`s write: cached only when the");
+      w.line("/// interaction stores (rift::CachedInteraction), beside the matches.");
+      w.open("struct Stored {");
+    }
+    for (std::size_t s = 0; s < plan.kernel.slots.size(); ++s) {
+      if (k.stored_only[s] != (pass == 1)) continue;
+      const lower::SlotUse& u = plan.kernel.slots[s];
+      w.line("rift::Slot " + k.slots[s] + " = rift::kNoSlot;  // " +
+             (u.vertex ? std::string("vertex") : orbit_text(u.orbit)) + " of " +
+             path_text(plan.kernel.nodes[static_cast<std::size_t>(u.node)], u.hops));
+    }
+    w.close("};");
   }
-  w.close("};");
   w.line("static constexpr rift::Orbit kSupport = " + orbit_code(inter.support.dims) + ";");
   w.line("/// Links from the support dart to the farthest dart a match reads.");
   w.line("static constexpr int kRadius = " + std::to_string(plan.kernel.radius) + ";");
@@ -915,16 +990,25 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
          std::string(inter.tagged ? ", tags the first dart of every support orbit" : "") +
          " and runs the interaction's inits.");
   w.line("void initialise(rift::GMap& g);");
-  w.line("bool match(const rift::GMap& g, rift::Dart support, Match& m) const;");
+  if (!k.store_only_embeddings.empty()) {
+    w.line("/// Before initialise: false when nothing reads the stored forces, whose");
+    w.line("/// embeddings are then left unbound.");
+    w.line("void set_store_forces(bool on) { store_ = on; }");
+  }
+  w.line("/// Fills s too unless it is null.");
+  w.line(
+      "bool match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s = nullptr) "
+      "const;");
   if (chooses_support_dart(k)) {
     w.line("/// The dart of d's support orbit to match from: the one binding the smallest vertex");
     w.line("/// slots first (the inits use it, and so does the simulator for a new orbit).");
     w.line("rift::Dart support_dart(const rift::GMap& g, rift::Dart d) const;");
   }
-  w.line("/// The force pass over every match: adds each force to f (and stores it when `store`).");
+  w.line("/// The force pass over every match: adds each force to f (and stores it when `store`,");
+  w.line("/// at the slots of ss[i], parallel to ms).");
   w.line(
-      "void add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, "
-      "bool store);");
+      "void add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& "
+      "in, rift::Vec3* f, bool store);");
   if (!b.forces.empty()) {
     w.line(
         "/// The vertex slots of a match's kForceTerms forces, in the order add_forces_all adds");
@@ -942,14 +1026,14 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
         "bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) "
         "const;");
     w.line("/// Stores forces computed by evaluate_terms into m's stored-force slots.");
-    w.line("void store_terms(const Match& m, const rift::Vec3* terms);");
+    w.line("void store_terms(const Match& m, const Stored& s, const rift::Vec3* terms);");
     w.line("/// The force pass over groups: adds counts[i] times the forces of reps[i];");
     w.line("/// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.");
     w.line(
         "void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const "
         "rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);");
   }
-  w.line("void reset_stored(const Match& m);");
+  w.line("void reset_stored(const Match& m, const Stored& s);");
   if (accumulates(k.plan->body)) {
     w.line("/// The per-vertex sums of `store +=` (rift/sim/cached_interaction.hpp).");
     w.line("void clear_accumulated();");
@@ -1019,6 +1103,7 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
     w.line("rift::Embedding<" + embedding_storage(model, name) + "> " + embedding_var(name) + ";");
   }
   if (inter.tagged) w.line("rift::Embedding<rift::Bool> tag_;");
+  if (!k.store_only_embeddings.empty()) w.line("bool store_ = true;");
   w.close("};");
   w.line("using " + interaction_class(inter.name.text) + " = rift::CachedInteraction<" + k.cls +
          ">;");

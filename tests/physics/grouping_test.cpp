@@ -182,20 +182,23 @@ TEST(Grouping, StoredAtomicForcesAreEachMembersOwn) {
   for (const auto& model : sim->force_models()) {
     if (auto* s = dynamic_cast<Stretch2d*>(model.get())) {
       ASSERT_TRUE(s->grouped());
-      for (const auto& m : s->cache().matches()) {
+      // The stored-force slots are kept beside the matches (Stored).
+      ASSERT_EQ(s->stored().size(), s->cache().size());
+      for (std::size_t e = 0; e < s->cache().size(); ++e) {
         Vec3 t[2];
-        s->kernel().evaluate_terms(m, in, t);
-        ASSERT_EQ(stretch.values()[m.dart_a], t[0]);
-        ASSERT_EQ(stretch.values()[m.dart_b], t[1]);
+        s->kernel().evaluate_terms(s->cache().matches()[e], in, t);
+        ASSERT_EQ(stretch.values()[s->stored()[e].dart_a], t[0]);
+        ASSERT_EQ(stretch.values()[s->stored()[e].dart_b], t[1]);
         ++checked;
       }
     }
     if (auto* b = dynamic_cast<Bend2d*>(model.get())) {
-      for (const auto& m : b->cache().matches()) {
+      ASSERT_EQ(b->stored().size(), b->cache().size());
+      for (std::size_t e = 0; e < b->cache().size(); ++e) {
         Vec3 t[2];
-        b->kernel().evaluate_terms(m, in, t);
-        ASSERT_EQ(bend.values()[m.dart_l], t[0]);
-        ASSERT_EQ(bend.values()[m.dart_r], t[1]);
+        b->kernel().evaluate_terms(b->cache().matches()[e], in, t);
+        ASSERT_EQ(bend.values()[b->stored()[e].dart_l], t[0]);
+        ASSERT_EQ(bend.values()[b->stored()[e].dart_r], t[1]);
         ++checked;
       }
     }

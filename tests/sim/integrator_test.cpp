@@ -102,6 +102,12 @@ struct HangingSpring {
     };
   }
   ForceToAcceleration to_a() const { return {inverse_mass.data(), Vec3(g, 0, 0)}; }
+  // The forces at x, into a zeroed array (the loop's start forces).
+  std::vector<Vec3> start_forces(const std::vector<Vec3>& x) const {
+    std::vector<Vec3> f(x.size(), Vec3::Zero());
+    forces()(x, x, f);
+    return f;
+  }
   // a(x, v) as Simulation forms it: w f + g where w > 0, else 0.
   std::vector<Vec3> accelerations(const std::vector<Vec3>& x) const {
     std::vector<Vec3> f(x.size(), Vec3::Zero()), a(x.size());
@@ -119,10 +125,10 @@ struct HangingSpring {
 Real force_step_error(Real dt, Real duration) {
   const HangingSpring spring;
   Integrator rk4(IntegratorKind::kRK4);
-  std::vector<Vec3> x{Vec3(1, 0, 0), Vec3(0.5, 0.25, 0)}, v(2, Vec3::Zero());
+  std::vector<Vec3> x{Vec3(1, 0, 0), Vec3(0.5, 0.25, 0)}, v(2, Vec3::Zero()), f;
   const int steps = static_cast<int>(std::lround(duration / dt));
   for (int s = 0; s < steps; ++s)
-    rk4.step(spring.forces(), spring.to_a(), x, v, dt, spring.accelerations(x));
+    rk4.step(spring.forces(), spring.to_a(), x, v, dt, spring.start_forces(x), f);
   // The pinned vertex never moves, whatever its force.
   EXPECT_EQ(x[1], Vec3(0.5, 0.25, 0));
   EXPECT_EQ(v[1], Vec3::Zero());
@@ -142,18 +148,80 @@ TEST(Integrators, Rk4FromForcesGivesTheBitsOfRk4FromAccelerations) {
   const HangingSpring spring;
   const std::vector<Vec3> x0{Vec3(1, 0.1, -0.2), Vec3(0.5, 0.25, 0)};
   const std::vector<Vec3> v0{Vec3(0.3, -0.7, 0.1), Vec3::Zero()};
-  std::vector<Vec3> xf = x0, vf = v0, xa = x0, va = v0;
+  std::vector<Vec3> xf = x0, vf = v0, xa = x0, va = v0, f;
   Integrator from_forces(IntegratorKind::kRK4), from_accelerations(IntegratorKind::kRK4);
   const AccelerationFn accel = [&](const std::vector<Vec3>& x, const std::vector<Vec3>&,
                                    std::vector<Vec3>& a) { a = spring.accelerations(x); };
   for (int s = 0; s < 100; ++s) {
-    from_forces.step(spring.forces(), spring.to_a(), xf, vf, 0.03, spring.accelerations(xf));
+    from_forces.step(spring.forces(), spring.to_a(), xf, vf, 0.03, spring.start_forces(xf), f);
     from_accelerations.step(accel, xa, va, 0.03);
   }
   EXPECT_NE(xf[0], x0[0]);
   for (std::size_t i = 0; i < x0.size(); ++i) {
     EXPECT_EQ(xf[i], xa[i]) << i;
     EXPECT_EQ(vf[i], va[i]) << i;
+  }
+}
+
+TEST(Integrators, Rk4FromForcesSumsTheStagesInTheClassicalOrder) {
+  // The textbook step written out, stage by stage, with the summation order
+  // the integrator promises: x += ((dt/6 v1 + dt/3 v2) + dt/3 v3) + dt/6 v4,
+  // v likewise with the accelerations. Its sweeps defer and fuse the sums;
+  // the bits must not move.
+  const HangingSpring spring;
+  const Real dt = 0.03, h = dt / 2, w1 = dt / 6, w2 = dt / 3;
+  std::vector<Vec3> x{Vec3(1, 0.1, -0.2), Vec3(0.5, 0.25, 0)};
+  std::vector<Vec3> v{Vec3(0.3, -0.7, 0.1), Vec3::Zero()};
+  std::vector<Vec3> xr = x, vr = v;
+  Integrator rk4(IntegratorKind::kRK4);
+  std::vector<Vec3> f;
+  for (int s = 0; s < 50; ++s) {
+    rk4.step(spring.forces(), spring.to_a(), x, v, dt, spring.start_forces(x), f);
+    for (const Vec3& fi : f)
+      EXPECT_EQ(fi, Vec3::Zero());  // handed back zeroed for the next force pass
+    const std::size_t n = xr.size();
+    std::vector<Vec3> x2(n), v2(n), x3(n), v3(n), x4(n), v4(n);
+    const std::vector<Vec3> a1 = spring.accelerations(xr);
+    for (std::size_t i = 0; i < n; ++i)
+      x2[i] = xr[i] + h * vr[i], v2[i] = vr[i] + h * a1[i];
+    const std::vector<Vec3> a2 = spring.accelerations(x2);
+    for (std::size_t i = 0; i < n; ++i)
+      x3[i] = xr[i] + h * v2[i], v3[i] = vr[i] + h * a2[i];
+    const std::vector<Vec3> a3 = spring.accelerations(x3);
+    for (std::size_t i = 0; i < n; ++i)
+      x4[i] = xr[i] + dt * v3[i], v4[i] = vr[i] + dt * a3[i];
+    const std::vector<Vec3> a4 = spring.accelerations(x4);
+    for (std::size_t i = 0; i < n; ++i) {
+      Vec3 sx = w1 * vr[i], sv = w1 * a1[i];
+      sx += w2 * v2[i], sv += w2 * a2[i];
+      sx += w2 * v3[i], sv += w2 * a3[i];
+      xr[i] += sx + w1 * v4[i];
+      vr[i] += sv + w1 * a4[i];
+    }
+  }
+  EXPECT_NE(x[0], Vec3(1, 0.1, -0.2));
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    EXPECT_EQ(x[i], xr[i]) << i;
+    EXPECT_EQ(v[i], vr[i]) << i;
+  }
+}
+
+TEST(Integrators, FromForcesAnIntegratorHoldsOnlyTheArraysItsKindNeeds) {
+  // RK4: the next stage (x, v) and the two running sums, four vec3 arrays a
+  // vertex; the stage forces are the caller's buffer, the start forces and
+  // accelerations no array at all. The first-order kinds: nothing. The
+  // caller's buffer comes back of the state's length and zero, whatever it
+  // held.
+  const HangingSpring spring;
+  for (IntegratorKind kind :
+       {IntegratorKind::kRK4, IntegratorKind::kExplicitEuler, IntegratorKind::kSymplecticEuler}) {
+    Integrator integrator(kind);
+    std::vector<Vec3> x{Vec3(1, 0, 0), Vec3(0.5, 0.25, 0)}, v(2, Vec3::Zero());
+    std::vector<Vec3> f(5, Vec3::Constant(7));
+    integrator.step(spring.forces(), spring.to_a(), x, v, 0.01, spring.start_forces(x), f);
+    EXPECT_EQ(f, std::vector<Vec3>(2, Vec3::Zero())) << to_string(kind);
+    const std::size_t per_vertex = kind == IntegratorKind::kRK4 ? 4 * sizeof(Vec3) : 0;
+    EXPECT_EQ(integrator.buffer_bytes(), 2 * per_vertex) << to_string(kind);
   }
 }
 

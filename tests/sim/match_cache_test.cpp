@@ -202,6 +202,72 @@ TEST(MatchCache, TheScatterColouringFollowsLocalRematches) {
     EXPECT_LE((plain[i] - one[i]).norm(), 1e-12 * (1 + plain[i].norm())) << i;
 }
 
+// A cache indexes its owners by dart only at its first rematch (a scene that
+// never tears never pays for the index). That index, made from the owners
+// after the build, must be the one the build itself would have made: through
+// the same tears and sews, a cache indexed at its build and one indexed at its
+// first rematch hold the same matches, with the same owners, in the same order.
+TEST(MatchCache, AnOwnerIndexMadeAtTheFirstTearEqualsOneMadeAtTheBuild) {
+  GMap map = assemble_gmap(make_generated_mesh("grid:quad:8x8"));
+  Hinge hinge;
+  hinge.initialise(map);
+  auto match = [&](const GMap& m, Dart x, HingeKernel::Match& out) {
+    return hinge.kernel().match(m, x, out);
+  };
+  auto lost = [](const HingeKernel::Match&, bool) {};
+  MatchCache<HingeKernel::Match> eager, lazy;
+  eager.build(map, Orbit{2}, match);
+  eager.index_owners(map);
+  lazy.build(map, Orbit{2}, match);
+  EXPECT_TRUE(eager.indexes_owners());
+  EXPECT_FALSE(lazy.indexes_owners());
+  EXPECT_FALSE(hinge.cache().indexes_owners()) << "an interaction's cache is indexed at set-up";
+  auto same = [&](int step) {
+    ASSERT_EQ(lazy.size(), eager.size()) << "step " << step;
+    for (std::size_t e = 0; e < eager.size(); ++e) {
+      ASSERT_EQ(lazy.owners()[e], eager.owners()[e]) << "step " << step << " entry " << e;
+      ASSERT_EQ(std::memcmp(&lazy.matches()[e], &eager.matches()[e], sizeof(HingeKernel::Match)), 0)
+          << "step " << step << " entry " << e;
+    }
+  };
+  same(-1);
+  std::mt19937 rng(23);
+  std::uniform_int_distribution<Dart> pick(0, static_cast<Dart>(map.capacity() - 1));
+  std::vector<std::pair<Dart, Dart>> undone;
+  int rematches = 0;
+  for (int step = 0; step < 150; ++step) {
+    std::vector<Dart> touched;
+    if (step % 3 == 2 && !undone.empty()) {
+      const auto [a, b] = undone.back();
+      undone.pop_back();
+      if (!map.sew(a, b, 2)) continue;
+      map.for_each_in_orbit(a, Orbit::sewing(2, 2), [&](Dart x) {
+        touched.push_back(x);
+        touched.push_back(map.alpha(x, 2));
+      });
+    } else {
+      const Dart d = pick(rng);
+      if (map.is_free(d, 2)) continue;
+      undone.emplace_back(d, map.alpha(d, 2));
+      map.for_each_in_orbit(d, Orbit::sewing(2, 2), [&](Dart x) {
+        touched.push_back(x);
+        touched.push_back(map.alpha(x, 2));
+      });
+      map.unsew(d, 2);
+    }
+    std::vector<Dart> region;
+    for (Dart t : touched)
+      map.for_each_in_orbit(t, Orbit::cell(0, 2), [&](Dart x) { region.push_back(x); });
+    eager.rematch(map, Orbit{2}, HingeKernel::kRadius, region, match, lost);
+    lazy.rematch(map, Orbit{2}, HingeKernel::kRadius, region, match, lost);
+    ++rematches;
+    EXPECT_TRUE(lazy.indexes_owners());
+    same(step);
+  }
+  EXPECT_GT(rematches, 50);
+  EXPECT_NE(lazy.size(), 0u);
+}
+
 TEST(MatchCache, LostMatchesResetTheirStoredForces) {
   GMap map = assemble_gmap(make_grid(GridKind::Quad, 2, 1));
   Hinge hinge;

@@ -83,6 +83,62 @@ TEST(Simulation, UndampedSpringsConserveEnergyWithRk4) {
   EXPECT_NEAR(e1, e0, 1e-6 * e0);
 }
 
+TEST(Simulation, ALoopHoldsOnlyThePerVertexArraysItsScenesIntegratorNeeds) {
+  // Counted by hand (docs/architecture.md, "The step's arrays"): every
+  // explicit loop holds the forces (the stage buffer between steps), the
+  // start forces and the inverse masses; RK4 adds its four stage arrays
+  // (next stage x and v, two running sums); no acceleration array, no copy
+  // of the positions without loads or handles.
+  for (IntegratorKind kind : {IntegratorKind::kRK4, IntegratorKind::kSymplecticEuler}) {
+    Simulation sim = make_cloth(kind, Vec3(0, 0, -9.81), 0.1);
+    sim.initialise();
+    for (int s = 0; s < 3; ++s)
+      sim.step();
+    const std::size_t n = sim.position().values().size();
+    ASSERT_EQ(n, 25u);
+    const std::size_t vec3_arrays = kind == IntegratorKind::kRK4 ? 6 : 2;
+    EXPECT_EQ(sim.per_vertex_bytes(), n * (vec3_arrays * sizeof(Vec3) + sizeof(Real)))
+        << to_string(kind);
+  }
+}
+
+// The cloth of make_cloth with its top row (y = 1) on one handle moving at
+// `velocity`.
+Simulation make_cloth_on_a_handle(const Vec3& velocity) {
+  Simulation sim = make_cloth(IntegratorKind::kRK4, Vec3(0, 0, -9.81), 0.1);
+  auto handles = std::make_unique<Handles>(sim.map());
+  HandleMotion motion;
+  motion.velocity = velocity;
+  const int h = handles->add(motion);
+  sim.map().for_each_cell(Orbit{1, 2}, [&](Dart d) {
+    if (sim.position()[d].y() > 0.99) handles->hold(d, h, sim.position()[d]);
+  });
+  sim.set_handles(std::move(handles));
+  sim.initialise();
+  return sim;
+}
+
+TEST(Simulation, AHandlesWorkIsItsReactionAlongItsMotion) {
+  // Every held vertex moves by velocity · dt in a step, so the work of the
+  // handle in a step is its reaction at the step's start (what
+  // handle_reactions() reports) along velocity · dt. The loop sums it over
+  // the held vertices alone; a sum over every slot gives the same.
+  const Vec3 velocity(0.2, 0, 0.1);
+  Simulation sim = make_cloth_on_a_handle(velocity);
+  ASSERT_EQ(sim.handles()->held_slots(sim.position().attachment()).size(), 5u);
+  Real expected = 0;
+  for (int s = 0; s < 200; ++s) {
+    sim.step();
+    ASSERT_EQ(sim.handle_reactions().size(), 1u);
+    expected += sim.handle_reactions()[0].dot(velocity * sim.settings().dt);
+  }
+  EXPECT_GT(std::abs(expected), 1e-6);
+  EXPECT_NEAR(sim.external_work(), expected, 1e-9 * std::abs(expected));
+  // The loop keeps the held vertices' start positions, not every vertex's.
+  const std::size_t n = sim.position().values().size();
+  EXPECT_EQ(sim.per_vertex_bytes(), n * (6 * sizeof(Vec3) + sizeof(Real)) + 5 * sizeof(Vec3));
+}
+
 TEST(Simulation, RejectsNonPositiveSettings) {
   EXPECT_THROW(Simulation(assemble_gmap(make_grid(GridKind::Quad, 1, 1)),
                           {IntegratorKind::kRK4, 0.0, Vec3::Zero()}),

@@ -58,12 +58,29 @@
 // keeps it for good (MatchCache keeps owners), so a match and its stored
 // forces never move to another dart because slots were renumbered.
 // (`SimulationSettings::group_interactions` turns grouping off, to compare.)
+//
+// A kernel may keep the slots only its stored forces are written at apart
+// from the match (riftc does), in a trivially copyable `Stored`:
+//
+//   bool match(const GMap&, Dart, Match&, Stored* s) const;  // fills *s unless null
+//   void add_forces_all(std::span<const Match>, const Stored* ss, const ForceInput&,
+//                       Vec3* f, bool store);                 // ss parallel to the matches
+//   void store_terms(const Match&, const Stored&, const Vec3* terms);
+//   void reset_stored(const Match&, const Stored&);
+//   void set_store_forces(bool);                              // optional, before initialise
+//
+// The Stored of each match are then kept, parallel to the cache, only when
+// the interaction stores (set_store_forces): a stretch spring that stores
+// nothing caches 3 slots instead of 5, and its stored-force embedding stays
+// unbound (its orbit's attachment may keep no slots at all).
 #pragma once
 
 #include <algorithm>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "rift/core/interrupt.hpp"
 #include "rift/core/parallel.hpp"
@@ -73,6 +90,21 @@
 #include "rift/sim/scatter_colouring.hpp"
 
 namespace rift {
+
+namespace detail {
+/// The Stored of a kernel that has none (its stored slots are in Match).
+struct NoStored {};
+template <class Kernel>
+auto stored_of() {
+  if constexpr (requires { typename Kernel::Stored; }) {
+    return typename Kernel::Stored{};
+  } else {
+    return NoStored{};
+  }
+}
+template <class Kernel>
+using StoredOf = decltype(stored_of<Kernel>());
+}  // namespace detail
 
 template <class Kernel>
 class CachedInteraction final : public ForceModel {
@@ -84,14 +116,22 @@ class CachedInteraction final : public ForceModel {
   Kernel& kernel() { return kernel_; }
 
   void initialise(GMap& map) override {
+    if constexpr (requires(Kernel & k) { k.set_store_forces(true); }) {
+      kernel_.set_store_forces(store_forces_);
+    }
     kernel_.initialise(map);
     if constexpr (kGroupable) {
       grouped_ = group_requested_ && Kernel::kGroupKey <= MatchGroups<Match>::kMaxKey;
     }
+    stored_ = {};
+    if (keeps_stored()) reserve_huge(stored_, map.capacity());
+    // The cache inserts exactly the matches this returns true for, in order.
     cache_.build(
         map, Kernel::kSupport,
         [&](const GMap& m, Dart d, typename Kernel::Match& out) {
-          return kernel_.match(m, d, out);
+          if (!match_one(m, d, out)) return false;
+          if (keeps_stored()) stored_.push_back(pending_);
+          return true;
         },
         support_chooser());
     if constexpr (kGroupable) {
@@ -121,27 +161,31 @@ class CachedInteraction final : public ForceModel {
     if constexpr (kAccumulates) {
       if (store_forces_) kernel_.reset_accumulated(map, region);
     }
+    // The Stored of the last match is in pending_ until the cache tells
+    // the observer what became of it (StoredObserver).
     auto match = [&](const GMap& m, Dart d, typename Kernel::Match& out) {
-      return kernel_.match(m, d, out);
+      return match_one(m, d, out);
     };
+    // The cache hands lost matches over in place: their entry is their
+    // index in matches().
     auto lost = [&](const typename Kernel::Match& m, bool alive) {
-      if (alive && store_forces_) kernel_.reset_stored(m);
+      if (alive && store_forces_) reset_one(m, stored_entry(entry_of(m)));
     };
     if constexpr (kGroupable) {
       if (grouped_) {
-        GroupsObserver observer{*this};
+        StoredObserver<GroupsObserver> observer{*this, GroupsObserver{*this}};
         cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost, observer,
                        support_chooser());
         return;
       }
     }
     if constexpr (kColoured) {
-      ColouringObserver observer{kernel_, colouring_};
+      StoredObserver<ColouringObserver> observer{*this, ColouringObserver{kernel_, colouring_}};
       cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost, observer,
                      support_chooser());
     } else {
-      typename MatchCache<Match>::NoObserver none;
-      cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost, none,
+      StoredObserver<typename MatchCache<Match>::NoObserver> observer{*this, {}};
+      cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost, observer,
                      support_chooser());
     }
   }
@@ -170,6 +214,7 @@ class CachedInteraction final : public ForceModel {
   /// Before initialise: evaluate identical matches once (the default) or
   /// every match on its own.
   void set_grouping(bool on) override { group_requested_ = on; }
+  /// Before initialise (which binds the stored embeddings or not).
   void set_store_forces(bool on) override { store_forces_ = on; }
   bool stores_forces() const { return store_forces_; }
   /// True when this interaction's force pass runs over groups.
@@ -251,6 +296,11 @@ class CachedInteraction final : public ForceModel {
     }
   }
   const MatchCache<typename Kernel::Match>& cache() const { return cache_; }
+  /// The Stored of each match, parallel to cache().matches(); empty when the
+  /// interaction does not store or its kernel keeps no such slots apart.
+  std::span<const detail::StoredOf<Kernel>> stored() const { return stored_; }
+  /// True when stored() holds each match's Stored.
+  bool keeps_stored_slots() const { return keeps_stored(); }
   const ScatterColouring& colouring() const { return colouring_; }
   /// Matches per block of the coloured scatter; before initialise (tests
   /// use small blocks to have many).
@@ -258,13 +308,65 @@ class CachedInteraction final : public ForceModel {
 
  private:
   using Match = typename Kernel::Match;
-  static constexpr bool kColoured =
-      requires(Kernel & k, const Match& m, Slot* out, std::span<const Match> ms,
-               const ForceInput& in, Vec3* f) {
+  using Stored = detail::StoredOf<Kernel>;
+  /// The kernel keeps the slots only stores write apart, in its Stored.
+  static constexpr bool kSplitsStored = requires { typename Kernel::Stored; };
+  /// ... and has some: they are kept beside the matches when storing.
+  static constexpr bool kKeepsStored = kSplitsStored && !std::is_empty_v<Stored>;
+  static constexpr bool kHasPass =
+      requires(Kernel & k, std::span<const Match> ms, const ForceInput& in, Vec3* f) {
+    k.add_forces_all(ms, in, f, true);
+  }
+  || requires(Kernel& k, std::span<const Match> ms, const Stored* ss, const ForceInput& in,
+              Vec3* f) {
+    k.add_forces_all(ms, ss, in, f, true);
+  };
+  static constexpr bool kColoured = kHasPass && requires(Kernel & k, const Match& m, Slot* out) {
     Kernel::kForceTerms;
     k.force_targets(m, out);
-    k.add_forces_all(ms, in, f, true);
   };
+
+  bool keeps_stored() const { return kKeepsStored && store_forces_; }
+
+  // The kernel's calls, with or without a Stored.
+  bool match_one(const GMap& map, Dart d, Match& out) {
+    if constexpr (kSplitsStored) {
+      return kernel_.match(map, d, out, keeps_stored() ? &pending_ : nullptr);
+    } else {
+      return kernel_.match(map, d, out);
+    }
+  }
+  void reset_one(const Match& m, const Stored& s) {
+    if constexpr (kSplitsStored) {
+      kernel_.reset_stored(m, s);
+    } else {
+      kernel_.reset_stored(m);
+    }
+  }
+  void store_one(const Match& m, const Stored& s, const Vec3* terms) {
+    if constexpr (kSplitsStored) {
+      kernel_.store_terms(m, s, terms);
+    } else {
+      kernel_.store_terms(m, terms);
+    }
+  }
+  void run_pass(std::span<const Match> ms, const Stored* ss, const ForceInput& in, Vec3* f,
+                bool store) {
+    if constexpr (kSplitsStored) {
+      kernel_.add_forces_all(ms, ss, in, f, store);
+    } else {
+      kernel_.add_forces_all(ms, in, f, store);
+    }
+  }
+  /// The entry of a match the cache hands over in place.
+  std::uint32_t entry_of(const Match& m) const {
+    return static_cast<std::uint32_t>(&m - cache_.matches().data());
+  }
+  Stored stored_entry(std::uint32_t e) const { return keeps_stored() ? stored_[e] : Stored{}; }
+  /// The Stored of entries from e on, when kept (a pass that stores reads them).
+  const Stored* stored_from(std::size_t e) const {
+    return keeps_stored() ? stored_.data() + e : nullptr;
+  }
 
   /// Per-vertex sums (`store +=`), added in the coloured scatter's order.
   static constexpr bool kAccumulates =
@@ -288,9 +390,13 @@ class CachedInteraction final : public ForceModel {
     Kernel::kGroupKey;
     k.group_key(m, key);
     k.evaluate_terms(m, in, t);
-    mk.store_terms(m, t);
     mk.add_forces_grouped(ms, counts, in, t, t);
-  };
+  }
+  &&(
+      requires(Kernel& mk, const Match& m, const Vec3* t) { mk.store_terms(m, t); } ||
+      requires(Kernel & mk, const Match& m, const Stored& s, const Vec3* t) {
+        mk.store_terms(m, s, t);
+      });
 
   auto key_fn() const {
     if constexpr (kGroupable) {
@@ -314,6 +420,29 @@ class CachedInteraction final : public ForceModel {
       return [](const GMap&, Dart d) { return d; };
     }
   }
+
+  // Follows the match cache's changes in stored_ (the Stored of a match
+  // that is matched again or new is the last match's, pending_), then tells
+  // `inner`.
+  template <class Inner>
+  struct StoredObserver {
+    CachedInteraction& self;
+    Inner inner;
+    void erased(std::uint32_t e, std::uint32_t last) {
+      inner.erased(e, last);
+      if (!self.keeps_stored()) return;
+      self.stored_[e] = self.stored_[last];
+      self.stored_.pop_back();
+    }
+    void replaced(std::uint32_t e, const Match& before, const Match& after) {
+      inner.replaced(e, before, after);
+      if (self.keeps_stored()) self.stored_[e] = self.pending_;
+    }
+    void inserted(std::uint32_t e, const Match& m) {
+      inner.inserted(e, m);
+      if (self.keeps_stored()) self.stored_.push_back(self.pending_);
+    }
+  };
 
   // Follows the match cache's changes in the groups, and the groups' in the colouring.
   struct GroupsObserver {
@@ -380,8 +509,9 @@ class CachedInteraction final : public ForceModel {
           if (!store) continue;
           for (std::size_t i = 0; i < count; ++i) {
             const Vec3* t = terms + i * kTerms;
-            groups_.for_each_member(entries[first + i],
-                                    [&](std::uint32_t e) { kernel_.store_terms(all[e], t); });
+            groups_.for_each_member(entries[first + i], [&](std::uint32_t e) {
+              store_one(all[e], stored_entry(e), t);
+            });
           }
         }
       };
@@ -412,17 +542,25 @@ class CachedInteraction final : public ForceModel {
     auto body = [&](const std::uint32_t* entries, std::size_t n, bool consecutive) {
       if (n == 0) return;
       if (consecutive) {
-        kernel_.add_forces_all(all.subspan(entries[0], n), in, f, store);
+        run_pass(all.subspan(entries[0], n), stored_from(entries[0]), in, f, store);
         return;
       }
-      // A block a tear reshuffled: its matches copied in order, a few at a
-      // time, into a buffer the kernel runs over.
+      // A block a tear reshuffled: its matches (and, for a pass that stores,
+      // their Stored) copied in order, a few at a time, into buffers the
+      // kernel runs over.
       Match buffer[kGather];
+      Stored gathered[kGather];
+      const bool with_stored = store && keeps_stored();
       for (std::size_t first = 0; first < n; first += kGather) {
         const std::size_t count = std::min(kGather, n - first);
         for (std::size_t i = 0; i < count; ++i)
           buffer[i] = all[entries[first + i]];
-        kernel_.add_forces_all(std::span<const Match>(buffer, count), in, f, store);
+        if (with_stored) {
+          for (std::size_t i = 0; i < count; ++i)
+            gathered[i] = stored_[entries[first + i]];
+        }
+        run_pass(std::span<const Match>(buffer, count), with_stored ? gathered : nullptr, in, f,
+                 store);
       }
     };
     colouring_.run(body);
@@ -437,11 +575,9 @@ class CachedInteraction final : public ForceModel {
       throw_if_interrupted();
       const std::span<const Match> block =
           all.subspan(first, std::min(kInterruptBlock, all.size() - first));
-      if constexpr (requires(Kernel & k, std::span<const Match> ms) {
-                      k.add_forces_all(ms, in, f, store);
-                    }) {
+      if constexpr (kHasPass) {
         // Generated kernels run the whole block themselves (columns read once).
-        kernel_.add_forces_all(block, in, f, store);
+        run_pass(block, stored_from(first), in, f, store);
       } else {
         for (const auto& m : block)
           kernel_.add_forces(m, in, f, store);
@@ -455,6 +591,9 @@ class CachedInteraction final : public ForceModel {
   MatchCache<typename Kernel::Match> cache_;
   ScatterColouring colouring_;  ///< the order of the force pass (over groups when grouped_)
   MatchGroups<typename Kernel::Match> groups_;
+  /// Each match's Stored, parallel to cache_, when keeps_stored().
+  std::vector<Stored> stored_;
+  Stored pending_{};  ///< the Stored of the last match found
   bool group_requested_ = true;
   bool grouped_ = false;
   bool store_forces_ = true;  ///< false: nothing reads the stored forces (set_store_forces)

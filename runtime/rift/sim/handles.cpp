@@ -64,6 +64,7 @@ bool Handles::hold(Dart d, int index, const Vec3& rest) {
   if (handle_[d] >= 0 && handle_[d] != index) return false;
   handle_[d] = index;
   rest_[d] = rest;
+  held_stale_ = true;
   return true;
 }
 
@@ -80,11 +81,22 @@ Vec3 Handles::target_velocity(Slot s, Real t, Real dt) const {
   return (target(s, t + dt) - target(s, t)) / dt;
 }
 
+const std::vector<Slot>& Handles::held_slots(const OrbitAttachment& alive) const {
+  if (held_stale_) {
+    held_.clear();
+    const std::vector<std::int64_t>& handle = handle_.values();
+    for (Slot s = 0; s < handle.size(); ++s) {
+      if (handle[s] >= 0 && alive.slot_alive(s)) held_.push_back(s);
+    }
+    held_stale_ = false;
+  }
+  return held_;
+}
+
 void Handles::impose(const OrbitAttachment& alive, Real t, Real dt, std::vector<Vec3>& x,
                      std::vector<Vec3>& v) const {
-  const std::size_t n = std::min(x.size(), handle_.values().size());
-  for (Slot s = 0; s < n; ++s) {
-    if (!alive.slot_alive(s) || !holds(s, t)) continue;
+  for (Slot s : held_slots(alive)) {
+    if (s >= x.size() || !holds(s, t)) continue;
     x[s] = target(s, t);
     v[s] = target_velocity(s, t, dt);
   }
@@ -93,10 +105,10 @@ void Handles::impose(const OrbitAttachment& alive, Real t, Real dt, std::vector<
 void Handles::reactions(const OrbitAttachment& alive, Real t, const std::vector<Vec3>& forces,
                         const std::vector<Real>& mass, const Vec3& gravity,
                         std::vector<Vec3>& per_handle) const {
+  // Summed per handle in slot order, as a sweep of every slot would.
   per_handle.assign(motions_.size(), Vec3::Zero());
-  const std::size_t n = std::min(forces.size(), handle_.values().size());
-  for (Slot s = 0; s < n; ++s) {
-    if (!alive.slot_alive(s) || !holds(s, t)) continue;
+  for (Slot s : held_slots(alive)) {
+    if (s >= forces.size() || !holds(s, t)) continue;
     per_handle[static_cast<std::size_t>(handle_.values()[s])] -= forces[s] + mass[s] * gravity;
   }
 }

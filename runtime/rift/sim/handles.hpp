@@ -65,6 +65,16 @@ class Handles {
   Vec3 target(Slot s, Real t) const;
   Vec3 target_velocity(Slot s, Real t, Real dt) const;
 
+  /// The slots alive in `alive` whose vertex is on a handle (released or
+  /// not), ascending: what the per-step passes below visit, so that a scene
+  /// pinning two corners of a 10⁶-vertex cloth pays for two vertices, not
+  /// for a sweep of every slot. Kept between calls; rebuilt (one sweep)
+  /// after hold() and topology_changed().
+  const std::vector<Slot>& held_slots(const OrbitAttachment& alive) const;
+  /// After a rewrite or values written in place: slots may have been added,
+  /// freed or given a handle.
+  void topology_changed() { held_stale_ = true; }
+
   /// Sets every held slot alive in `alive` to its target at t (position)
   /// and the velocity toward its target at t + dt.
   void impose(const OrbitAttachment& alive, Real t, Real dt, std::vector<Vec3>& x,
@@ -81,6 +91,8 @@ class Handles {
   Embedding<std::int64_t> handle_;
   Embedding<Vec3> rest_;
   std::vector<HandleMotion> motions_;
+  mutable std::vector<Slot> held_;  // held_slots(), valid unless held_stale_
+  mutable bool held_stale_ = true;
 };
 
 }  // namespace rift

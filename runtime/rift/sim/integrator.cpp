@@ -33,20 +33,22 @@ std::string_view to_string(IntegratorKind kind) {
 
 namespace {
 
-// The first-order kinds, which need a(x, v) only: true when `kind` is one.
+// The first-order kinds, which need a(x, v) only (`a(i)`): true when `kind`
+// is one.
+template <class A>
 bool first_order_step(IntegratorKind kind, std::vector<Vec3>& x, std::vector<Vec3>& v, Real dt,
-                      const std::vector<Vec3>& a) {
+                      const A& a) {
   const std::size_t n = x.size();
   switch (kind) {
     case IntegratorKind::kExplicitEuler:
       parallel_for(n, [&](std::size_t i) {
         x[i] += dt * v[i];
-        v[i] += dt * a[i];
+        v[i] += dt * a(i);
       });
       return true;
     case IntegratorKind::kSymplecticEuler:
       parallel_for(n, [&](std::size_t i) {
-        v[i] += dt * a[i];
+        v[i] += dt * a(i);
         x[i] += dt * v[i];
       });
       return true;
@@ -62,40 +64,41 @@ bool first_order_step(IntegratorKind kind, std::vector<Vec3>& x, std::vector<Vec
 
 }  // namespace
 
-template <class StageFn, class ToA>
-void Integrator::rk4(const StageFn& stage, const ToA& to_a, std::vector<Vec3>& x,
-                     std::vector<Vec3>& v, Real dt, const std::vector<Vec3>& a) {
-  // Classical RK4 on y = (x, v), y' = (v, a(x, v)), accumulated on the fly
-  // so that a step touches six arrays and copies none:
-  //   k1 = (v, a)             at (x, v)
-  //   k2 = (v2, a2)           at (x + h k1x, v + h k1v), h = dt/2, v2 = v + h a
+template <class StageFn, class A1, class ToA>
+void Integrator::rk4(const StageFn& stage, const A1& a1, const ToA& to_a, std::vector<Vec3>& x,
+                     std::vector<Vec3>& v, Real dt, std::vector<Vec3>& f) {
+  // Classical RK4 on y = (x, v), y' = (v, a(x, v)), accumulated on the fly:
+  //   k1 = (v, a1)            at (x, v), a1 = a1(i)
+  //   k2 = (v2, a2)           at (x + h k1x, v + h k1v), h = dt/2, v2 = v + h a1
   //   k3 = (v3, a3)           at (x + h k2x, v + h k2v)
   //   k4 = (v4, a4)           at (x + dt k3x, v + dt k3v)
   //   y += dt/6 (k1 + 2 k2 + 2 k3 + k4)
-  // A stage's forces arrive in f; each sweep turns them into accelerations
-  // as it reads them (to_a) and zeroes f for the next stage, so that between
-  // two force passes there is one pass over the vertices (at 10⁶ vertices
-  // a pass is bandwidth: the separate zeroing and conversion passes cost as
-  // much as the update). Every sweep is per vertex, hence parallel with the
-  // same result on any number of threads.
+  // summed in that order, ((k1/6 + k2/3) + k3/3) + k4/6, the same bits
+  // whatever the sweeps. A stage's forces arrive in f; each sweep turns them
+  // into accelerations as it reads them (to_a) and zeroes f for the next
+  // pass, so that between two force passes there is one pass over the
+  // vertices. At 10⁶ vertices a pass is bandwidth, so the sweeps touch as
+  // few arrays as they can: the first writes only the stage (xs, vs), and
+  // the running sums start at the second, which forms k1's terms again from
+  // what it reads anyway (v, and a1 from the start forces and the inverse
+  // mass) rather than a first sweep writing them and the second reading them
+  // back (48 bytes a vertex each way). Every sweep is per vertex, hence
+  // parallel with the same result on any number of threads.
   const std::size_t n = x.size();
-  xs_.resize(n), vs_.resize(n), x_sum_.resize(n), v_sum_.resize(n), stage_f_.resize(n);
-  std::vector<Vec3>& f = stage_f_;
+  xs_.resize(n), vs_.resize(n), x_sum_.resize(n), v_sum_.resize(n), f.resize(n);
   const Real h = dt / 2;
   const Real w1 = dt / 6, w2 = dt / 3;
   parallel_for(n, [&](std::size_t i) {
-    x_sum_[i] = w1 * v[i];  // running dt/6 (k1x + 2 k2x + 2 k3x + k4x)
-    v_sum_[i] = w1 * a[i];
     xs_[i] = x[i] + h * v[i];
-    vs_[i] = v[i] + h * a[i];
+    vs_[i] = v[i] + h * a1(i);
     f[i].setZero();
   });
   stage(xs_, vs_, f);  // a2 at stage 2; vs_ holds v2
   parallel_for(n, [&](std::size_t i) {
     const Vec3 ai = to_a(i, f[i]);
     f[i].setZero();
-    x_sum_[i] += w2 * vs_[i];
-    v_sum_[i] += w2 * ai;
+    x_sum_[i] = w1 * v[i] + w2 * vs_[i];  // running dt/6 (k1x + 2 k2x + 2 k3x + k4x)
+    v_sum_[i] = w1 * a1(i) + w2 * ai;
     xs_[i] = x[i] + h * vs_[i];
     vs_[i] = v[i] + h * ai;
   });
@@ -111,6 +114,7 @@ void Integrator::rk4(const StageFn& stage, const ToA& to_a, std::vector<Vec3>& x
   stage(xs_, vs_, f);  // a4; vs_ holds v4
   parallel_for(n, [&](std::size_t i) {
     const Vec3 ai = to_a(i, f[i]);
+    f[i].setZero();
     x[i] += x_sum_[i] + w1 * vs_[i];
     v[i] += v_sum_[i] + w1 * ai;
   });
@@ -118,24 +122,39 @@ void Integrator::rk4(const StageFn& stage, const ToA& to_a, std::vector<Vec3>& x
 
 void Integrator::step(const AccelerationFn& accel, std::vector<Vec3>& x, std::vector<Vec3>& v,
                       Real dt, const std::vector<Vec3>* a0) {
-  a_.resize(x.size());
+  if (!a0) a_.resize(x.size());
   const std::vector<Vec3>& a = a0 ? *a0 : a_;
   if (!a0) accel(x, v, a_);
-  if (first_order_step(kind_, x, v, dt, a)) return;
+  const auto a1 = [&a](std::size_t i) -> const Vec3& { return a[i]; };
+  if (first_order_step(kind_, x, v, dt, a1)) return;
   // The stage function writes accelerations: they are used as they are.
   rk4(
-      accel, [](std::size_t, const Vec3& ai) { return ai; }, x, v, dt, a);
+      accel, a1, [](std::size_t, const Vec3& ai) { return ai; }, x, v, dt, stage_a_);
 }
 
 void Integrator::step(const ForceFn& forces, const ForceToAcceleration& to_a, std::vector<Vec3>& x,
-                      std::vector<Vec3>& v, Real dt, const std::vector<Vec3>& a0) {
-  if (first_order_step(kind_, x, v, dt, a0)) return;
+                      std::vector<Vec3>& v, Real dt, const std::vector<Vec3>& f0,
+                      std::vector<Vec3>& f) {
   const Real* w = to_a.inverse_mass;
   const Vec3 g = to_a.gravity;
-  rk4(
-      forces,
-      [w, g](std::size_t i, const Vec3& f) { return w[i] > 0 ? Vec3(f * w[i] + g) : Vec3::Zero(); },
-      x, v, dt, a0);
+  // a = w f + g where w > 0, else 0: the expression Simulation formed its
+  // accelerations with, so the bits of step(AccelerationFn).
+  const auto accel = [w, g](std::size_t i, const Vec3& fi) {
+    return w[i] > 0 ? Vec3(fi * w[i] + g) : Vec3::Zero();
+  };
+  const auto a1 = [&](std::size_t i) { return accel(i, f0[i]); };
+  if (first_order_step(kind_, x, v, dt, a1)) {
+    f.assign(x.size(), Vec3::Zero());
+    return;
+  }
+  rk4(forces, a1, accel, x, v, dt, f);
+}
+
+std::size_t Integrator::buffer_bytes() const {
+  std::size_t bytes = 0;
+  for (const std::vector<Vec3>* b : {&xs_, &vs_, &x_sum_, &v_sum_, &a_, &stage_a_})
+    bytes += b->capacity() * sizeof(Vec3);
+  return bytes;
 }
 
 }  // namespace rift

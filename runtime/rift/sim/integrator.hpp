@@ -1,6 +1,7 @@
 // Time integrators over dense position/velocity arrays (indexed by vertex slot).
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <string_view>
@@ -55,22 +56,35 @@ class Integrator {
   void step(const AccelerationFn& accel, std::vector<Vec3>& x, std::vector<Vec3>& v, Real dt,
             const std::vector<Vec3>* a0 = nullptr);
 
-  /// The same step from forces: the stages' accelerations are formed inside
-  /// the integrator's own sweeps (`to_a`), and the force buffer is zeroed
-  /// there too, so a stage costs the force pass and one sweep over the
-  /// vertices instead of three (zero, forces to accelerations, update).
-  /// The same bits as step(AccelerationFn) given a = w f + g.
-  /// `a0` holds a(x, v) (see above).
+  /// The same step from forces, as Simulation runs it. `f0` holds the
+  /// forces at (x, v) (the loop computes them to evaluate criteria); each
+  /// sweep forms the accelerations a = to_a(f) as it reads the forces, so no
+  /// acceleration array exists. `f` is the stages' force buffer (the caller's,
+  /// so that the loop and the integrator share one): any content and length
+  /// on entry, the arrays' length and all zeros on return (the next force
+  /// pass adds into it without a zeroing pass). A stage costs the force pass
+  /// and one sweep over the vertices. The same bits as step(AccelerationFn)
+  /// given a = w f + g.
   void step(const ForceFn& forces, const ForceToAcceleration& to_a, std::vector<Vec3>& x,
-            std::vector<Vec3>& v, Real dt, const std::vector<Vec3>& a0);
+            std::vector<Vec3>& v, Real dt, const std::vector<Vec3>& f0, std::vector<Vec3>& f);
+
+  /// Bytes of the per-vertex buffers this integrator holds (capacities):
+  /// none for the first-order kinds stepped from forces, four vec3 arrays
+  /// for RK4 stepped from forces (docs/performance.md, "RK4's arrays").
+  std::size_t buffer_bytes() const;
 
  private:
-  template <class StageFn, class ToA>
-  void rk4(const StageFn& stage, const ToA& to_a, std::vector<Vec3>& x, std::vector<Vec3>& v,
-           Real dt, const std::vector<Vec3>& a);
+  template <class StageFn, class A1, class ToA>
+  void rk4(const StageFn& stage, const A1& a1, const ToA& to_a, std::vector<Vec3>& x,
+           std::vector<Vec3>& v, Real dt, std::vector<Vec3>& f);
 
   IntegratorKind kind_;
-  std::vector<Vec3> a_, x_sum_, v_sum_, stage_f_, xs_, vs_;
+  // RK4's stage state: positions and velocities of the next stage (xs_,
+  // vs_) and the running sums dt/6 (k1 + 2 k2 + 2 k3) of x' and v'.
+  std::vector<Vec3> xs_, vs_, x_sum_, v_sum_;
+  // Only step(AccelerationFn): a(x, v) when the caller gives none, and the
+  // stages' accelerations.
+  std::vector<Vec3> a_, stage_a_;
 };
 
 }  // namespace rift

@@ -3,6 +3,13 @@
 // support orbits near the touched darts are matched again (§4.1): a match that
 // is lost is dropped (its stored forces reset by the caller), a support orbit
 // that appears (a split) gets a new match.
+//
+// Re-matching needs the entry each owner dart holds (entry_of_dart_, 4 bytes
+// per dart of the map). A scene that never rewrites never reads it: it is
+// made at the first rematch, from owners_, which build keeps exact, so a
+// 10^6-vertex scene that does not tear does not pay 4 bytes per dart per
+// interaction (96 MB for three interactions of a quad cloth, 560 MB for a
+// hexahedral block), and the first tear pays one pass over the matches.
 #pragma once
 
 #include <span>
@@ -23,6 +30,18 @@ class MatchCache {
   std::size_t size() const { return matches_.size(); }
   /// The support dart each match was found from, parallel to matches().
   std::span<const Dart> owners() const { return owners_; }
+  /// True once the owners are indexed by dart (from the first rematch on).
+  bool indexes_owners() const { return indexed_; }
+  /// Indexes the owners now instead of at the first rematch (tests compare
+  /// both ways).
+  void index_owners(const GMap& map) {
+    if (indexed_) return;
+    entry_of_dart_.clear();
+    grow_huge(entry_of_dart_, map.capacity(), kNone);
+    for (std::size_t e = 0; e < owners_.size(); ++e)
+      entry_of_dart_[owners_[e]] = static_cast<std::uint32_t>(e);
+    indexed_ = true;
+  }
 
   /// Matches every support orbit of the map. match(map, dart, Match&) -> bool.
   template <class MatchFn>
@@ -42,8 +61,10 @@ class MatchCache {
     // page by page; only what the matches fill becomes resident.
     reserve_huge(matches_, map.capacity());
     reserve_huge(owners_, map.capacity());
-    entry_of_dart_.clear();
-    grow_huge(entry_of_dart_, map.capacity(), kNone);
+    // Not indexed until a rematch needs it (index_owners); the memory of an
+    // earlier index is given back.
+    entry_of_dart_ = {};
+    indexed_ = false;
     map.for_each_cell(support, [&](Dart d) {
       const Dart owner = choose(map, d);
       Match m{};
@@ -69,7 +90,8 @@ class MatchCache {
 
   /// Re-matches every support orbit within `radius` links of `region` (the
   /// darts a rewrite touched, live or deleted). lost(const Match&, bool alive)
-  /// is called for each match that disappears, before it is dropped.
+  /// is called for each match that disappears, before it is dropped, with the
+  /// element of matches() itself (its index is its address's offset).
   template <class MatchFn, class LostFn>
   void rematch(const GMap& map, Orbit support, int radius, std::span<const Dart> region,
                MatchFn&& match, LostFn&& lost) {
@@ -90,6 +112,7 @@ class MatchCache {
   template <class MatchFn, class LostFn, class Observer, class ChooseFn>
   void rematch(const GMap& map, Orbit support, int radius, std::span<const Dart> region,
                MatchFn&& match, LostFn&& lost, Observer& observer, ChooseFn&& choose) {
+    index_owners(map);
     if (entry_of_dart_.size() < map.capacity()) entry_of_dart_.resize(map.capacity(), kNone);
     // Deleted owners first: their matches are gone for good.
     for (Dart d : region) {
@@ -165,12 +188,14 @@ class MatchCache {
 
  private:
   void insert(Dart owner, const Match& m) {
-    if (entry_of_dart_.size() <= owner) entry_of_dart_.resize(owner + 1, kNone);
-    entry_of_dart_[owner] = static_cast<std::uint32_t>(matches_.size());
+    if (indexed_) {
+      if (entry_of_dart_.size() <= owner) entry_of_dart_.resize(owner + 1, kNone);
+      entry_of_dart_[owner] = static_cast<std::uint32_t>(matches_.size());
+    }
     matches_.push_back(m);
     owners_.push_back(owner);
   }
-  // Swap-and-pop keeps the array dense.
+  // Swap-and-pop keeps the array dense. Only rematch erases: indexed.
   template <class Observer>
   void erase(std::uint32_t e, Observer& observer) {
     const std::uint32_t last = static_cast<std::uint32_t>(matches_.size() - 1);
@@ -187,7 +212,8 @@ class MatchCache {
 
   std::vector<Match> matches_;
   std::vector<Dart> owners_;
-  std::vector<std::uint32_t> entry_of_dart_;
+  std::vector<std::uint32_t> entry_of_dart_;  ///< empty until indexed_
+  bool indexed_ = false;
   std::vector<Dart> frontier_;
 };
 

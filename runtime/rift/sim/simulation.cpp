@@ -142,44 +142,37 @@ void Simulation::refresh_inverse_mass(Slot s) {
   }
 }
 
-void Simulation::accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
-                               std::vector<Vec3>& a, bool store) {
+void Simulation::start_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& v) {
   const std::size_t n = x.size();
-  forces_.resize(n);
-  parallel_for(n, [&](std::size_t s) { forces_[s].setZero(); });
-  const ForceInput in{x.data(), v.data()};
-  if (store) {
-    for (auto& model : models_)
-      model->clear_accumulated();
+  // The integrator hands the stage buffer back zeroed (forces_zero_): then
+  // only slots a tear added need zeros, else the whole array does.
+  if (forces_zero_) {
+    forces_.resize(n, Vec3::Zero());
+  } else {
+    forces_.resize(n);
+    parallel_for(n, [&](std::size_t s) { forces_[s].setZero(); });
   }
+  forces_zero_ = false;
+  const ForceInput in{x.data(), v.data()};
   for (auto& model : models_)
-    model->add_forces(in, forces_.data(), store);
-  if (store && vertex_force_) {
+    model->clear_accumulated();
+  for (auto& model : models_)
+    model->add_forces(in, forces_.data(), true);
+  if (vertex_force_) {
     // Same orbit as position, so the same slots.
     std::vector<Vec3>& out = vertex_force_.values();
     std::copy(forces_.begin(), forces_.begin() + std::min(n, out.size()), out.begin());
   }
   if (!external_.empty()) {
-    // After vertex_force: criteria see internal forces only.
+    // After vertex_force: criteria see internal forces only. Kept apart for
+    // the external work.
     const ExternalInput ext{time_, x.data(), v.data(), vertex_mass_.values().data(), n};
-    if (store) {
-      // Kept apart for the external work.
-      external_forces_.assign(n, Vec3::Zero());
-      for (auto& e : external_)
-        e->add_forces(map_, ext, external_forces_.data());
-      for (std::size_t s = 0; s < n; ++s)
-        forces_[s] += external_forces_[s];
-    } else {
-      for (auto& e : external_)
-        e->add_forces(map_, ext, forces_.data());
-    }
+    external_forces_.assign(n, Vec3::Zero());
+    for (auto& e : external_)
+      e->add_forces(map_, ext, external_forces_.data());
+    for (std::size_t s = 0; s < n; ++s)
+      forces_[s] += external_forces_[s];
   }
-  a.resize(n);
-  const Vec3 g = settings_.gravity;
-  parallel_for(n, [&](std::size_t s) {
-    const Real w = inverse_mass_[s];
-    a[s] = w > 0 ? Vec3(forces_[s] * w + g) : Vec3::Zero();
-  });
 }
 
 void Simulation::add_stage_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
@@ -203,28 +196,30 @@ void Simulation::step() {
   std::vector<Vec3>& x = position_.values();
   std::vector<Vec3>& v = velocity_.values();
   // Forces at the current state are stored in their orbits (criteria read
-  // them) and reused as the integrator's first stage.
-  accelerations(x, v, a0_, true);
+  // them) and are the integrator's first stage.
+  start_forces(x, v);
   tears_last_step_ = criteria_.empty() ? 0 : apply_criteria();
-  if (tears_last_step_ > 0) accelerations(x, v, a0_, true);
+  if (tears_last_step_ > 0) start_forces(x, v);
   // Kept for the step's readers (divergence check, outputs, reactions, the
-  // implicit step): a swap, not a copy (24 MB at 10⁶ vertices); the next
-  // accelerations() refills forces_ whole.
+  // implicit step): a swap, not a copy (24 MB at 10⁶ vertices). forces_ is
+  // then free until the next step's start_forces(): the integrator's stage
+  // buffer, or the implicit step's start forces with gravity.
   start_forces_.swap(forces_);
   if (handles_) {
     handles_->reactions(position_.attachment(), time_, start_forces_, vertex_mass_.values(),
                         settings_.gravity, reactions_);
   }
-  if (tracks_external_work()) x_before_ = x;
+  keep_positions_before(x);
   if (implicit_) {
     implicit_step();
   } else {
     // The stages' forces only: the integrator turns them into accelerations
-    // in its own sweeps.
+    // in its own sweeps, and hands forces_ back zeroed.
     integrator_.step([this](const std::vector<Vec3>& xs, const std::vector<Vec3>& vs,
                             std::vector<Vec3>& f) { add_stage_forces(xs, vs, f); },
                      ForceToAcceleration{inverse_mass_.data(), settings_.gravity}, x, v,
-                     settings_.dt, a0_);
+                     settings_.dt, start_forces_, forces_);
+    forces_zero_ = true;
   }
   const Real t0 = time_;
   time_ += settings_.dt;
@@ -283,20 +278,51 @@ std::size_t Simulation::apply_criteria() {
   return applied;
 }
 
+void Simulation::keep_positions_before(const std::vector<Vec3>& x) {
+  if (!external_.empty()) {
+    x_before_ = x;  // loads act on every vertex
+  } else if (handles_) {
+    // Only handles do work: their vertices' positions are enough.
+    const std::vector<Slot>& held = handles_->held_slots(position_.attachment());
+    held_x_before_.resize(held.size());
+    for (std::size_t k = 0; k < held.size(); ++k)
+      held_x_before_[k] = held[k] < x.size() ? x[held[k]] : Vec3(Vec3::Zero());
+  }
+}
+
 void Simulation::account_external_work(const std::vector<Vec3>& x) {
   // W += sum over vertices of (external force + handle reaction) . dx, with
   // the forces at the start of the step (first order in dt).
   if (!tracks_external_work()) return;
+  const auto& mass = vertex_mass_.values();
+  const Real t0 = time_ - settings_.dt;
+  // Adds the reaction of a handle on a vertex it held during the step.
+  auto add_reaction = [&](Slot s, Vec3& f) {
+    if (handles_ && inverse_mass_[s] == 0 && handles_->holds(s, t0)) {
+      f += -(start_forces_[s] + mass[s] * settings_.gravity);
+    }
+  };
+  if (external_.empty()) {
+    // Handles only: the other vertices' terms are 0 · dx, which leave the
+    // sum's bits as they are, so the held slots alone (ascending, the order
+    // of a sweep of every slot) give the same sum.
+    const std::vector<Slot>& held = handles_->held_slots(position_.attachment());
+    for (std::size_t k = 0; k < held.size() && k < held_x_before_.size(); ++k) {
+      const Slot s = held[k];
+      if (s >= x.size()) continue;
+      Vec3 f = Vec3::Zero();
+      add_reaction(s, f);
+      external_work_ += f.dot(x[s] - held_x_before_[k]);
+    }
+    return;
+  }
   const bool any_external = !external_forces_.empty();
   const OrbitAttachment& att = position_.attachment();
   const std::size_t n = std::min(x.size(), x_before_.size());
-  const auto& mass = vertex_mass_.values();
   for (Slot s = 0; s < n; ++s) {
     if (!att.slot_alive(s)) continue;
     Vec3 f = any_external && s < external_forces_.size() ? external_forces_[s] : Vec3::Zero();
-    if (handles_ && inverse_mass_[s] == 0 && handles_->holds(s, time_ - settings_.dt)) {
-      f += -(start_forces_[s] + mass[s] * settings_.gravity);  // the handle's reaction
-    }
+    add_reaction(s, f);
     external_work_ += f.dot(x[s] - x_before_[s]);
   }
 }
@@ -322,9 +348,19 @@ void Simulation::on_topology_changed(std::span<const Dart> touched) {
   map_.free_mark(m);
   for (auto& model : models_)
     model->rematch(map_, region_);
+  if (handles_) handles_->topology_changed();
   if (implicit_) implicit_->topology_changed();
   bdf2_.restart();  // the slots' history no longer matches the map
   refresh_inverse_masses(region_);
+}
+
+std::size_t Simulation::per_vertex_bytes() const {
+  std::size_t bytes = integrator_.buffer_bytes() + inverse_mass_.capacity() * sizeof(Real) +
+                      is_free_.capacity() * sizeof(char);
+  for (const std::vector<Vec3>* a :
+       {&forces_, &start_forces_, &external_forces_, &x_before_, &held_x_before_, &target_v_})
+    bytes += a->capacity() * sizeof(Vec3);
+  return bytes;
 }
 
 Real Simulation::kinetic_energy() const {

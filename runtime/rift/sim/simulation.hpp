@@ -128,6 +128,12 @@ class Simulation {
   /// potential ("" when it can): an interaction without an energy, or
   /// external forces besides gravity. (Damping is found while stepping.)
   std::string implicit_potential_missing() const;
+  /// Bytes of the loop's per-vertex arrays (capacities), the integrator's
+  /// included: forces, start forces, inverse masses, the integrator's stage
+  /// state, and what loads, handles and implicit integrators add. Neither
+  /// the map's columns (positions, velocities, masses) nor the implicit
+  /// solver's own.
+  std::size_t per_vertex_bytes() const;
   /// The implicit integrator, when settings().integrator is implicit_euler.
   const ImplicitEuler* implicit() const { return implicit_.get(); }
   ImplicitEuler* implicit() { return implicit_.get(); }
@@ -139,8 +145,10 @@ class Simulation {
   Real total_mass() const;
 
  private:
-  void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& a,
-                     bool store);
+  /// The forces at the start of the step (x, v) into forces_, stored in the
+  /// interactions' orbits for criteria and outputs: interactions, then
+  /// external forces (also kept apart in external_forces_).
+  void start_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& v);
   /// Adds the interactions' and external forces at a stage (x, v) into f,
   /// storing none (the integrator's stages after the first).
   void add_stage_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
@@ -153,6 +161,9 @@ class Simulation {
   void refresh_inverse_mass(Slot s);
   void implicit_step();  // simulation_implicit.cpp
   std::size_t apply_criteria();
+  /// Before the integrator, what account_external_work needs: every
+  /// position with loads, the held vertices' with handles only.
+  void keep_positions_before(const std::vector<Vec3>& x);
   void account_external_work(const std::vector<Vec3>& x);
 
   GMap map_;
@@ -162,18 +173,23 @@ class Simulation {
   Bdf2 bdf2_;                                // integrator = bdf2: the step before
   std::vector<char> is_free_;                // implicit: inverse mass > 0
   std::vector<Vec3> target_v_;               // implicit: end-of-step velocity of the others
-  std::vector<Vec3> scratch_a_;              // implicit: accelerations, unused
   std::vector<std::unique_ptr<ForceModel>> models_;
   Embedding<Vec3> position_, velocity_;
   Embedding<Real> vertex_mass_, corner_mass_;
   Embedding<Bool> pinned_;
   Embedding<Vec3> vertex_force_;  // optional: only when a pack reads state::kVertexForce
-  std::vector<Vec3> forces_, start_forces_, a0_;
+  // The loop's per-vertex forces (docs/architecture.md, "The step's arrays"):
+  // forces_ is filled at the start of a step, then swapped into
+  // start_forces_ (kept for readers until the next step), after which it
+  // is the integrator's stage buffer (zero on return: forces_zero_).
+  std::vector<Vec3> forces_, start_forces_;
+  bool forces_zero_ = false;
   std::vector<Real> inverse_mass_;  // 0 for pinned and held vertices and free slots
   std::unique_ptr<Handles> handles_;
   std::vector<std::unique_ptr<ExternalForce>> external_;
   std::unique_ptr<Contact> contact_;
   std::vector<Vec3> external_forces_, x_before_, reactions_;
+  std::vector<Vec3> held_x_before_;  // handles without loads: by Handles::held_slots()
   Real external_work_ = 0;
   std::vector<Dart> region_;
   std::vector<std::unique_ptr<Criterion>> criteria_;

@@ -34,18 +34,25 @@ void Simulation::implicit_step() {
     for (std::size_t s = 0; s < n; ++s)
       if (is_free_[s]) f[s] += mass[s] * g;
   };
-  a0_.assign(start_forces_.begin(), start_forces_.end());  // forces at (x, v), from step()
-  add_external(a0_);
-  const ImplicitEuler::ForceFn force = [&](const std::vector<Vec3>& xs, const std::vector<Vec3>& vs,
-                                           std::vector<Vec3>& f) {
-    accelerations(xs, vs, scratch_a_, false);
-    f.assign(forces_.begin(), forces_.end());
+  // The forces at (x, v) with gravity, in forces_ (free between the step's
+  // swap and the next step's start_forces()).
+  std::vector<Vec3>& f0 = forces_;
+  f0.assign(start_forces_.begin(), start_forces_.end());
+  forces_zero_ = false;
+  add_external(f0);
+  // Two captures (16 bytes) stay in std::function's own buffer: a warm step
+  // allocates nothing.
+  const ImplicitEuler::ForceFn force = [this, &add_external](const std::vector<Vec3>& xs,
+                                                             const std::vector<Vec3>& vs,
+                                                             std::vector<Vec3>& f) {
+    f.assign(xs.size(), Vec3::Zero());
+    add_stage_forces(xs, vs, f);
     add_external(f);
   };
   if (settings_.integrator == IntegratorKind::kBdf2) {
-    bdf2_.step(*implicit_, force, mass, is_free_, target_v_.data(), x, v, h, &a0_);
+    bdf2_.step(*implicit_, force, mass, is_free_, target_v_.data(), x, v, h, &f0);
   } else {
-    implicit_->step(force, mass, is_free_, target_v_.data(), x, v, h, &a0_);
+    implicit_->step(force, mass, is_free_, target_v_.data(), x, v, h, &f0);
   }
 }
 

@@ -317,14 +317,14 @@ bool CorotationalKernel::find(const rift::GMap& g, rift::Dart support, rift::Dar
 void CorotationalKernel::initialise(rift::GMap& g) {
   rift::packs::fem3d::declare_embeddings(g);
   e_corner_mass = require_embedding<rift::Real>(g, "corner_mass", "interaction 'corotational'");
-  e_f_fem = require_embedding<rift::Vec3>(g, "f_fem", "interaction 'corotational'");
+  if (store_) e_f_fem = require_embedding<rift::Vec3>(g, "f_fem", "interaction 'corotational'");
   e_fem_b = require_embedding<rift::Mat3>(g, "fem_b", "interaction 'corotational'");
   e_fem_lambda = require_embedding<rift::Real>(g, "fem_lambda", "interaction 'corotational'");
   e_fem_mu = require_embedding<rift::Real>(g, "fem_mu", "interaction 'corotational'");
   e_fem_volume = require_embedding<rift::Real>(g, "fem_volume", "interaction 'corotational'");
   e_position = require_embedding<rift::Vec3>(g, "position", "interaction 'corotational'");
-  e_stress_mass = require_embedding<rift::Real>(g, "stress_mass", "interaction 'corotational'");
-  e_stress_weighted = require_embedding<rift::Mat3>(g, "stress_weighted", "interaction 'corotational'");
+  if (store_) e_stress_mass = require_embedding<rift::Real>(g, "stress_mass", "interaction 'corotational'");
+  if (store_) e_stress_weighted = require_embedding<rift::Mat3>(g, "stress_weighted", "interaction 'corotational'");
   // §3.2: the dart each element is first matched from fixes the order of its corners.
   tag_ = require_embedding<rift::Bool>(g, "corotational_first_dart", "interaction 'corotational'");
   std::fill(tag_.values().begin(), tag_.values().end(), rift::Bool(false));
@@ -365,7 +365,7 @@ void CorotationalKernel::initialise(rift::GMap& g) {
   });
 }
 
-bool CorotationalKernel::match(const rift::GMap& g, rift::Dart support, Match& m) const {
+bool CorotationalKernel::match(const rift::GMap& g, rift::Dart support, Match& m, Stored* /*s*/) const {
   rift::Dart darts[18];
   if (!find(g, support, darts)) return false;
   m.orbit012_c0 = e_fem_b.slot(darts[0]);
@@ -427,13 +427,14 @@ inline bool CorotationalKernel::evaluate(const Match& m, const rift::ForceInput&
   return true;
 }
 
-void CorotationalKernel::add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+void CorotationalKernel::add_forces_all(std::span<const Match> ms, const Stored* /*ss*/, const rift::ForceInput& in, rift::Vec3* f, bool store) {
   const Columns c = columns();
   rift::Vec3* const stored_f_fem = store ? e_f_fem.values().data() : nullptr;
   auto* const stored_stress_mass = store ? e_stress_mass.values().data() : nullptr;
   auto* const stored_stress_weighted = store ? e_stress_weighted.values().data() : nullptr;
   auto pass = [&]<bool kStore>() __attribute__((noinline)) {
-    for (const Match& m : ms) {
+    for (std::size_t i = 0; i < ms.size(); ++i) {
+      const Match& m = ms[i];
       Result r;
       if (!evaluate<true, kStore>(m, in, c, r)) {
         if constexpr (kStore) {
@@ -478,7 +479,7 @@ void CorotationalKernel::force_targets(const Match& m, rift::Slot* out) const {
   out[3] = m.vertex_c3;
 }
 
-void CorotationalKernel::reset_stored(const Match& m) {
+void CorotationalKernel::reset_stored([[maybe_unused]] const Match& m, [[maybe_unused]] const Stored& s) {
   if (m.orbit12_c0 < e_f_fem.values().size()) e_f_fem.values()[m.orbit12_c0] = rift::Vec3::Zero();
   if (m.orbit12_c1 < e_f_fem.values().size()) e_f_fem.values()[m.orbit12_c1] = rift::Vec3::Zero();
   if (m.orbit12_c2 < e_f_fem.values().size()) e_f_fem.values()[m.orbit12_c2] = rift::Vec3::Zero();

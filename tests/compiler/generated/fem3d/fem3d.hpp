@@ -52,6 +52,10 @@ class CorotationalKernel {
     rift::Slot orbit12_c2 = rift::kNoSlot;  // <1,2> of c2
     rift::Slot orbit12_c3 = rift::kNoSlot;  // <1,2> of c3
   };
+  /// The slots only stored forces and `store`s write: cached only when the
+  /// interaction stores (rift::CachedInteraction), beside the matches.
+  struct Stored {
+  };
   static constexpr rift::Orbit kSupport = rift::Orbit{0, 1, 2};
   /// Links from the support dart to the farthest dart a match reads.
   static constexpr int kRadius = 6;
@@ -63,14 +67,19 @@ class CorotationalKernel {
   const CorotationalParams& params() const { return p_; }
   /// Declares the pack's embeddings the map lacks, binds them, tags the first dart of every support orbit and runs the interaction's inits.
   void initialise(rift::GMap& g);
-  bool match(const rift::GMap& g, rift::Dart support, Match& m) const;
-  /// The force pass over every match: adds each force to f (and stores it when `store`).
-  void add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store);
+  /// Before initialise: false when nothing reads the stored forces, whose
+  /// embeddings are then left unbound.
+  void set_store_forces(bool on) { store_ = on; }
+  /// Fills s too unless it is null.
+  bool match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s = nullptr) const;
+  /// The force pass over every match: adds each force to f (and stores it when `store`,
+  /// at the slots of ss[i], parallel to ms).
+  void add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store);
   /// The vertex slots of a match's kForceTerms forces, in the order add_forces_all adds
   /// them (the coloured scatter of several threads groups matches by them).
   static constexpr int kForceTerms = 4;
   void force_targets(const Match& m, rift::Slot* out) const;
-  void reset_stored(const Match& m);
+  void reset_stored(const Match& m, const Stored& s);
   /// The per-vertex sums of `store +=` (rift/sim/cached_interaction.hpp).
   void clear_accumulated();
   void reset_accumulated(const rift::GMap& g, std::span<const rift::Dart> region);
@@ -130,6 +139,7 @@ class CorotationalKernel {
   rift::Embedding<rift::Real> e_stress_mass;
   rift::Embedding<rift::Mat3> e_stress_weighted;
   rift::Embedding<rift::Bool> tag_;
+  bool store_ = true;
 };
 using CorotationalInteraction = rift::CachedInteraction<CorotationalKernel>;
 

@@ -176,7 +176,7 @@ bool StretchKernel::find(const rift::GMap& g, rift::Dart support, rift::Dart* da
 
 void StretchKernel::initialise(rift::GMap& g) {
   rift::packs::mass_spring3d::declare_embeddings(g);
-  e_f_stretch = require_embedding<rift::Vec3>(g, "f_stretch", "interaction 'stretch'");
+  if (store_) e_f_stretch = require_embedding<rift::Vec3>(g, "f_stretch", "interaction 'stretch'");
   e_position = require_embedding<rift::Vec3>(g, "position", "interaction 'stretch'");
   e_stretch_k = require_embedding<rift::Real>(g, "stretch_k", "interaction 'stretch'");
   e_stretch_rest = require_embedding<rift::Real>(g, "stretch_rest", "interaction 'stretch'");
@@ -199,14 +199,16 @@ void StretchKernel::initialise(rift::GMap& g) {
   });
 }
 
-bool StretchKernel::match(const rift::GMap& g, rift::Dart support, Match& m) const {
+bool StretchKernel::match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s) const {
   rift::Dart darts[2];
   if (!find(g, support, darts)) return false;
   m.vertex_a = e_position.slot(darts[0]);
   m.vertex_b = e_position.slot(darts[1]);
   m.orbit0_a = e_stretch_k.slot(darts[0]);
-  m.dart_a = e_f_stretch.slot(darts[0]);
-  m.dart_b = e_f_stretch.slot(darts[1]);
+  if (s) {
+    s->dart_a = e_f_stretch.slot(darts[0]);
+    s->dart_b = e_f_stretch.slot(darts[1]);
+  }
   return true;
 }
 
@@ -240,22 +242,23 @@ inline bool StretchKernel::evaluate(const Match& m, const rift::ForceInput& in, 
   return true;
 }
 
-void StretchKernel::add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+void StretchKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store) {
   const Columns c = columns();
   rift::Vec3* const stored_f_stretch = store ? e_f_stretch.values().data() : nullptr;
-  for (const Match& m : ms) {
+  for (std::size_t i = 0; i < ms.size(); ++i) {
+    const Match& m = ms[i];
     Result r;
     if (!evaluate<true>(m, in, c, r)) {
       if (store) {
-        stored_f_stretch[m.dart_a] = rift::Vec3::Zero();
-        stored_f_stretch[m.dart_b] = rift::Vec3::Zero();
+        stored_f_stretch[ss[i].dart_a] = rift::Vec3::Zero();
+        stored_f_stretch[ss[i].dart_b] = rift::Vec3::Zero();
       }
       continue;
     }
     f[m.vertex_a] += r.f_stretch_a;
-    if (store) stored_f_stretch[m.dart_a] = r.f_stretch_a;
+    if (store) stored_f_stretch[ss[i].dart_a] = r.f_stretch_a;
     f[m.vertex_b] += r.f_stretch_b;
-    if (store) stored_f_stretch[m.dart_b] = r.f_stretch_b;
+    if (store) stored_f_stretch[ss[i].dart_b] = r.f_stretch_b;
   }
 }
 
@@ -284,9 +287,9 @@ bool StretchKernel::evaluate_terms(const Match& m, const rift::ForceInput& in, r
   return true;
 }
 
-void StretchKernel::store_terms(const Match& m, const rift::Vec3* terms) {
-  e_f_stretch.values()[m.dart_a] = terms[0];
-  e_f_stretch.values()[m.dart_b] = terms[1];
+void StretchKernel::store_terms([[maybe_unused]] const Match& m, [[maybe_unused]] const Stored& s, const rift::Vec3* terms) {
+  e_f_stretch.values()[s.dart_a] = terms[0];
+  e_f_stretch.values()[s.dart_b] = terms[1];
 }
 
 void StretchKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {
@@ -308,9 +311,9 @@ void StretchKernel::add_forces_grouped(std::span<const Match> reps, const std::u
   }
 }
 
-void StretchKernel::reset_stored(const Match& m) {
-  if (m.dart_a < e_f_stretch.values().size()) e_f_stretch.values()[m.dart_a] = rift::Vec3::Zero();
-  if (m.dart_b < e_f_stretch.values().size()) e_f_stretch.values()[m.dart_b] = rift::Vec3::Zero();
+void StretchKernel::reset_stored([[maybe_unused]] const Match& m, [[maybe_unused]] const Stored& s) {
+  if (s.dart_a < e_f_stretch.values().size()) e_f_stretch.values()[s.dart_a] = rift::Vec3::Zero();
+  if (s.dart_b < e_f_stretch.values().size()) e_f_stretch.values()[s.dart_b] = rift::Vec3::Zero();
 }
 
 rift::Real StretchKernel::energy(const Match& m, const rift::ForceInput& in) const {
@@ -444,7 +447,7 @@ bool ShearKernel::find(const rift::GMap& g, rift::Dart support, rift::Dart* dart
 
 void ShearKernel::initialise(rift::GMap& g) {
   rift::packs::mass_spring3d::declare_embeddings(g);
-  e_f_shear = require_embedding<rift::Vec3>(g, "f_shear", "interaction 'shear'");
+  if (store_) e_f_shear = require_embedding<rift::Vec3>(g, "f_shear", "interaction 'shear'");
   e_position = require_embedding<rift::Vec3>(g, "position", "interaction 'shear'");
   e_shear_k = require_embedding<rift::Real>(g, "shear_k", "interaction 'shear'");
   e_shear_rest02 = require_embedding<rift::Real>(g, "shear_rest02", "interaction 'shear'");
@@ -479,7 +482,7 @@ void ShearKernel::initialise(rift::GMap& g) {
   });
 }
 
-bool ShearKernel::match(const rift::GMap& g, rift::Dart support, Match& m) const {
+bool ShearKernel::match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s) const {
   rift::Dart darts[8];
   if (!find(g, support, darts)) return false;
   m.vertex_c0 = e_position.slot(darts[0]);
@@ -487,10 +490,12 @@ bool ShearKernel::match(const rift::GMap& g, rift::Dart support, Match& m) const
   m.orbit01_c0 = e_shear_k.slot(darts[0]);
   m.vertex_c1 = e_position.slot(darts[2]);
   m.vertex_c3 = e_position.slot(darts[6]);
-  m.orbit1_c0 = e_f_shear.slot(darts[0]);
-  m.orbit1_c2 = e_f_shear.slot(darts[4]);
-  m.orbit1_c1 = e_f_shear.slot(darts[2]);
-  m.orbit1_c3 = e_f_shear.slot(darts[6]);
+  if (s) {
+    s->orbit1_c0 = e_f_shear.slot(darts[0]);
+    s->orbit1_c2 = e_f_shear.slot(darts[4]);
+    s->orbit1_c1 = e_f_shear.slot(darts[2]);
+    s->orbit1_c3 = e_f_shear.slot(darts[6]);
+  }
   return true;
 }
 
@@ -522,28 +527,29 @@ inline bool ShearKernel::evaluate(const Match& m, const rift::ForceInput& in, co
   return true;
 }
 
-void ShearKernel::add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+void ShearKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store) {
   const Columns c = columns();
   rift::Vec3* const stored_f_shear = store ? e_f_shear.values().data() : nullptr;
-  for (const Match& m : ms) {
+  for (std::size_t i = 0; i < ms.size(); ++i) {
+    const Match& m = ms[i];
     Result r;
     if (!evaluate<true>(m, in, c, r)) {
       if (store) {
-        stored_f_shear[m.orbit1_c0] = rift::Vec3::Zero();
-        stored_f_shear[m.orbit1_c2] = rift::Vec3::Zero();
-        stored_f_shear[m.orbit1_c1] = rift::Vec3::Zero();
-        stored_f_shear[m.orbit1_c3] = rift::Vec3::Zero();
+        stored_f_shear[ss[i].orbit1_c0] = rift::Vec3::Zero();
+        stored_f_shear[ss[i].orbit1_c2] = rift::Vec3::Zero();
+        stored_f_shear[ss[i].orbit1_c1] = rift::Vec3::Zero();
+        stored_f_shear[ss[i].orbit1_c3] = rift::Vec3::Zero();
       }
       continue;
     }
     f[m.vertex_c0] += r.f_shear_c0;
-    if (store) stored_f_shear[m.orbit1_c0] = r.f_shear_c0;
+    if (store) stored_f_shear[ss[i].orbit1_c0] = r.f_shear_c0;
     f[m.vertex_c2] += r.f_shear_c2;
-    if (store) stored_f_shear[m.orbit1_c2] = r.f_shear_c2;
+    if (store) stored_f_shear[ss[i].orbit1_c2] = r.f_shear_c2;
     f[m.vertex_c1] += r.f_shear_c1;
-    if (store) stored_f_shear[m.orbit1_c1] = r.f_shear_c1;
+    if (store) stored_f_shear[ss[i].orbit1_c1] = r.f_shear_c1;
     f[m.vertex_c3] += r.f_shear_c3;
-    if (store) stored_f_shear[m.orbit1_c3] = r.f_shear_c3;
+    if (store) stored_f_shear[ss[i].orbit1_c3] = r.f_shear_c3;
   }
 }
 
@@ -579,11 +585,11 @@ bool ShearKernel::evaluate_terms(const Match& m, const rift::ForceInput& in, rif
   return true;
 }
 
-void ShearKernel::store_terms(const Match& m, const rift::Vec3* terms) {
-  e_f_shear.values()[m.orbit1_c0] = terms[0];
-  e_f_shear.values()[m.orbit1_c2] = terms[1];
-  e_f_shear.values()[m.orbit1_c1] = terms[2];
-  e_f_shear.values()[m.orbit1_c3] = terms[3];
+void ShearKernel::store_terms([[maybe_unused]] const Match& m, [[maybe_unused]] const Stored& s, const rift::Vec3* terms) {
+  e_f_shear.values()[s.orbit1_c0] = terms[0];
+  e_f_shear.values()[s.orbit1_c2] = terms[1];
+  e_f_shear.values()[s.orbit1_c1] = terms[2];
+  e_f_shear.values()[s.orbit1_c3] = terms[3];
 }
 
 void ShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {
@@ -609,11 +615,11 @@ void ShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uin
   }
 }
 
-void ShearKernel::reset_stored(const Match& m) {
-  if (m.orbit1_c0 < e_f_shear.values().size()) e_f_shear.values()[m.orbit1_c0] = rift::Vec3::Zero();
-  if (m.orbit1_c2 < e_f_shear.values().size()) e_f_shear.values()[m.orbit1_c2] = rift::Vec3::Zero();
-  if (m.orbit1_c1 < e_f_shear.values().size()) e_f_shear.values()[m.orbit1_c1] = rift::Vec3::Zero();
-  if (m.orbit1_c3 < e_f_shear.values().size()) e_f_shear.values()[m.orbit1_c3] = rift::Vec3::Zero();
+void ShearKernel::reset_stored([[maybe_unused]] const Match& m, [[maybe_unused]] const Stored& s) {
+  if (s.orbit1_c0 < e_f_shear.values().size()) e_f_shear.values()[s.orbit1_c0] = rift::Vec3::Zero();
+  if (s.orbit1_c2 < e_f_shear.values().size()) e_f_shear.values()[s.orbit1_c2] = rift::Vec3::Zero();
+  if (s.orbit1_c1 < e_f_shear.values().size()) e_f_shear.values()[s.orbit1_c1] = rift::Vec3::Zero();
+  if (s.orbit1_c3 < e_f_shear.values().size()) e_f_shear.values()[s.orbit1_c3] = rift::Vec3::Zero();
 }
 
 rift::Real ShearKernel::energy(const Match& m, const rift::ForceInput& in) const {
@@ -1988,7 +1994,7 @@ bool VolumeShearKernel::find(const rift::GMap& g, rift::Dart support, rift::Dart
 
 void VolumeShearKernel::initialise(rift::GMap& g) {
   rift::packs::mass_spring3d::declare_embeddings(g);
-  e_f_volume_shear = require_embedding<rift::Vec3>(g, "f_volume_shear", "interaction 'volume_shear'");
+  if (store_) e_f_volume_shear = require_embedding<rift::Vec3>(g, "f_volume_shear", "interaction 'volume_shear'");
   e_position = require_embedding<rift::Vec3>(g, "position", "interaction 'volume_shear'");
   e_vshear_k = require_embedding<rift::Real>(g, "vshear_k", "interaction 'volume_shear'");
   e_vshear_rest0 = require_embedding<rift::Real>(g, "vshear_rest0", "interaction 'volume_shear'");
@@ -2043,7 +2049,7 @@ void VolumeShearKernel::initialise(rift::GMap& g) {
   });
 }
 
-bool VolumeShearKernel::match(const rift::GMap& g, rift::Dart support, Match& m) const {
+bool VolumeShearKernel::match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s) const {
   rift::Dart darts[48];
   if (!find(g, support, darts)) return false;
   m.orbit012_b0 = e_vshear_k.slot(darts[0]);
@@ -2055,14 +2061,16 @@ bool VolumeShearKernel::match(const rift::GMap& g, rift::Dart support, Match& m)
   m.vertex_s02 = e_position.slot(darts[10]);
   m.vertex_b6 = e_position.slot(darts[6]);
   m.vertex_s12 = e_position.slot(darts[18]);
-  m.orbit12_b0 = e_f_volume_shear.slot(darts[0]);
-  m.orbit12_s22 = e_f_volume_shear.slot(darts[26]);
-  m.orbit12_b2 = e_f_volume_shear.slot(darts[2]);
-  m.orbit12_s32 = e_f_volume_shear.slot(darts[34]);
-  m.orbit12_b4 = e_f_volume_shear.slot(darts[4]);
-  m.orbit12_s02 = e_f_volume_shear.slot(darts[10]);
-  m.orbit12_b6 = e_f_volume_shear.slot(darts[6]);
-  m.orbit12_s12 = e_f_volume_shear.slot(darts[18]);
+  if (s) {
+    s->orbit12_b0 = e_f_volume_shear.slot(darts[0]);
+    s->orbit12_s22 = e_f_volume_shear.slot(darts[26]);
+    s->orbit12_b2 = e_f_volume_shear.slot(darts[2]);
+    s->orbit12_s32 = e_f_volume_shear.slot(darts[34]);
+    s->orbit12_b4 = e_f_volume_shear.slot(darts[4]);
+    s->orbit12_s02 = e_f_volume_shear.slot(darts[10]);
+    s->orbit12_b6 = e_f_volume_shear.slot(darts[6]);
+    s->orbit12_s12 = e_f_volume_shear.slot(darts[18]);
+  }
   return true;
 }
 
@@ -2109,40 +2117,41 @@ inline bool VolumeShearKernel::evaluate(const Match& m, const rift::ForceInput& 
   return true;
 }
 
-void VolumeShearKernel::add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+void VolumeShearKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store) {
   const Columns c = columns();
   rift::Vec3* const stored_f_volume_shear = store ? e_f_volume_shear.values().data() : nullptr;
-  for (const Match& m : ms) {
+  for (std::size_t i = 0; i < ms.size(); ++i) {
+    const Match& m = ms[i];
     Result r;
     if (!evaluate<true>(m, in, c, r)) {
       if (store) {
-        stored_f_volume_shear[m.orbit12_b0] = rift::Vec3::Zero();
-        stored_f_volume_shear[m.orbit12_s22] = rift::Vec3::Zero();
-        stored_f_volume_shear[m.orbit12_b2] = rift::Vec3::Zero();
-        stored_f_volume_shear[m.orbit12_s32] = rift::Vec3::Zero();
-        stored_f_volume_shear[m.orbit12_b4] = rift::Vec3::Zero();
-        stored_f_volume_shear[m.orbit12_s02] = rift::Vec3::Zero();
-        stored_f_volume_shear[m.orbit12_b6] = rift::Vec3::Zero();
-        stored_f_volume_shear[m.orbit12_s12] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[i].orbit12_b0] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[i].orbit12_s22] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[i].orbit12_b2] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[i].orbit12_s32] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[i].orbit12_b4] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[i].orbit12_s02] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[i].orbit12_b6] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[i].orbit12_s12] = rift::Vec3::Zero();
       }
       continue;
     }
     f[m.vertex_b0] += r.f_volume_shear_b0;
-    if (store) stored_f_volume_shear[m.orbit12_b0] = r.f_volume_shear_b0;
+    if (store) stored_f_volume_shear[ss[i].orbit12_b0] = r.f_volume_shear_b0;
     f[m.vertex_s22] += r.f_volume_shear_s22;
-    if (store) stored_f_volume_shear[m.orbit12_s22] = r.f_volume_shear_s22;
+    if (store) stored_f_volume_shear[ss[i].orbit12_s22] = r.f_volume_shear_s22;
     f[m.vertex_b2] += r.f_volume_shear_b2;
-    if (store) stored_f_volume_shear[m.orbit12_b2] = r.f_volume_shear_b2;
+    if (store) stored_f_volume_shear[ss[i].orbit12_b2] = r.f_volume_shear_b2;
     f[m.vertex_s32] += r.f_volume_shear_s32;
-    if (store) stored_f_volume_shear[m.orbit12_s32] = r.f_volume_shear_s32;
+    if (store) stored_f_volume_shear[ss[i].orbit12_s32] = r.f_volume_shear_s32;
     f[m.vertex_b4] += r.f_volume_shear_b4;
-    if (store) stored_f_volume_shear[m.orbit12_b4] = r.f_volume_shear_b4;
+    if (store) stored_f_volume_shear[ss[i].orbit12_b4] = r.f_volume_shear_b4;
     f[m.vertex_s02] += r.f_volume_shear_s02;
-    if (store) stored_f_volume_shear[m.orbit12_s02] = r.f_volume_shear_s02;
+    if (store) stored_f_volume_shear[ss[i].orbit12_s02] = r.f_volume_shear_s02;
     f[m.vertex_b6] += r.f_volume_shear_b6;
-    if (store) stored_f_volume_shear[m.orbit12_b6] = r.f_volume_shear_b6;
+    if (store) stored_f_volume_shear[ss[i].orbit12_b6] = r.f_volume_shear_b6;
     f[m.vertex_s12] += r.f_volume_shear_s12;
-    if (store) stored_f_volume_shear[m.orbit12_s12] = r.f_volume_shear_s12;
+    if (store) stored_f_volume_shear[ss[i].orbit12_s12] = r.f_volume_shear_s12;
   }
 }
 
@@ -2192,15 +2201,15 @@ bool VolumeShearKernel::evaluate_terms(const Match& m, const rift::ForceInput& i
   return true;
 }
 
-void VolumeShearKernel::store_terms(const Match& m, const rift::Vec3* terms) {
-  e_f_volume_shear.values()[m.orbit12_b0] = terms[0];
-  e_f_volume_shear.values()[m.orbit12_s22] = terms[1];
-  e_f_volume_shear.values()[m.orbit12_b2] = terms[2];
-  e_f_volume_shear.values()[m.orbit12_s32] = terms[3];
-  e_f_volume_shear.values()[m.orbit12_b4] = terms[4];
-  e_f_volume_shear.values()[m.orbit12_s02] = terms[5];
-  e_f_volume_shear.values()[m.orbit12_b6] = terms[6];
-  e_f_volume_shear.values()[m.orbit12_s12] = terms[7];
+void VolumeShearKernel::store_terms([[maybe_unused]] const Match& m, [[maybe_unused]] const Stored& s, const rift::Vec3* terms) {
+  e_f_volume_shear.values()[s.orbit12_b0] = terms[0];
+  e_f_volume_shear.values()[s.orbit12_s22] = terms[1];
+  e_f_volume_shear.values()[s.orbit12_b2] = terms[2];
+  e_f_volume_shear.values()[s.orbit12_s32] = terms[3];
+  e_f_volume_shear.values()[s.orbit12_b4] = terms[4];
+  e_f_volume_shear.values()[s.orbit12_s02] = terms[5];
+  e_f_volume_shear.values()[s.orbit12_b6] = terms[6];
+  e_f_volume_shear.values()[s.orbit12_s12] = terms[7];
 }
 
 void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {
@@ -2234,15 +2243,15 @@ void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const st
   }
 }
 
-void VolumeShearKernel::reset_stored(const Match& m) {
-  if (m.orbit12_b0 < e_f_volume_shear.values().size()) e_f_volume_shear.values()[m.orbit12_b0] = rift::Vec3::Zero();
-  if (m.orbit12_s22 < e_f_volume_shear.values().size()) e_f_volume_shear.values()[m.orbit12_s22] = rift::Vec3::Zero();
-  if (m.orbit12_b2 < e_f_volume_shear.values().size()) e_f_volume_shear.values()[m.orbit12_b2] = rift::Vec3::Zero();
-  if (m.orbit12_s32 < e_f_volume_shear.values().size()) e_f_volume_shear.values()[m.orbit12_s32] = rift::Vec3::Zero();
-  if (m.orbit12_b4 < e_f_volume_shear.values().size()) e_f_volume_shear.values()[m.orbit12_b4] = rift::Vec3::Zero();
-  if (m.orbit12_s02 < e_f_volume_shear.values().size()) e_f_volume_shear.values()[m.orbit12_s02] = rift::Vec3::Zero();
-  if (m.orbit12_b6 < e_f_volume_shear.values().size()) e_f_volume_shear.values()[m.orbit12_b6] = rift::Vec3::Zero();
-  if (m.orbit12_s12 < e_f_volume_shear.values().size()) e_f_volume_shear.values()[m.orbit12_s12] = rift::Vec3::Zero();
+void VolumeShearKernel::reset_stored([[maybe_unused]] const Match& m, [[maybe_unused]] const Stored& s) {
+  if (s.orbit12_b0 < e_f_volume_shear.values().size()) e_f_volume_shear.values()[s.orbit12_b0] = rift::Vec3::Zero();
+  if (s.orbit12_s22 < e_f_volume_shear.values().size()) e_f_volume_shear.values()[s.orbit12_s22] = rift::Vec3::Zero();
+  if (s.orbit12_b2 < e_f_volume_shear.values().size()) e_f_volume_shear.values()[s.orbit12_b2] = rift::Vec3::Zero();
+  if (s.orbit12_s32 < e_f_volume_shear.values().size()) e_f_volume_shear.values()[s.orbit12_s32] = rift::Vec3::Zero();
+  if (s.orbit12_b4 < e_f_volume_shear.values().size()) e_f_volume_shear.values()[s.orbit12_b4] = rift::Vec3::Zero();
+  if (s.orbit12_s02 < e_f_volume_shear.values().size()) e_f_volume_shear.values()[s.orbit12_s02] = rift::Vec3::Zero();
+  if (s.orbit12_b6 < e_f_volume_shear.values().size()) e_f_volume_shear.values()[s.orbit12_b6] = rift::Vec3::Zero();
+  if (s.orbit12_s12 < e_f_volume_shear.values().size()) e_f_volume_shear.values()[s.orbit12_s12] = rift::Vec3::Zero();
 }
 
 rift::Real VolumeShearKernel::energy(const Match& m, const rift::ForceInput& in) const {

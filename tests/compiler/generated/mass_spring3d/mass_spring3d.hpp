@@ -44,6 +44,10 @@ class StretchKernel {
     rift::Slot vertex_a = rift::kNoSlot;  // vertex of a
     rift::Slot vertex_b = rift::kNoSlot;  // vertex of b
     rift::Slot orbit0_a = rift::kNoSlot;  // <0> of a
+  };
+  /// The slots only stored forces and `store`s write: cached only when the
+  /// interaction stores (rift::CachedInteraction), beside the matches.
+  struct Stored {
     rift::Slot dart_a = rift::kNoSlot;  // <> of a
     rift::Slot dart_b = rift::kNoSlot;  // <> of b
   };
@@ -58,12 +62,17 @@ class StretchKernel {
   const StretchParams& params() const { return p_; }
   /// Declares the pack's embeddings the map lacks, binds them and runs the interaction's inits.
   void initialise(rift::GMap& g);
-  bool match(const rift::GMap& g, rift::Dart support, Match& m) const;
+  /// Before initialise: false when nothing reads the stored forces, whose
+  /// embeddings are then left unbound.
+  void set_store_forces(bool on) { store_ = on; }
+  /// Fills s too unless it is null.
+  bool match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s = nullptr) const;
   /// The dart of d's support orbit to match from: the one binding the smallest vertex
   /// slots first (the inits use it, and so does the simulator for a new orbit).
   rift::Dart support_dart(const rift::GMap& g, rift::Dart d) const;
-  /// The force pass over every match: adds each force to f (and stores it when `store`).
-  void add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store);
+  /// The force pass over every match: adds each force to f (and stores it when `store`,
+  /// at the slots of ss[i], parallel to ms).
+  void add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store);
   /// The vertex slots of a match's kForceTerms forces, in the order add_forces_all adds
   /// them (the coloured scatter of several threads groups matches by them).
   static constexpr int kForceTerms = 2;
@@ -75,11 +84,11 @@ class StretchKernel {
   /// One match's kForceTerms forces (zero where a `when` fails; false then).
   bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
   /// Stores forces computed by evaluate_terms into m's stored-force slots.
-  void store_terms(const Match& m, const rift::Vec3* terms);
+  void store_terms(const Match& m, const Stored& s, const rift::Vec3* terms);
   /// The force pass over groups: adds counts[i] times the forces of reps[i];
   /// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.
   void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
-  void reset_stored(const Match& m);
+  void reset_stored(const Match& m, const Stored& s);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).
   static constexpr bool kHasEnergy = true;
@@ -115,6 +124,7 @@ class StretchKernel {
   rift::Embedding<rift::Vec3> e_position;
   rift::Embedding<rift::Real> e_stretch_k;
   rift::Embedding<rift::Real> e_stretch_rest;
+  bool store_ = true;
 };
 using StretchInteraction = rift::CachedInteraction<StretchKernel>;
 
@@ -133,6 +143,10 @@ class ShearKernel {
     rift::Slot orbit01_c0 = rift::kNoSlot;  // <0,1> of c0
     rift::Slot vertex_c1 = rift::kNoSlot;  // vertex of c1
     rift::Slot vertex_c3 = rift::kNoSlot;  // vertex of c3
+  };
+  /// The slots only stored forces and `store`s write: cached only when the
+  /// interaction stores (rift::CachedInteraction), beside the matches.
+  struct Stored {
     rift::Slot orbit1_c0 = rift::kNoSlot;  // <1> of c0
     rift::Slot orbit1_c2 = rift::kNoSlot;  // <1> of c2
     rift::Slot orbit1_c1 = rift::kNoSlot;  // <1> of c1
@@ -149,9 +163,14 @@ class ShearKernel {
   const ShearParams& params() const { return p_; }
   /// Declares the pack's embeddings the map lacks, binds them, tags the first dart of every support orbit and runs the interaction's inits.
   void initialise(rift::GMap& g);
-  bool match(const rift::GMap& g, rift::Dart support, Match& m) const;
-  /// The force pass over every match: adds each force to f (and stores it when `store`).
-  void add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store);
+  /// Before initialise: false when nothing reads the stored forces, whose
+  /// embeddings are then left unbound.
+  void set_store_forces(bool on) { store_ = on; }
+  /// Fills s too unless it is null.
+  bool match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s = nullptr) const;
+  /// The force pass over every match: adds each force to f (and stores it when `store`,
+  /// at the slots of ss[i], parallel to ms).
+  void add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store);
   /// The vertex slots of a match's kForceTerms forces, in the order add_forces_all adds
   /// them (the coloured scatter of several threads groups matches by them).
   static constexpr int kForceTerms = 4;
@@ -163,11 +182,11 @@ class ShearKernel {
   /// One match's kForceTerms forces (zero where a `when` fails; false then).
   bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
   /// Stores forces computed by evaluate_terms into m's stored-force slots.
-  void store_terms(const Match& m, const rift::Vec3* terms);
+  void store_terms(const Match& m, const Stored& s, const rift::Vec3* terms);
   /// The force pass over groups: adds counts[i] times the forces of reps[i];
   /// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.
   void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
-  void reset_stored(const Match& m);
+  void reset_stored(const Match& m, const Stored& s);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).
   static constexpr bool kHasEnergy = true;
@@ -208,6 +227,7 @@ class ShearKernel {
   rift::Embedding<rift::Real> e_shear_rest02;
   rift::Embedding<rift::Real> e_shear_rest13;
   rift::Embedding<rift::Bool> tag_;
+  bool store_ = true;
 };
 using ShearInteraction = rift::CachedInteraction<ShearKernel>;
 
@@ -230,6 +250,10 @@ class VolumeShearKernel {
     rift::Slot vertex_s02 = rift::kNoSlot;  // vertex of s02
     rift::Slot vertex_b6 = rift::kNoSlot;  // vertex of b6
     rift::Slot vertex_s12 = rift::kNoSlot;  // vertex of s12
+  };
+  /// The slots only stored forces and `store`s write: cached only when the
+  /// interaction stores (rift::CachedInteraction), beside the matches.
+  struct Stored {
     rift::Slot orbit12_b0 = rift::kNoSlot;  // <1,2> of b0
     rift::Slot orbit12_s22 = rift::kNoSlot;  // <1,2> of s22
     rift::Slot orbit12_b2 = rift::kNoSlot;  // <1,2> of b2
@@ -250,9 +274,14 @@ class VolumeShearKernel {
   const VolumeShearParams& params() const { return p_; }
   /// Declares the pack's embeddings the map lacks, binds them, tags the first dart of every support orbit and runs the interaction's inits.
   void initialise(rift::GMap& g);
-  bool match(const rift::GMap& g, rift::Dart support, Match& m) const;
-  /// The force pass over every match: adds each force to f (and stores it when `store`).
-  void add_forces_all(std::span<const Match> ms, const rift::ForceInput& in, rift::Vec3* f, bool store);
+  /// Before initialise: false when nothing reads the stored forces, whose
+  /// embeddings are then left unbound.
+  void set_store_forces(bool on) { store_ = on; }
+  /// Fills s too unless it is null.
+  bool match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s = nullptr) const;
+  /// The force pass over every match: adds each force to f (and stores it when `store`,
+  /// at the slots of ss[i], parallel to ms).
+  void add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store);
   /// The vertex slots of a match's kForceTerms forces, in the order add_forces_all adds
   /// them (the coloured scatter of several threads groups matches by them).
   static constexpr int kForceTerms = 8;
@@ -264,11 +293,11 @@ class VolumeShearKernel {
   /// One match's kForceTerms forces (zero where a `when` fails; false then).
   bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
   /// Stores forces computed by evaluate_terms into m's stored-force slots.
-  void store_terms(const Match& m, const rift::Vec3* terms);
+  void store_terms(const Match& m, const Stored& s, const rift::Vec3* terms);
   /// The force pass over groups: adds counts[i] times the forces of reps[i];
   /// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.
   void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
-  void reset_stored(const Match& m);
+  void reset_stored(const Match& m, const Stored& s);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).
   static constexpr bool kHasEnergy = true;
@@ -317,6 +346,7 @@ class VolumeShearKernel {
   rift::Embedding<rift::Real> e_vshear_rest2;
   rift::Embedding<rift::Real> e_vshear_rest3;
   rift::Embedding<rift::Bool> tag_;
+  bool store_ = true;
 };
 using VolumeShearInteraction = rift::CachedInteraction<VolumeShearKernel>;
 
