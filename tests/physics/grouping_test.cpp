@@ -24,19 +24,6 @@ std::unique_ptr<Simulation> make(GMap map, const std::vector<Use>& interactions,
   return simulate(std::move(map), setup);
 }
 
-/// A random deformation and velocity, the same for any simulation of the
-/// same mesh (slots are assigned in the same order).
-void deform(Simulation& sim, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<Real> u(-1, 1);
-  auto& x = sim.position().values();
-  auto& v = sim.velocity().values();
-  for (std::size_t s = 0; s < x.size(); ++s) {
-    x[s] += 0.05 * Vec3(u(rng), u(rng), u(rng));
-    v[s] = Vec3(u(rng), u(rng), u(rng));
-  }
-}
-
 Real largest(const std::vector<Vec3>& f) {
   Real m = 0;
   for (const Vec3& x : f)
@@ -64,8 +51,8 @@ std::size_t matched(const Simulation& sim) {
 /// their key, so their stored values are each member's own).
 void expect_same(Simulation& grouped, Simulation& plain, const std::vector<std::string>& stored,
                  unsigned seed) {
-  deform(grouped, seed);
-  deform(plain, seed);
+  deform(grouped, seed, 0.05);
+  deform(plain, seed, 0.05);
   const std::vector<Vec3> fg = internal_forces(grouped);
   const std::vector<Vec3> fp = internal_forces(plain);
   ASSERT_EQ(fg.size(), fp.size());
@@ -171,7 +158,7 @@ TEST(Grouping, QuadClothEvaluatesEachVertexPairOnce) {
 // evaluation gives.
 TEST(Grouping, StoredAtomicForcesAreEachMembersOwn) {
   auto sim = make(assemble_gmap(make_grid(GridKind::Quad, 6, 6)), paper_cloth_springs(), true);
-  deform(*sim, 7);
+  deform(*sim, 7, 0.05);
   const ForceInput in{sim->position().values().data(), sim->velocity().values().data()};
   std::vector<Vec3> f(sim->position().values().size(), Vec3::Zero());
   for (const auto& m : sim->force_models())
@@ -228,8 +215,8 @@ TEST(Grouping, DifferentParametersDoNotGroup) {
     sim->on_topology_changed(touched);
   }
   EXPECT_EQ(evaluated(*grouped), before + 1);
-  deform(*grouped, 3);
-  deform(*plain, 3);
+  deform(*grouped, 3, 0.05);
+  deform(*plain, 3, 0.05);
   const std::vector<Vec3> fg = internal_forces(*grouped);
   const std::vector<Vec3> fp = internal_forces(*plain);
   for (std::size_t s = 0; s < fp.size(); ++s)

@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <memory>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -145,6 +146,20 @@ void move_vertices(Simulation& sim, F&& f) {
   auto& x = sim.position().values();
   for (Slot s = 0; s < x.size(); ++s) {
     if (att.slot_alive(s)) x[s] = f(x[s]);
+  }
+}
+
+/// A random deformation (each coordinate moved by at most `amplitude`) and
+/// velocity, the same for any simulation of the same mesh (slots are
+/// assigned in the same order): two simulations compared on one state.
+inline void deform(Simulation& sim, unsigned seed, Real amplitude) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<Real> u(-1, 1);
+  auto& x = sim.position().values();
+  auto& v = sim.velocity().values();
+  for (std::size_t s = 0; s < x.size(); ++s) {
+    x[s] += amplitude * Vec3(u(rng), u(rng), u(rng));
+    v[s] = Vec3(u(rng), u(rng), u(rng));
   }
 }
 

@@ -140,23 +140,16 @@ TEST_P(MatchCacheTest, LocalRematchEqualsFullRematch) {
 INSTANTIATE_TEST_SUITE_P(Meshes, MatchCacheTest,
                          ::testing::Values("grid:quad:4x4", "grid:mix:3x3"));
 
-// After every local re-match the colouring still covers each match once and
-// no two blocks of one colour share a vertex, and the forces are the same
-// bits on 1 and 3 threads (blocks of 4 matches: many blocks, many colours).
-TEST(MatchCache, TheScatterColouringFollowsLocalRematches) {
-  GMap map = assemble_gmap(make_generated_mesh("grid:quad:12x12"));
-  ColouredHinge hinge;
-  hinge.set_scatter_block(4);
-  hinge.initialise(map);
-  auto targets = [&](std::size_t e, Slot* out) {
-    hinge.kernel().force_targets(hinge.cache().matches()[e], out);
-  };
-  ASSERT_EQ(hinge.colouring().check(hinge.active_matches(), 2, targets), "");
-  EXPECT_GT(hinge.colouring().colours(), 1u);
-  std::mt19937 rng(5);
+/// Unsews a random interior edge of `map` on two steps out of three and sews
+/// the latest one back on the third, `steps` times; after each change calls
+/// `changed(step, region)` with the darts of the vertices around it, the
+/// region a re-match after that rewrite must look at.
+template <class F>
+void tear_and_mend_at_random(GMap& map, unsigned seed, int steps, F&& changed) {
+  std::mt19937 rng(seed);
   std::uniform_int_distribution<Dart> pick(0, static_cast<Dart>(map.capacity() - 1));
   std::vector<std::pair<Dart, Dart>> undone;
-  for (int step = 0; step < 200; ++step) {
+  for (int step = 0; step < steps; ++step) {
     std::vector<Dart> touched;
     if (step % 3 == 2 && !undone.empty()) {
       const auto [a, b] = undone.back();
@@ -179,9 +172,27 @@ TEST(MatchCache, TheScatterColouringFollowsLocalRematches) {
     std::vector<Dart> region;
     for (Dart t : touched)
       map.for_each_in_orbit(t, Orbit::cell(0, 2), [&](Dart x) { region.push_back(x); });
-    hinge.rematch(map, region);
-    ASSERT_EQ(hinge.colouring().check(hinge.active_matches(), 2, targets), "") << "step " << step;
+    changed(step, region);
   }
+}
+
+// After every local re-match the colouring still covers each match once and
+// no two blocks of one colour share a vertex, and the forces are the same
+// bits on 1 and 3 threads (blocks of 4 matches: many blocks, many colours).
+TEST(MatchCache, TheScatterColouringFollowsLocalRematches) {
+  GMap map = assemble_gmap(make_generated_mesh("grid:quad:12x12"));
+  ColouredHinge hinge;
+  hinge.set_scatter_block(4);
+  hinge.initialise(map);
+  auto targets = [&](std::size_t e, Slot* out) {
+    hinge.kernel().force_targets(hinge.cache().matches()[e], out);
+  };
+  ASSERT_EQ(hinge.colouring().check(hinge.active_matches(), 2, targets), "");
+  EXPECT_GT(hinge.colouring().colours(), 1u);
+  tear_and_mend_at_random(map, 5, 200, [&](int step, const std::vector<Dart>& region) {
+    hinge.rematch(map, region);
+    EXPECT_EQ(hinge.colouring().check(hinge.active_matches(), 2, targets), "") << "step " << step;
+  });
   EXPECT_GT(hinge.colouring().blocks() * 4, hinge.active_matches()) << "pending became blocks";
   auto& x = map.embedding<Vec3>("position").values();
   for (std::size_t i = 0; i < x.size(); ++i)
@@ -231,39 +242,14 @@ TEST(MatchCache, AnOwnerIndexMadeAtTheFirstTearEqualsOneMadeAtTheBuild) {
     }
   };
   same(-1);
-  std::mt19937 rng(23);
-  std::uniform_int_distribution<Dart> pick(0, static_cast<Dart>(map.capacity() - 1));
-  std::vector<std::pair<Dart, Dart>> undone;
   int rematches = 0;
-  for (int step = 0; step < 150; ++step) {
-    std::vector<Dart> touched;
-    if (step % 3 == 2 && !undone.empty()) {
-      const auto [a, b] = undone.back();
-      undone.pop_back();
-      if (!map.sew(a, b, 2)) continue;
-      map.for_each_in_orbit(a, Orbit::sewing(2, 2), [&](Dart x) {
-        touched.push_back(x);
-        touched.push_back(map.alpha(x, 2));
-      });
-    } else {
-      const Dart d = pick(rng);
-      if (map.is_free(d, 2)) continue;
-      undone.emplace_back(d, map.alpha(d, 2));
-      map.for_each_in_orbit(d, Orbit::sewing(2, 2), [&](Dart x) {
-        touched.push_back(x);
-        touched.push_back(map.alpha(x, 2));
-      });
-      map.unsew(d, 2);
-    }
-    std::vector<Dart> region;
-    for (Dart t : touched)
-      map.for_each_in_orbit(t, Orbit::cell(0, 2), [&](Dart x) { region.push_back(x); });
+  tear_and_mend_at_random(map, 23, 150, [&](int step, const std::vector<Dart>& region) {
     eager.rematch(map, Orbit{2}, HingeKernel::kRadius, region, match, lost);
     lazy.rematch(map, Orbit{2}, HingeKernel::kRadius, region, match, lost);
     ++rematches;
     EXPECT_TRUE(lazy.indexes_owners());
     same(step);
-  }
+  });
   EXPECT_GT(rematches, 50);
   EXPECT_NE(lazy.size(), 0u);
 }
