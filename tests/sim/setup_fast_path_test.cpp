@@ -6,7 +6,6 @@
 // kind, and the maps must stay valid.
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cstdint>
 #include <filesystem>
 #include <string>
