@@ -1,5 +1,7 @@
 #include "rift/core/huge_pages.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <cstdint>
 
 #if defined(__linux__)
@@ -7,6 +9,18 @@
 #endif
 
 namespace rift {
+
+namespace {
+std::atomic<std::size_t> g_headroom_factor{2};
+}  // namespace
+
+std::size_t headroom_factor() {
+  return g_headroom_factor.load(std::memory_order_relaxed);
+}
+
+void set_headroom_factor(std::size_t factor) {
+  g_headroom_factor.store(std::max<std::size_t>(factor, 1), std::memory_order_relaxed);
+}
 
 void advise_huge_pages([[maybe_unused]] const void* data, [[maybe_unused]] std::size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)

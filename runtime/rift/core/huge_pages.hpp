@@ -23,39 +23,59 @@ inline constexpr std::size_t kHugePageAdviceBytes = std::size_t{4} << 20;
 /// with transparent huge pages. Only a hint: does nothing where unsupported.
 void advise_huge_pages(const void* data, std::size_t bytes);
 
-/// v.reserve(n), except that a large array gets a fresh buffer advised for
-/// huge pages (its elements move there): for arrays filled by push_back up to
-/// a known bound, which then neither move nor fault in 4 KiB at a time. Only
-/// the pages written become resident, so a generous bound costs address
-/// space, not memory.
+/// Growth headroom (issue 12, a tear costs what it touches). An array that
+/// reserve_huge or grow_huge gives a new buffer gets capacity for
+/// headroom_factor() times the elements asked for: address space, not
+/// memory, since only the pages written become resident. A rewrite that adds
+/// a few darts, slots or matches to a 10^6-vertex map then appends in place
+/// instead of copying (and faulting in) every dart array and column of the
+/// map at its first tear. Past the headroom an array grows again by the same
+/// factor (and at least doubles), so growth stays amortised. Default 2 (the
+/// next doubling reserved ahead); 1 gives exact buffers, as without headroom.
+std::size_t headroom_factor();
+/// Sets headroom_factor() for arrays given a buffer from now on (tests
+/// compare maps that outgrow their headroom with maps that never do).
+void set_headroom_factor(std::size_t factor);
+
+namespace detail {
+/// Moves v's elements to a fresh buffer of headroom_factor() * n elements,
+/// and at least twice the old capacity (amortised growth whatever the factor).
+/// Only the first n elements' pages are advised for huge pages: the headroom
+/// stays in 4 KiB pages, so that the last huge page of the used part, and
+/// nothing past it, becomes resident (peak memory as without headroom).
 template <class T, class A>
-void reserve_huge(std::vector<T, A>& v, std::size_t n) {
-  if (n <= v.capacity()) return;
-  if (n * sizeof(T) < kHugePageAdviceBytes) {
-    v.reserve(n);
-    return;
-  }
+void regrow_huge(std::vector<T, A>& v, std::size_t n) {
   std::vector<T, A> bigger;
-  bigger.reserve(n);
-  advise_huge_pages(bigger.data(), bigger.capacity() * sizeof(T));
+  bigger.reserve(std::max(n * headroom_factor(), 2 * v.capacity()));
+  if (n * sizeof(T) >= kHugePageAdviceBytes) advise_huge_pages(bigger.data(), n * sizeof(T));
   bigger.insert(bigger.end(), std::make_move_iterator(v.begin()), std::make_move_iterator(v.end()));
   v.swap(bigger);
 }
+}  // namespace detail
 
-/// v.resize(n, fill), except that a large array that must move to a new
-/// buffer gets one advised for huge pages before anything is written to it.
-/// The capacity grows geometrically, as resize's would.
+/// v.reserve(n) with headroom (see headroom_factor), the part for n elements
+/// of a large array advised for huge pages: for arrays filled by push_back up
+/// to a known bound, which then neither move nor fault in 4 KiB at a time.
+template <class T, class A>
+void reserve_huge(std::vector<T, A>& v, std::size_t n) {
+  if (n <= v.capacity()) return;
+  detail::regrow_huge(v, n);
+}
+
+/// v.resize(n, fill), except that an array that must move to a new buffer
+/// gets one with headroom (see headroom_factor), advised for huge pages
+/// before anything is written to it when large.
 template <class T, class A>
 void grow_huge(std::vector<T, A>& v, std::size_t n, const T& fill) {
-  if (n > v.capacity() && n * sizeof(T) >= kHugePageAdviceBytes) {
-    std::vector<T, A> bigger;
-    bigger.reserve(std::max(n, 2 * v.capacity()));
-    advise_huge_pages(bigger.data(), bigger.capacity() * sizeof(T));
-    bigger.insert(bigger.end(), std::make_move_iterator(v.begin()),
-                  std::make_move_iterator(v.end()));
-    v.swap(bigger);
-  }
+  if (n > v.capacity()) detail::regrow_huge(v, std::max(n, v.size() + 1));
   v.resize(n, fill);
+}
+
+/// v.push_back(x), growing like grow_huge when v is full.
+template <class T, class A>
+void push_back_huge(std::vector<T, A>& v, const T& x) {
+  if (v.size() == v.capacity()) detail::regrow_huge(v, v.size() + 1);
+  v.push_back(x);
 }
 
 }  // namespace rift

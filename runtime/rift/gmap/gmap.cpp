@@ -85,14 +85,13 @@ GMap::GMap(int dimension) : dimension_(dimension), identity_(next_identity()) {
 // ---- darts ---------------------------------------------------------------------
 
 void GMap::reserve(std::size_t count) {
+  // With headroom past `want` (huge_pages.hpp): the rewrites of a tearing
+  // map append darts in place rather than copying every dart array.
   const std::size_t want = alive_.size() + count;
-  for (int i = 0; i <= dimension_; ++i) {
-    alpha_[i].reserve(want);
-    advise_huge_pages(alpha_[i].data(), alpha_[i].capacity() * sizeof(Dart));
-  }
-  alive_.reserve(want);
-  mark_bits_.reserve(want);
-  advise_huge_pages(mark_bits_.data(), mark_bits_.capacity() * sizeof(std::uint32_t));
+  for (int i = 0; i <= dimension_; ++i)
+    reserve_huge(alpha_[i], want);
+  reserve_huge(alive_, want);
+  reserve_huge(mark_bits_, want);
 }
 
 Dart GMap::create_dart() {
@@ -107,9 +106,9 @@ Dart GMap::create_dart() {
     if (alive_.size() >= kNoDart) throw std::length_error("G-map: out of 32-bit dart indices");
     d = static_cast<Dart>(alive_.size());
     for (int i = 0; i <= dimension_; ++i)
-      alpha_[i].push_back(d);
-    alive_.push_back(1);
-    mark_bits_.push_back(0);
+      push_back_huge(alpha_[i], d);
+    push_back_huge(alive_, std::uint8_t{1});
+    push_back_huge(mark_bits_, std::uint32_t{0});
     for (auto& att : attachments_)
       att->resize_darts(alive_.size());
   }

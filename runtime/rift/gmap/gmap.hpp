@@ -124,6 +124,9 @@ class GMap {
   // ---- links -----------------------------------------------------------------
 
   Dart alpha(Dart d, int i) const { return alpha_[i][d]; }
+  /// The array of alpha_i, indexed by dart: it moves only when the map
+  /// outgrows its headroom (rift/core/huge_pages.hpp; tests check that).
+  const Dart* alpha_data(int i) const { return alpha_[i].data(); }
   bool is_free(Dart d, int i) const { return alpha_[i][d] == d; }
 
   /// Raw link: alpha_i(a) = b and alpha_i(b) = a. No embedding is updated;

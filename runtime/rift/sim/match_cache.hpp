@@ -113,7 +113,7 @@ class MatchCache {
   void rematch(const GMap& map, Orbit support, int radius, std::span<const Dart> region,
                MatchFn&& match, LostFn&& lost, Observer& observer, ChooseFn&& choose) {
     index_owners(map);
-    if (entry_of_dart_.size() < map.capacity()) entry_of_dart_.resize(map.capacity(), kNone);
+    if (entry_of_dart_.size() < map.capacity()) grow_huge(entry_of_dart_, map.capacity(), kNone);
     // Deleted owners first: their matches are gone for good.
     for (Dart d : region) {
       if (d < entry_of_dart_.size() && entry_of_dart_[d] != kNone && !map.is_alive(d)) {
@@ -189,11 +189,12 @@ class MatchCache {
  private:
   void insert(Dart owner, const Match& m) {
     if (indexed_) {
-      if (entry_of_dart_.size() <= owner) entry_of_dart_.resize(owner + 1, kNone);
+      if (entry_of_dart_.size() <= owner) grow_huge(entry_of_dart_, owner + 1, kNone);
       entry_of_dart_[owner] = static_cast<std::uint32_t>(matches_.size());
     }
-    matches_.push_back(m);
-    owners_.push_back(owner);
+    // Within the headroom of huge_pages.hpp: a tear appends in place.
+    push_back_huge(matches_, m);
+    push_back_huge(owners_, owner);
   }
   // Swap-and-pop keeps the array dense. Only rematch erases: indexed.
   template <class Observer>

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "rift/core/huge_pages.hpp"
 #include "rift/core/interrupt.hpp"
 #include "rift/core/parallel.hpp"
 #include "rift/gmap/state_columns.hpp"
@@ -106,7 +107,8 @@ std::string Simulation::implicit_potential_missing() const {
 
 void Simulation::refresh_inverse_masses() {
   const std::size_t slots = position_.attachment().slot_capacity();
-  inverse_mass_.assign(slots, 0);
+  inverse_mass_.clear();
+  grow_huge(inverse_mass_, slots, Real{0});
   for (Slot s = 0; s < slots; ++s)
     refresh_inverse_mass(s);
   // Held vertices start where their handle puts them.
@@ -122,7 +124,8 @@ void Simulation::refresh_inverse_masses(std::span<const Dart> region) {
   // split, and the slots rewrites freed, which must not move (the free list
   // is short: slots are freed only when a whole vertex disappears).
   const OrbitAttachment& att = position_.attachment();
-  if (inverse_mass_.size() < att.slot_capacity()) inverse_mass_.resize(att.slot_capacity(), 0);
+  if (inverse_mass_.size() < att.slot_capacity())
+    grow_huge(inverse_mass_, att.slot_capacity(), Real{0});
   for (Dart d : region) {
     if (map_.is_alive(d)) refresh_inverse_mass(att.slot(d));
   }
