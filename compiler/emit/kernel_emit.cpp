@@ -537,12 +537,20 @@ void write_evaluate(Writer& w, const Kernel& k) {
 
 // The whole force pass: column pointers are loaded once instead of once per
 // match (stores through Vec3* may alias anything, so the compiler cannot
-// hoist them itself), and the body is inlined.
-void write_add_forces_all(Writer& w, const Kernel& k) {
+// hoist them itself), and the body is inlined. `indexed`: the pass over
+// ms[at[i]] (add_forces_at, for a block of the coloured scatter a tear left
+// out of order, read in place), else over consecutive matches. Two functions
+// rather than one testing `at`: the test in the loop, or a lambda over both
+// whose captures the stores may alias, cost the consecutive pass 3-15 %.
+void write_add_forces_all(Writer& w, const Kernel& k, bool indexed) {
   const ir::Body& b = k.plan->body;
   const bool forces = !b.forces.empty();
   const bool stores_values = !b.stores.empty();
-  w.open("void " + k.cls + "::add_forces_all(std::span<const Match> ms, " +
+  const std::string ss_i = indexed ? "ss[at[i]]" : "ss[i]";
+  w.open("void " + k.cls +
+         (indexed ? "::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, "
+                    "std::size_t n, "
+                  : "::add_forces_all(std::span<const Match> ms, ") +
          (has_stored_slots(k) ? "const Stored* ss" : "const Stored* /*ss*/") +
          ", const rift::ForceInput& in, " +
          (forces          ? "rift::Vec3* f, bool store"
@@ -565,7 +573,7 @@ void write_add_forces_all(Writer& w, const Kernel& k) {
     w.line("auto* const stored_" + e + " = store ? " + embedding_var(e) +
            ".values().data() : nullptr;");
   auto store_at = [&](const ir::Store& st) {
-    return "stored_" + st.embedding + "[" + slot_at(k, st.store_slot, "ss[i]") + "]";
+    return "stored_" + st.embedding + "[" + slot_at(k, st.store_slot, ss_i) + "]";
   };
   // With stored values, one loop per kind of evaluation (storing or not),
   // each with its own instantiation of the body: the integrator's other
@@ -574,15 +582,20 @@ void write_add_forces_all(Writer& w, const Kernel& k) {
   // Not inlined: two instantiations of the body in one function exceed the
   // inliner's growth limits, and the matrix products of both would be calls.
   if (stores_values) w.open("auto pass = [&]<bool kStore>() __attribute__((noinline)) {");
-  w.open("for (std::size_t i = 0; i < ms.size(); ++i) {");
-  w.line("const Match& m = ms[i];");
+  if (indexed) {
+    w.open("for (std::size_t i = 0; i < n; ++i) {");
+    w.line("const Match& m = ms[at[i]];");
+  } else {
+    w.open("for (std::size_t i = 0; i < ms.size(); ++i) {");
+    w.line("const Match& m = ms[i];");
+  }
   w.line("Result r;");
   if (forces || stores_values) {
     w.open(stores_values ? "if (!evaluate<true, kStore>(m, in, c, r)) {"
                          : "if (!evaluate<true>(m, in, c, r)) {");
     w.open(if_store + "{");
     for (const ir::Force& f : b.forces) {
-      w.line("stored_" + f.embedding + "[" + slot_at(k, f.store_slot, "ss[i]") +
+      w.line("stored_" + f.embedding + "[" + slot_at(k, f.store_slot, ss_i) +
              "] = rift::Vec3::Zero();");
     }
     for (const ir::Store& st : b.stores) {
@@ -596,7 +609,7 @@ void write_add_forces_all(Writer& w, const Kernel& k) {
     for (const ir::Force& f : b.forces) {
       const std::string field = std::string("r.") + force_field(b, f);
       w.line("f[m." + k.slots[static_cast<std::size_t>(f.vertex_slot)] + "] += " + field + ";");
-      w.line(if_store + "stored_" + f.embedding + "[" + slot_at(k, f.store_slot, "ss[i]") +
+      w.line(if_store + "stored_" + f.embedding + "[" + slot_at(k, f.store_slot, ss_i) +
              "] = " + field + ";");
     }
     if (stores_values) {
@@ -880,6 +893,8 @@ void write_group_key(Writer& w, const Kernel& k) {
   w.line();
 }
 
+void write_add_forces_grouped(Writer& w, const Kernel& k, bool indexed);
+
 void write_group_passes(Writer& w, const Kernel& k) {
   const ir::Body& b = k.plan->body;
   const std::string n = std::to_string(b.forces.size());
@@ -907,18 +922,35 @@ void write_group_passes(Writer& w, const Kernel& k) {
   w.line();
   // As add_forces_all, each force added count times; a pass that stores
   // also keeps each group's terms, which its members' stored forces copy.
+  // Over consecutive groups, and (add_forces_grouped_at) over reps[at[i]].
+  for (const bool indexed : {false, true})
+    write_add_forces_grouped(w, k, indexed);
+}
+
+void write_add_forces_grouped(Writer& w, const Kernel& k, bool indexed) {
+  const ir::Body& b = k.plan->body;
+  const std::string n = std::to_string(b.forces.size());
   w.open("void " + k.cls +
-         "::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const "
+         (indexed ? "::add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* "
+                    "counts, const std::uint32_t* at, std::size_t n, const "
+                  : "::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* "
+                    "counts, const ") +
          "rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {");
   w.line("const Columns c = columns();");
-  w.open("for (std::size_t i = 0; i < reps.size(); ++i) {");
-  w.line("const Match& m = reps[i];");
+  if (indexed) {
+    w.open("for (std::size_t i = 0; i < n; ++i) {");
+    w.line("const std::uint32_t e = at[i];");
+    w.line("const Match& m = reps[e];");
+  } else {
+    w.open("for (std::size_t i = 0; i < reps.size(); ++i) {");
+    w.line("const Match& m = reps[i];");
+  }
   w.line("Result r;");
   w.open("if (!evaluate<true>(m, in, c, r)) {");
   w.line("if (terms) for (int t = 0; t < " + n + "; ++t) terms[i * " + n + " + t].setZero();");
   w.line("continue;");
   w.close();
-  w.line("const rift::Real count = counts[i];");
+  w.line(indexed ? "const rift::Real count = counts[e];" : "const rift::Real count = counts[i];");
   for (const ir::Force& f : b.forces) {
     w.line("f[m." + k.slots[static_cast<std::size_t>(f.vertex_slot)] + "] += count * r." +
            force_field(b, f) + ";");
@@ -1064,6 +1096,11 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
   w.line(
       "void add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& "
       "in, rift::Vec3* f, bool store);");
+  w.line("/// The same over ms[at[i]] for i < n (ss parallel to ms): a block of matches a tear");
+  w.line("/// left out of order, read in place.");
+  w.line(
+      "void add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, "
+      "const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store);");
   if (!b.forces.empty()) {
     w.line(
         "/// The vertex slots of a match's kForceTerms forces, in the order add_forces_all adds");
@@ -1087,6 +1124,11 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
     w.line(
         "void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const "
         "rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);");
+    w.line("/// The same over reps[at[i]] (counts parallel to reps) for i < n.");
+    w.line(
+        "void add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, "
+        "const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, "
+        "rift::Vec3* terms);");
   }
   w.line("void reset_stored(const Match& m, const Stored& s);");
   if (accumulates(k.plan->body)) {
@@ -1175,7 +1217,8 @@ void emit_kernel(Writer& w, const InteractionPlan& plan, const PackModel& model)
   if (chooses_support_dart(k)) write_support_dart(w, k);
   write_columns(w, k);
   write_evaluate(w, k);
-  write_add_forces_all(w, k);
+  write_add_forces_all(w, k, false);
+  write_add_forces_all(w, k, true);
   write_force_targets(w, k);
   // Matches that store values are not grouped: each stores its own.
   if (!k.plan->body.forces.empty() && k.plan->body.stores.empty()) {

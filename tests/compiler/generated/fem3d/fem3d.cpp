@@ -459,6 +459,51 @@ void CorotationalKernel::add_forces_all(std::span<const Match> ms, const Stored*
   }
 }
 
+void CorotationalKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* /*ss*/, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+  const Columns c = columns();
+  rift::Vec3* const stored_f_fem = store ? e_f_fem.values().data() : nullptr;
+  auto* const stored_stress_mass = store ? e_stress_mass.values().data() : nullptr;
+  auto* const stored_stress_weighted = store ? e_stress_weighted.values().data() : nullptr;
+  auto pass = [&]<bool kStore>() __attribute__((noinline)) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const Match& m = ms[at[i]];
+      Result r;
+      if (!evaluate<true, kStore>(m, in, c, r)) {
+        if constexpr (kStore) {
+          stored_f_fem[m.orbit12_c0] = rift::Vec3::Zero();
+          stored_f_fem[m.orbit12_c1] = rift::Vec3::Zero();
+          stored_f_fem[m.orbit12_c2] = rift::Vec3::Zero();
+          stored_f_fem[m.orbit12_c3] = rift::Vec3::Zero();
+        }
+        continue;
+      }
+      f[m.vertex_c0] += r.f_fem_c0;
+      if constexpr (kStore) stored_f_fem[m.orbit12_c0] = r.f_fem_c0;
+      f[m.vertex_c1] += r.f_fem_c1;
+      if constexpr (kStore) stored_f_fem[m.orbit12_c1] = r.f_fem_c1;
+      f[m.vertex_c2] += r.f_fem_c2;
+      if constexpr (kStore) stored_f_fem[m.orbit12_c2] = r.f_fem_c2;
+      f[m.vertex_c3] += r.f_fem_c3;
+      if constexpr (kStore) stored_f_fem[m.orbit12_c3] = r.f_fem_c3;
+      if constexpr (kStore) {
+        stored_stress_weighted[m.vertex_c0] += r.stored_stress_weighted_c0;
+        stored_stress_weighted[m.vertex_c1] += r.stored_stress_weighted_c1;
+        stored_stress_weighted[m.vertex_c2] += r.stored_stress_weighted_c2;
+        stored_stress_weighted[m.vertex_c3] += r.stored_stress_weighted_c3;
+        stored_stress_mass[m.vertex_c0] += r.stored_stress_mass_c0;
+        stored_stress_mass[m.vertex_c1] += r.stored_stress_mass_c1;
+        stored_stress_mass[m.vertex_c2] += r.stored_stress_mass_c2;
+        stored_stress_mass[m.vertex_c3] += r.stored_stress_mass_c3;
+      }
+    }
+  };
+  if (store) {
+    pass.template operator()<true>();
+  } else {
+    pass.template operator()<false>();
+  }
+}
+
 void CorotationalKernel::force_targets(const Match& m, rift::Slot* out) const {
   out[0] = m.vertex_c0;
   out[1] = m.vertex_c1;

@@ -259,6 +259,26 @@ void StretchKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, 
   }
 }
 
+void StretchKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+  const Columns c = columns();
+  rift::Vec3* const stored_f_stretch = store ? e_f_stretch.values().data() : nullptr;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Match& m = ms[at[i]];
+    Result r;
+    if (!evaluate<true>(m, in, c, r)) {
+      if (store) {
+        stored_f_stretch[ss[at[i]].dart_a] = rift::Vec3::Zero();
+        stored_f_stretch[ss[at[i]].dart_b] = rift::Vec3::Zero();
+      }
+      continue;
+    }
+    f[m.vertex_a] += r.f_stretch_a;
+    if (store) stored_f_stretch[ss[at[i]].dart_a] = r.f_stretch_a;
+    f[m.vertex_b] += r.f_stretch_b;
+    if (store) stored_f_stretch[ss[at[i]].dart_b] = r.f_stretch_b;
+  }
+}
+
 void StretchKernel::force_targets(const Match& m, rift::Slot* out) const {
   out[0] = m.vertex_a;
   out[1] = m.vertex_b;
@@ -299,6 +319,26 @@ void StretchKernel::add_forces_grouped(std::span<const Match> reps, const std::u
       continue;
     }
     const rift::Real count = counts[i];
+    f[m.vertex_a] += count * r.f_stretch_a;
+    f[m.vertex_b] += count * r.f_stretch_b;
+    if (terms) {
+      terms[i * 2 + 0] = r.f_stretch_a;
+      terms[i * 2 + 1] = r.f_stretch_b;
+    }
+  }
+}
+
+void StretchKernel::add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {
+  const Columns c = columns();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t e = at[i];
+    const Match& m = reps[e];
+    Result r;
+    if (!evaluate<true>(m, in, c, r)) {
+      if (terms) for (int t = 0; t < 2; ++t) terms[i * 2 + t].setZero();
+      continue;
+    }
+    const rift::Real count = counts[e];
     f[m.vertex_a] += count * r.f_stretch_a;
     f[m.vertex_b] += count * r.f_stretch_b;
     if (terms) {
@@ -544,6 +584,32 @@ void ShearKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, co
   }
 }
 
+void ShearKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+  const Columns c = columns();
+  rift::Vec3* const stored_f_shear = store ? e_f_shear.values().data() : nullptr;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Match& m = ms[at[i]];
+    Result r;
+    if (!evaluate<true>(m, in, c, r)) {
+      if (store) {
+        stored_f_shear[ss[at[i]].orbit1_c0] = rift::Vec3::Zero();
+        stored_f_shear[ss[at[i]].orbit1_c2] = rift::Vec3::Zero();
+        stored_f_shear[ss[at[i]].orbit1_c1] = rift::Vec3::Zero();
+        stored_f_shear[ss[at[i]].orbit1_c3] = rift::Vec3::Zero();
+      }
+      continue;
+    }
+    f[m.vertex_c0] += r.f_shear_c0;
+    if (store) stored_f_shear[ss[at[i]].orbit1_c0] = r.f_shear_c0;
+    f[m.vertex_c2] += r.f_shear_c2;
+    if (store) stored_f_shear[ss[at[i]].orbit1_c2] = r.f_shear_c2;
+    f[m.vertex_c1] += r.f_shear_c1;
+    if (store) stored_f_shear[ss[at[i]].orbit1_c1] = r.f_shear_c1;
+    f[m.vertex_c3] += r.f_shear_c3;
+    if (store) stored_f_shear[ss[at[i]].orbit1_c3] = r.f_shear_c3;
+  }
+}
+
 void ShearKernel::force_targets(const Match& m, rift::Slot* out) const {
   out[0] = m.vertex_c0;
   out[1] = m.vertex_c2;
@@ -593,6 +659,30 @@ void ShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uin
       continue;
     }
     const rift::Real count = counts[i];
+    f[m.vertex_c0] += count * r.f_shear_c0;
+    f[m.vertex_c2] += count * r.f_shear_c2;
+    f[m.vertex_c1] += count * r.f_shear_c1;
+    f[m.vertex_c3] += count * r.f_shear_c3;
+    if (terms) {
+      terms[i * 4 + 0] = r.f_shear_c0;
+      terms[i * 4 + 1] = r.f_shear_c2;
+      terms[i * 4 + 2] = r.f_shear_c1;
+      terms[i * 4 + 3] = r.f_shear_c3;
+    }
+  }
+}
+
+void ShearKernel::add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {
+  const Columns c = columns();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t e = at[i];
+    const Match& m = reps[e];
+    Result r;
+    if (!evaluate<true>(m, in, c, r)) {
+      if (terms) for (int t = 0; t < 4; ++t) terms[i * 4 + t].setZero();
+      continue;
+    }
+    const rift::Real count = counts[e];
     f[m.vertex_c0] += count * r.f_shear_c0;
     f[m.vertex_c2] += count * r.f_shear_c2;
     f[m.vertex_c1] += count * r.f_shear_c1;
@@ -2132,6 +2222,44 @@ void VolumeShearKernel::add_forces_all(std::span<const Match> ms, const Stored* 
   }
 }
 
+void VolumeShearKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+  const Columns c = columns();
+  rift::Vec3* const stored_f_volume_shear = store ? e_f_volume_shear.values().data() : nullptr;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Match& m = ms[at[i]];
+    Result r;
+    if (!evaluate<true>(m, in, c, r)) {
+      if (store) {
+        stored_f_volume_shear[ss[at[i]].orbit12_b0] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[at[i]].orbit12_s22] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[at[i]].orbit12_b2] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[at[i]].orbit12_s32] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[at[i]].orbit12_b4] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[at[i]].orbit12_s02] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[at[i]].orbit12_b6] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[at[i]].orbit12_s12] = rift::Vec3::Zero();
+      }
+      continue;
+    }
+    f[m.vertex_b0] += r.f_volume_shear_b0;
+    if (store) stored_f_volume_shear[ss[at[i]].orbit12_b0] = r.f_volume_shear_b0;
+    f[m.vertex_s22] += r.f_volume_shear_s22;
+    if (store) stored_f_volume_shear[ss[at[i]].orbit12_s22] = r.f_volume_shear_s22;
+    f[m.vertex_b2] += r.f_volume_shear_b2;
+    if (store) stored_f_volume_shear[ss[at[i]].orbit12_b2] = r.f_volume_shear_b2;
+    f[m.vertex_s32] += r.f_volume_shear_s32;
+    if (store) stored_f_volume_shear[ss[at[i]].orbit12_s32] = r.f_volume_shear_s32;
+    f[m.vertex_b4] += r.f_volume_shear_b4;
+    if (store) stored_f_volume_shear[ss[at[i]].orbit12_b4] = r.f_volume_shear_b4;
+    f[m.vertex_s02] += r.f_volume_shear_s02;
+    if (store) stored_f_volume_shear[ss[at[i]].orbit12_s02] = r.f_volume_shear_s02;
+    f[m.vertex_b6] += r.f_volume_shear_b6;
+    if (store) stored_f_volume_shear[ss[at[i]].orbit12_b6] = r.f_volume_shear_b6;
+    f[m.vertex_s12] += r.f_volume_shear_s12;
+    if (store) stored_f_volume_shear[ss[at[i]].orbit12_s12] = r.f_volume_shear_s12;
+  }
+}
+
 void VolumeShearKernel::force_targets(const Match& m, rift::Slot* out) const {
   out[0] = m.vertex_b0;
   out[1] = m.vertex_s22;
@@ -2199,6 +2327,38 @@ void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const st
       continue;
     }
     const rift::Real count = counts[i];
+    f[m.vertex_b0] += count * r.f_volume_shear_b0;
+    f[m.vertex_s22] += count * r.f_volume_shear_s22;
+    f[m.vertex_b2] += count * r.f_volume_shear_b2;
+    f[m.vertex_s32] += count * r.f_volume_shear_s32;
+    f[m.vertex_b4] += count * r.f_volume_shear_b4;
+    f[m.vertex_s02] += count * r.f_volume_shear_s02;
+    f[m.vertex_b6] += count * r.f_volume_shear_b6;
+    f[m.vertex_s12] += count * r.f_volume_shear_s12;
+    if (terms) {
+      terms[i * 8 + 0] = r.f_volume_shear_b0;
+      terms[i * 8 + 1] = r.f_volume_shear_s22;
+      terms[i * 8 + 2] = r.f_volume_shear_b2;
+      terms[i * 8 + 3] = r.f_volume_shear_s32;
+      terms[i * 8 + 4] = r.f_volume_shear_b4;
+      terms[i * 8 + 5] = r.f_volume_shear_s02;
+      terms[i * 8 + 6] = r.f_volume_shear_b6;
+      terms[i * 8 + 7] = r.f_volume_shear_s12;
+    }
+  }
+}
+
+void VolumeShearKernel::add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {
+  const Columns c = columns();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t e = at[i];
+    const Match& m = reps[e];
+    Result r;
+    if (!evaluate<true>(m, in, c, r)) {
+      if (terms) for (int t = 0; t < 8; ++t) terms[i * 8 + t].setZero();
+      continue;
+    }
+    const rift::Real count = counts[e];
     f[m.vertex_b0] += count * r.f_volume_shear_b0;
     f[m.vertex_s22] += count * r.f_volume_shear_s22;
     f[m.vertex_b2] += count * r.f_volume_shear_b2;
