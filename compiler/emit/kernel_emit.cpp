@@ -286,6 +286,45 @@ void write_find(Writer& w, const Kernel& k) {
   w.line();
 }
 
+/// The inits of an interaction in passes over its matches: consecutive
+/// inits share one pass (one cell walk and one find per match instead of one
+/// each, most of a 10^6-hexahedron set-up's volume_shear) unless an init
+/// reads an embedding an earlier init of the pass writes, which must then be
+/// written at every match first. Within a pass each match runs the inits in
+/// source order, and each embedding is written at the matches in the same
+/// order as by a pass of its own: the same values.
+std::vector<std::vector<const lower::InitPlan*>> init_passes(const InteractionPlan& plan) {
+  std::vector<std::vector<const lower::InitPlan*>> passes;
+  std::set<std::string> written;
+  for (const lower::InitPlan& init : plan.inits) {
+    bool reads_written = false;
+    std::vector<ir::ExprId> roots{init.value};
+    std::vector<bool> let_seen(plan.body.lets.size(), false);
+    while (!roots.empty()) {
+      const ir::ExprId root = roots.back();
+      roots.pop_back();
+      ir::visit(plan.body.graph, root, [&](const ir::Node& x) {
+        if ((x.op == ir::Op::Read || x.op == ir::Op::Position || x.op == ir::Op::Velocity) &&
+            written.contains(x.embedding)) {
+          reads_written = true;
+        }
+        // A let's value is read where the let is (conservatively: any let).
+        if (x.op == ir::Op::Let && x.index >= 0 && !let_seen[static_cast<std::size_t>(x.index)]) {
+          let_seen[static_cast<std::size_t>(x.index)] = true;
+          roots.push_back(plan.body.lets[static_cast<std::size_t>(x.index)].value);
+        }
+      });
+    }
+    if (passes.empty() || reads_written) {
+      passes.emplace_back();
+      written.clear();
+    }
+    passes.back().push_back(&init);
+    written.insert(init.embedding);
+  }
+  return passes;
+}
+
 void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
   const InteractionPlan& plan = *k.plan;
   const ir::Body& b = plan.body;
@@ -303,31 +342,42 @@ void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
     w.line("tag_ = require_embedding<rift::Bool>(g, " + quote(tag_embedding(k.inter->name.text)) +
            ", " + quote(user) + ");");
     w.line("std::fill(tag_.values().begin(), tag_.values().end(), rift::Bool(false));");
-    w.line("g.for_each_cell(kSupport, [&](rift::Dart d) { tag_[d] = true; });");
+    // With inits, their first pass tags each orbit's first dart before
+    // matching from it: find() asks tagged_dart, which then answers that
+    // dart, as after a pass of its own (one cell walk less).
+    if (plan.inits.empty())
+      w.line("g.for_each_cell(kSupport, [&](rift::Dart d) { tag_[d] = true; });");
   }
   RenderContext ctx;
   ctx.dart = [&b](int node) { return dart_name(b.nodes[static_cast<std::size_t>(node)]); };
   ctx.args = "p_";
   ctx.params = "pack_";
   const std::string n = std::to_string(plan.kernel.nodes.size());
-  for (const lower::InitPlan& init : plan.inits) {
-    // Only the darts this init reads or writes are named.
+  bool first_pass = true;
+  for (const std::vector<const lower::InitPlan*>& group : init_passes(plan)) {
+    // Only the darts these inits read or write are named.
     std::vector<bool> used(plan.kernel.nodes.size(), false);
-    used[static_cast<std::size_t>(init.node)] = true;
-    ir::visit(b.graph, init.value, [&](const ir::Node& x) {
-      if ((x.op == ir::Op::Read || x.op == ir::Op::Fold) &&
-          static_cast<std::size_t>(x.place.node) < used.size()) {
-        used[static_cast<std::size_t>(x.place.node)] = true;
-      }
-    });
-    w.line("// init " + init.embedding + "(" + b.nodes[static_cast<std::size_t>(init.node)] +
-           "), once per match");
+    std::string what;
+    for (const lower::InitPlan* init : group) {
+      used[static_cast<std::size_t>(init->node)] = true;
+      ir::visit(b.graph, init->value, [&](const ir::Node& x) {
+        if ((x.op == ir::Op::Read || x.op == ir::Op::Fold) &&
+            static_cast<std::size_t>(x.place.node) < used.size()) {
+          used[static_cast<std::size_t>(x.place.node)] = true;
+        }
+      });
+      what += (what.empty() ? "" : ", ") + init->embedding + "(" +
+              b.nodes[static_cast<std::size_t>(init->node)] + ")";
+    }
+    w.line("// init " + what + ", once per match");
     if (chooses_support_dart(k)) {
       w.open("g.for_each_cell(kSupport, [&](rift::Dart cell) {");
       w.line("const rift::Dart support = support_dart(g, cell);");
     } else {
       w.open("g.for_each_cell(kSupport, [&](rift::Dart support) {");
     }
+    if (k.inter->tagged && first_pass) w.line("tag_[support] = true;  // the orbit's first dart");
+    first_pass = false;
     w.line("rift::Dart darts[" + n + "];");
     w.line("if (!find(g, support, darts)) return;");
     for (std::size_t v = 0; v < used.size(); ++v) {
@@ -335,11 +385,16 @@ void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
       w.line("const rift::Dart " + dart_name(plan.kernel.nodes[v]) + " = darts[" +
              std::to_string(v) + "];");
     }
-    BodyRenderer r(b.graph, b.sharing, ctx, {init.value});
-    write_rendered(w, r, init.loc,
-                   embedding_var(init.embedding) + "[" +
-                       dart_name(b.nodes[static_cast<std::size_t>(init.node)]) + "] = ",
-                   init.value, ";");
+    for (const lower::InitPlan* init : group) {
+      // Each init's locals in a block of their own when the pass runs several.
+      if (group.size() > 1) w.open("{");
+      BodyRenderer r(b.graph, b.sharing, ctx, {init->value});
+      write_rendered(w, r, init->loc,
+                     embedding_var(init->embedding) + "[" +
+                         dart_name(b.nodes[static_cast<std::size_t>(init->node)]) + "] = ",
+                     init->value, ";");
+      if (group.size() > 1) w.close();
+    }
     w.close("});");
   }
   w.close();

@@ -328,40 +328,27 @@ void CorotationalKernel::initialise(rift::GMap& g) {
   // §3.2: the dart each element is first matched from fixes the order of its corners.
   tag_ = require_embedding<rift::Bool>(g, "corotational_first_dart", "interaction 'corotational'");
   std::fill(tag_.values().begin(), tag_.values().end(), rift::Bool(false));
-  g.for_each_cell(kSupport, [&](rift::Dart d) { tag_[d] = true; });
-  // init fem_b(c0), once per match
+  // init fem_b(c0), fem_volume(c0), fem_mu(c0), fem_lambda(c0), once per match
   g.for_each_cell(kSupport, [&](rift::Dart support) {
+    tag_[support] = true;  // the orbit's first dart
     rift::Dart darts[18];
     if (!find(g, support, darts)) return;
     const rift::Dart d_c0 = darts[0];
     const rift::Dart d_c1 = darts[1];
     const rift::Dart d_c2 = darts[3];
     const rift::Dart d_c3 = darts[6];
-    e_fem_b[d_c0] = ((rift::Mat3() << (e_position[d_c1] - e_position[d_c0]), (e_position[d_c2] - e_position[d_c0]), (e_position[d_c3] - e_position[d_c0])).finished()).inverse();
-  });
-  // init fem_volume(c0), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
-    rift::Dart darts[18];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_c0 = darts[0];
-    const rift::Dart d_c1 = darts[1];
-    const rift::Dart d_c2 = darts[3];
-    const rift::Dart d_c3 = darts[6];
-    e_fem_volume[d_c0] = (std::abs(((rift::Mat3() << (e_position[d_c1] - e_position[d_c0]), (e_position[d_c2] - e_position[d_c0]), (e_position[d_c3] - e_position[d_c0])).finished()).determinant()) / 6.0);
-  });
-  // init fem_mu(c0), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
-    rift::Dart darts[18];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_c0 = darts[0];
-    e_fem_mu[d_c0] = (p_.young / (2.0 * (1.0 + p_.poisson)));
-  });
-  // init fem_lambda(c0), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
-    rift::Dart darts[18];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_c0 = darts[0];
-    e_fem_lambda[d_c0] = ((p_.young * p_.poisson) / ((1.0 + p_.poisson) * (1.0 - (2.0 * p_.poisson))));
+    {
+      e_fem_b[d_c0] = ((rift::Mat3() << (e_position[d_c1] - e_position[d_c0]), (e_position[d_c2] - e_position[d_c0]), (e_position[d_c3] - e_position[d_c0])).finished()).inverse();
+    }
+    {
+      e_fem_volume[d_c0] = (std::abs(((rift::Mat3() << (e_position[d_c1] - e_position[d_c0]), (e_position[d_c2] - e_position[d_c0]), (e_position[d_c3] - e_position[d_c0])).finished()).determinant()) / 6.0);
+    }
+    {
+      e_fem_mu[d_c0] = (p_.young / (2.0 * (1.0 + p_.poisson)));
+    }
+    {
+      e_fem_lambda[d_c0] = ((p_.young * p_.poisson) / ((1.0 + p_.poisson) * (1.0 - (2.0 * p_.poisson))));
+    }
   });
 }
 

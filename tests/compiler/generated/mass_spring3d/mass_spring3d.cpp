@@ -180,22 +180,19 @@ void StretchKernel::initialise(rift::GMap& g) {
   e_position = require_embedding<rift::Vec3>(g, "position", "interaction 'stretch'");
   e_stretch_k = require_embedding<rift::Real>(g, "stretch_k", "interaction 'stretch'");
   e_stretch_rest = require_embedding<rift::Real>(g, "stretch_rest", "interaction 'stretch'");
-  // init stretch_k(a), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart cell) {
-    const rift::Dart support = support_dart(g, cell);
-    rift::Dart darts[2];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_a = darts[0];
-    e_stretch_k[d_a] = p_.stiffness;
-  });
-  // init stretch_rest(a), once per match
+  // init stretch_k(a), stretch_rest(a), once per match
   g.for_each_cell(kSupport, [&](rift::Dart cell) {
     const rift::Dart support = support_dart(g, cell);
     rift::Dart darts[2];
     if (!find(g, support, darts)) return;
     const rift::Dart d_a = darts[0];
     const rift::Dart d_b = darts[1];
-    e_stretch_rest[d_a] = ((e_position[d_b] - e_position[d_a])).norm();
+    {
+      e_stretch_k[d_a] = p_.stiffness;
+    }
+    {
+      e_stretch_rest[d_a] = ((e_position[d_b] - e_position[d_a])).norm();
+    }
   });
 }
 
@@ -495,30 +492,24 @@ void ShearKernel::initialise(rift::GMap& g) {
   // §3.2: the dart each element is first matched from fixes the order of its corners.
   tag_ = require_embedding<rift::Bool>(g, "shear_first_dart", "interaction 'shear'");
   std::fill(tag_.values().begin(), tag_.values().end(), rift::Bool(false));
-  g.for_each_cell(kSupport, [&](rift::Dart d) { tag_[d] = true; });
-  // init shear_k(c0), once per match
+  // init shear_k(c0), shear_rest02(c0), shear_rest13(c0), once per match
   g.for_each_cell(kSupport, [&](rift::Dart support) {
-    rift::Dart darts[8];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_c0 = darts[0];
-    e_shear_k[d_c0] = p_.stiffness;
-  });
-  // init shear_rest02(c0), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
-    rift::Dart darts[8];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_c0 = darts[0];
-    const rift::Dart d_c2 = darts[4];
-    e_shear_rest02[d_c0] = ((e_position[d_c2] - e_position[d_c0])).norm();
-  });
-  // init shear_rest13(c0), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
+    tag_[support] = true;  // the orbit's first dart
     rift::Dart darts[8];
     if (!find(g, support, darts)) return;
     const rift::Dart d_c0 = darts[0];
     const rift::Dart d_c1 = darts[2];
+    const rift::Dart d_c2 = darts[4];
     const rift::Dart d_c3 = darts[6];
-    e_shear_rest13[d_c0] = ((e_position[d_c3] - e_position[d_c1])).norm();
+    {
+      e_shear_k[d_c0] = p_.stiffness;
+    }
+    {
+      e_shear_rest02[d_c0] = ((e_position[d_c2] - e_position[d_c0])).norm();
+    }
+    {
+      e_shear_rest13[d_c0] = ((e_position[d_c3] - e_position[d_c1])).norm();
+    }
   });
 }
 
@@ -2094,48 +2085,34 @@ void VolumeShearKernel::initialise(rift::GMap& g) {
   // §3.2: the dart each element is first matched from fixes the order of its corners.
   tag_ = require_embedding<rift::Bool>(g, "volume_shear_first_dart", "interaction 'volume_shear'");
   std::fill(tag_.values().begin(), tag_.values().end(), rift::Bool(false));
-  g.for_each_cell(kSupport, [&](rift::Dart d) { tag_[d] = true; });
-  // init vshear_k(b0), once per match
+  // init vshear_k(b0), vshear_rest0(b0), vshear_rest1(b0), vshear_rest2(b0), vshear_rest3(b0), once per match
   g.for_each_cell(kSupport, [&](rift::Dart support) {
-    rift::Dart darts[48];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_b0 = darts[0];
-    e_vshear_k[d_b0] = p_.stiffness;
-  });
-  // init vshear_rest0(b0), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
-    rift::Dart darts[48];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_b0 = darts[0];
-    const rift::Dart d_s22 = darts[26];
-    e_vshear_rest0[d_b0] = ((e_position[d_s22] - e_position[d_b0])).norm();
-  });
-  // init vshear_rest1(b0), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
+    tag_[support] = true;  // the orbit's first dart
     rift::Dart darts[48];
     if (!find(g, support, darts)) return;
     const rift::Dart d_b0 = darts[0];
     const rift::Dart d_b2 = darts[2];
-    const rift::Dart d_s32 = darts[34];
-    e_vshear_rest1[d_b0] = ((e_position[d_s32] - e_position[d_b2])).norm();
-  });
-  // init vshear_rest2(b0), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
-    rift::Dart darts[48];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_b0 = darts[0];
     const rift::Dart d_b4 = darts[4];
-    const rift::Dart d_s02 = darts[10];
-    e_vshear_rest2[d_b0] = ((e_position[d_s02] - e_position[d_b4])).norm();
-  });
-  // init vshear_rest3(b0), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
-    rift::Dart darts[48];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_b0 = darts[0];
     const rift::Dart d_b6 = darts[6];
+    const rift::Dart d_s02 = darts[10];
     const rift::Dart d_s12 = darts[18];
-    e_vshear_rest3[d_b0] = ((e_position[d_s12] - e_position[d_b6])).norm();
+    const rift::Dart d_s22 = darts[26];
+    const rift::Dart d_s32 = darts[34];
+    {
+      e_vshear_k[d_b0] = p_.stiffness;
+    }
+    {
+      e_vshear_rest0[d_b0] = ((e_position[d_s22] - e_position[d_b0])).norm();
+    }
+    {
+      e_vshear_rest1[d_b0] = ((e_position[d_s32] - e_position[d_b2])).norm();
+    }
+    {
+      e_vshear_rest2[d_b0] = ((e_position[d_s02] - e_position[d_b4])).norm();
+    }
+    {
+      e_vshear_rest3[d_b0] = ((e_position[d_s12] - e_position[d_b6])).norm();
+    }
   });
 }
 
