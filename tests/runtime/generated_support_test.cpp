@@ -91,6 +91,38 @@ TEST(MatchRows, AHookWithARenamedLabelWalksItsOrbitWithItsOwnLinks) {
   EXPECT_EQ(s.rows[rows + s.nbr[0]], g.alpha(quad2, 1));
 }
 
+// A hook orbit of hundreds of darts (a 200-gon, 400 darts: the row index
+// grows past its first size several times) among thousands of other darts:
+// every dart of the orbit gets one row, each link lands on its row, and the
+// index the walk used holds the orbit, not the map (the first rule applied
+// to a map of millions of darts must not fill an array per dart).
+TEST(MatchRows, ALargeOrbitInALargeMapGetsItsRowsFromAnIndexOfItsOwnSize) {
+  GMap g(2);
+  for (int i = 0; i < 2000; ++i)
+    test::make_polygon(g, 4);
+  const Dart big = test::make_polygon(g, 200);
+  const Dart hooks[] = {big};
+  const int dims[] = {0, 1};
+  Scratch& s = scratch();
+  std::size_t rows = 0;
+  ASSERT_TRUE(build_rows(g, hooks, 1, dims, 2, s, rows));
+  ASSERT_EQ(rows, 400u);
+  const std::set<Dart> found(s.rows.begin(), s.rows.end());
+  EXPECT_EQ(found, orbit_of(g, big, Orbit{0, 1}));
+  for (std::size_t r = 0; r < rows; ++r) {
+    for (std::size_t k = 0; k < 2; ++k)
+      ASSERT_EQ(g.alpha(s.rows[r], dims[k]), s.rows[s.nbr[r * 2 + k]]) << "row " << r;
+  }
+  EXPECT_LT(s.row_index.size(), 4 * rows);
+  EXPECT_LT(s.row_index.size(), g.capacity() / 4);
+  // The next walk starts afresh: a small face after the big one.
+  ASSERT_TRUE(build_rows(g, hooks, 0, dims, 2, s, rows));
+  const Dart small[] = {0};
+  ASSERT_TRUE(build_rows(g, small, 1, dims, 2, s, rows));
+  EXPECT_EQ(rows, 8u);
+  EXPECT_EQ(std::set<Dart>(s.rows.begin(), s.rows.end()), orbit_of(g, 0, Orbit{0, 1}));
+}
+
 TEST(MatchRows, DistinctDartsAndNoMarkLeftBehind) {
   GMap g(2);
   test::make_polygon(g, 3);

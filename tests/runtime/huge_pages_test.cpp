@@ -15,7 +15,8 @@ namespace {
 /// Restores the default factor when a test ends, even a failed one.
 struct FactorGuard {
   std::size_t saved = headroom_factor();
-  ~FactorGuard() { set_headroom_factor(saved); }
+  std::size_t saved_min = headroom_min_bytes();
+  ~FactorGuard() { set_headroom_factor(saved, saved_min); }
 };
 
 // Large enough to be advised for huge pages (2^21 x 4 bytes = 8 MiB).
@@ -23,7 +24,7 @@ constexpr std::size_t kLarge = std::size_t{1} << 21;
 
 TEST(HugeArrays, GrowthWithinTheHeadroomKeepsTheBuffer) {
   const FactorGuard guard;
-  set_headroom_factor(2);
+  set_headroom_factor(2, 0);  // small arrays too
   for (std::size_t n : {std::size_t{100}, kLarge}) {
     std::vector<std::uint32_t> v;
     grow_huge(v, n, 7u);
@@ -59,7 +60,7 @@ TEST(HugeArrays, GrowthPastTheHeadroomMovesTheValues) {
 
 TEST(HugeArrays, FactorOneGivesExactBuffersThatStillGrowGeometrically) {
   const FactorGuard guard;
-  set_headroom_factor(1);
+  set_headroom_factor(1, 0);
   std::vector<double> v;
   grow_huge(v, 1000, 1.0);
   EXPECT_EQ(v.capacity(), 1000u);
@@ -69,6 +70,20 @@ TEST(HugeArrays, FactorOneGivesExactBuffersThatStillGrowGeometrically) {
   EXPECT_EQ(v[1000], 2.0);
   set_headroom_factor(0);  // clamped: never less than the elements asked for
   EXPECT_EQ(headroom_factor(), 1u);
+}
+
+// By default only large arrays get headroom: a small one's spare room would
+// be memory (malloc's heap), and copying it is cheap.
+TEST(HugeArrays, ASmallArrayGetsExactlyWhatItAsksFor) {
+  const FactorGuard guard;
+  set_headroom_factor(2);
+  EXPECT_EQ(headroom_min_bytes(), kHugePageAdviceBytes);
+  std::vector<std::uint32_t> small;
+  reserve_huge(small, 1000);
+  EXPECT_EQ(small.capacity(), 1000u);
+  std::vector<std::uint32_t> large;
+  reserve_huge(large, kLarge);
+  EXPECT_GE(large.capacity(), 2 * kLarge);
 }
 
 }  // namespace

@@ -12,14 +12,20 @@ namespace rift {
 
 namespace {
 std::atomic<std::size_t> g_headroom_factor{2};
+std::atomic<std::size_t> g_headroom_min_bytes{kHugePageAdviceBytes};
 }  // namespace
 
 std::size_t headroom_factor() {
   return g_headroom_factor.load(std::memory_order_relaxed);
 }
 
-void set_headroom_factor(std::size_t factor) {
+std::size_t headroom_min_bytes() {
+  return g_headroom_min_bytes.load(std::memory_order_relaxed);
+}
+
+void set_headroom_factor(std::size_t factor, std::size_t min_bytes) {
   g_headroom_factor.store(std::max<std::size_t>(factor, 1), std::memory_order_relaxed);
+  g_headroom_min_bytes.store(min_bytes, std::memory_order_relaxed);
 }
 
 void advise_huge_pages([[maybe_unused]] const void* data, [[maybe_unused]] std::size_t bytes) {

@@ -23,19 +23,23 @@ inline constexpr std::size_t kHugePageAdviceBytes = std::size_t{4} << 20;
 /// with transparent huge pages. Only a hint: does nothing where unsupported.
 void advise_huge_pages(const void* data, std::size_t bytes);
 
-/// Growth headroom (issue 12, a tear costs what it touches). An array that
-/// reserve_huge or grow_huge gives a new buffer gets capacity for
-/// headroom_factor() times the elements asked for: address space, not
-/// memory, since only the pages written become resident. A rewrite that adds
-/// a few darts, slots or matches to a 10^6-vertex map then appends in place
-/// instead of copying (and faulting in) every dart array and column of the
-/// map at its first tear. Past the headroom an array grows again by the same
-/// factor (and at least doubles), so growth stays amortised. Default 2 (the
-/// next doubling reserved ahead); 1 gives exact buffers, as without headroom.
+/// Growth headroom (issue 12, a tear costs what it touches). A large array
+/// (headroom_min_bytes() or more) that reserve_huge or grow_huge gives a new
+/// buffer gets capacity for headroom_factor() times the elements asked for:
+/// address space, not memory, since only the pages written become resident.
+/// A rewrite that adds a few darts, slots or matches to a 10^6-vertex map
+/// then appends in place instead of copying (and faulting in) every dart
+/// array and column of the map at its first tear. Past the headroom an array
+/// grows again by the same factor (and at least doubles), so growth stays
+/// amortised. Default 2 (the next doubling reserved ahead); 1 gives exact
+/// buffers, as without headroom. A small array gets exactly what it asks for
+/// (copying it is cheap, and its spare room would be memory: malloc's heap).
 std::size_t headroom_factor();
-/// Sets headroom_factor() for arrays given a buffer from now on (tests
-/// compare maps that outgrow their headroom with maps that never do).
-void set_headroom_factor(std::size_t factor);
+/// The size from which an array gets headroom (default kHugePageAdviceBytes).
+std::size_t headroom_min_bytes();
+/// Sets both for arrays given a buffer from now on (tests compare small maps
+/// that outgrow their headroom with maps that never do).
+void set_headroom_factor(std::size_t factor, std::size_t min_bytes = kHugePageAdviceBytes);
 
 namespace detail {
 /// Moves v's elements to a fresh buffer of headroom_factor() * n elements,
@@ -43,6 +47,12 @@ namespace detail {
 /// Only the first n elements' pages are advised for huge pages: the headroom
 /// stays in 4 KiB pages, so that the last huge page of the used part, and
 /// nothing past it, becomes resident (peak memory as without headroom).
+/// Whether an array of n elements is large enough for headroom.
+template <class T>
+bool gets_headroom(std::size_t n) {
+  return n * sizeof(T) >= headroom_min_bytes();
+}
+
 template <class T, class A>
 void regrow_huge(std::vector<T, A>& v, std::size_t n) {
   std::vector<T, A> bigger;
@@ -59,6 +69,10 @@ void regrow_huge(std::vector<T, A>& v, std::size_t n) {
 template <class T, class A>
 void reserve_huge(std::vector<T, A>& v, std::size_t n) {
   if (n <= v.capacity()) return;
+  if (!detail::gets_headroom<T>(n)) {
+    v.reserve(n);
+    return;
+  }
   detail::regrow_huge(v, n);
 }
 
@@ -67,14 +81,16 @@ void reserve_huge(std::vector<T, A>& v, std::size_t n) {
 /// before anything is written to it when large.
 template <class T, class A>
 void grow_huge(std::vector<T, A>& v, std::size_t n, const T& fill) {
-  if (n > v.capacity()) detail::regrow_huge(v, std::max(n, v.size() + 1));
+  if (n > v.capacity() && detail::gets_headroom<T>(n))
+    detail::regrow_huge(v, std::max(n, v.size() + 1));
   v.resize(n, fill);
 }
 
 /// v.push_back(x), growing like grow_huge when v is full.
 template <class T, class A>
 void push_back_huge(std::vector<T, A>& v, const T& x) {
-  if (v.size() == v.capacity()) detail::regrow_huge(v, v.size() + 1);
+  if (v.size() == v.capacity() && detail::gets_headroom<T>(v.size() + 1))
+    detail::regrow_huge(v, v.size() + 1);
   v.push_back(x);
 }
 

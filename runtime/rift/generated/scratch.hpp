@@ -14,9 +14,9 @@ namespace rift::generated {
 inline constexpr std::uint32_t kNoRow = 0xFFFFFFFFu;
 
 struct Scratch {
-  std::vector<std::uint32_t> row_of;  // by dart, kNoRow outside the orbit being built
-  std::vector<Dart> rows;             // hook j's dart of row r at rows[j * row_count + r]
-  std::vector<std::uint32_t> nbr;     // nbr[r * label + k]: row reached from r by hook link k
+  std::vector<std::uint64_t> row_index;  // (dart << 32) | row of the orbit being built, hashed
+  std::vector<Dart> rows;                // hook j's dart of row r at rows[j * row_count + r]
+  std::vector<std::uint32_t> nbr;        // nbr[r * label + k]: row reached from r by hook link k
   std::vector<std::uint32_t> parent;  // parent[r] = p * label + k: r was reached from p by link k
   std::vector<Dart> left;             // left node v's dart of row r at left[v * row_count + r]
   std::vector<Dart> right;            // the same for right nodes
