@@ -58,4 +58,11 @@ void grow_huge(std::vector<T, A>& v, std::size_t n, const T& fill) {
   v.resize(n, fill);
 }
 
+/// Empties v and gives its buffer back. (`v = {}` would not: it assigns an
+/// empty initializer list, which keeps the capacity.)
+template <class T, class A>
+void give_back(std::vector<T, A>& v) {
+  std::vector<T, A>().swap(v);
+}
+
 }  // namespace rift
