@@ -8,6 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/info_command.hpp"
+#include "cli/large_allocations.hpp"
 #include "rift/core/input_error.hpp"
 #include "rift/pack/pack.hpp"
 
@@ -18,6 +19,8 @@
 namespace rift::cli {
 
 int run(int argc, char** argv, const PackRegistry& packs) {
+  // Links the huge-page operator new into the executable (large_allocations.cpp).
+  [[maybe_unused]] const bool huge_pages = large_allocations_in_huge_pages();
   CLI::App app{"rift: simulate deformable bodies that tear and fracture, with G-maps and rules"};
   app.set_version_flag("--version", std::string("rift ") + RIFT_VERSION);
   app.require_subcommand(1);

@@ -286,6 +286,45 @@ void write_find(Writer& w, const Kernel& k) {
   w.line();
 }
 
+/// The inits of an interaction in passes over its matches: consecutive
+/// inits share one pass (one cell walk and one find per match instead of one
+/// each, most of a 10^6-hexahedron set-up's volume_shear) unless an init
+/// reads an embedding an earlier init of the pass writes, which must then be
+/// written at every match first. Within a pass each match runs the inits in
+/// source order, and each embedding is written at the matches in the same
+/// order as by a pass of its own: the same values.
+std::vector<std::vector<const lower::InitPlan*>> init_passes(const InteractionPlan& plan) {
+  std::vector<std::vector<const lower::InitPlan*>> passes;
+  std::set<std::string> written;
+  for (const lower::InitPlan& init : plan.inits) {
+    bool reads_written = false;
+    std::vector<ir::ExprId> roots{init.value};
+    std::vector<bool> let_seen(plan.body.lets.size(), false);
+    while (!roots.empty()) {
+      const ir::ExprId root = roots.back();
+      roots.pop_back();
+      ir::visit(plan.body.graph, root, [&](const ir::Node& x) {
+        if ((x.op == ir::Op::Read || x.op == ir::Op::Position || x.op == ir::Op::Velocity) &&
+            written.contains(x.embedding)) {
+          reads_written = true;
+        }
+        // A let's value is read where the let is (conservatively: any let).
+        if (x.op == ir::Op::Let && x.index >= 0 && !let_seen[static_cast<std::size_t>(x.index)]) {
+          let_seen[static_cast<std::size_t>(x.index)] = true;
+          roots.push_back(plan.body.lets[static_cast<std::size_t>(x.index)].value);
+        }
+      });
+    }
+    if (passes.empty() || reads_written) {
+      passes.emplace_back();
+      written.clear();
+    }
+    passes.back().push_back(&init);
+    written.insert(init.embedding);
+  }
+  return passes;
+}
+
 void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
   const InteractionPlan& plan = *k.plan;
   const ir::Body& b = plan.body;
@@ -303,31 +342,42 @@ void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
     w.line("tag_ = require_embedding<rift::Bool>(g, " + quote(tag_embedding(k.inter->name.text)) +
            ", " + quote(user) + ");");
     w.line("std::fill(tag_.values().begin(), tag_.values().end(), rift::Bool(false));");
-    w.line("g.for_each_cell(kSupport, [&](rift::Dart d) { tag_[d] = true; });");
+    // With inits, their first pass tags each orbit's first dart before
+    // matching from it: find() asks tagged_dart, which then answers that
+    // dart, as after a pass of its own (one cell walk less).
+    if (plan.inits.empty())
+      w.line("g.for_each_cell(kSupport, [&](rift::Dart d) { tag_[d] = true; });");
   }
   RenderContext ctx;
   ctx.dart = [&b](int node) { return dart_name(b.nodes[static_cast<std::size_t>(node)]); };
   ctx.args = "p_";
   ctx.params = "pack_";
   const std::string n = std::to_string(plan.kernel.nodes.size());
-  for (const lower::InitPlan& init : plan.inits) {
-    // Only the darts this init reads or writes are named.
+  bool first_pass = true;
+  for (const std::vector<const lower::InitPlan*>& group : init_passes(plan)) {
+    // Only the darts these inits read or write are named.
     std::vector<bool> used(plan.kernel.nodes.size(), false);
-    used[static_cast<std::size_t>(init.node)] = true;
-    ir::visit(b.graph, init.value, [&](const ir::Node& x) {
-      if ((x.op == ir::Op::Read || x.op == ir::Op::Fold) &&
-          static_cast<std::size_t>(x.place.node) < used.size()) {
-        used[static_cast<std::size_t>(x.place.node)] = true;
-      }
-    });
-    w.line("// init " + init.embedding + "(" + b.nodes[static_cast<std::size_t>(init.node)] +
-           "), once per match");
+    std::string what;
+    for (const lower::InitPlan* init : group) {
+      used[static_cast<std::size_t>(init->node)] = true;
+      ir::visit(b.graph, init->value, [&](const ir::Node& x) {
+        if ((x.op == ir::Op::Read || x.op == ir::Op::Fold) &&
+            static_cast<std::size_t>(x.place.node) < used.size()) {
+          used[static_cast<std::size_t>(x.place.node)] = true;
+        }
+      });
+      what += (what.empty() ? "" : ", ") + init->embedding + "(" +
+              b.nodes[static_cast<std::size_t>(init->node)] + ")";
+    }
+    w.line("// init " + what + ", once per match");
     if (chooses_support_dart(k)) {
       w.open("g.for_each_cell(kSupport, [&](rift::Dart cell) {");
       w.line("const rift::Dart support = support_dart(g, cell);");
     } else {
       w.open("g.for_each_cell(kSupport, [&](rift::Dart support) {");
     }
+    if (k.inter->tagged && first_pass) w.line("tag_[support] = true;  // the orbit's first dart");
+    first_pass = false;
     w.line("rift::Dart darts[" + n + "];");
     w.line("if (!find(g, support, darts)) return;");
     for (std::size_t v = 0; v < used.size(); ++v) {
@@ -335,11 +385,16 @@ void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
       w.line("const rift::Dart " + dart_name(plan.kernel.nodes[v]) + " = darts[" +
              std::to_string(v) + "];");
     }
-    BodyRenderer r(b.graph, b.sharing, ctx, {init.value});
-    write_rendered(w, r, init.loc,
-                   embedding_var(init.embedding) + "[" +
-                       dart_name(b.nodes[static_cast<std::size_t>(init.node)]) + "] = ",
-                   init.value, ";");
+    for (const lower::InitPlan* init : group) {
+      // Each init's locals in a block of their own when the pass runs several.
+      if (group.size() > 1) w.open("{");
+      BodyRenderer r(b.graph, b.sharing, ctx, {init->value});
+      write_rendered(w, r, init->loc,
+                     embedding_var(init->embedding) + "[" +
+                         dart_name(b.nodes[static_cast<std::size_t>(init->node)]) + "] = ",
+                     init->value, ";");
+      if (group.size() > 1) w.close();
+    }
     w.close("});");
   }
   w.close();
@@ -482,12 +537,20 @@ void write_evaluate(Writer& w, const Kernel& k) {
 
 // The whole force pass: column pointers are loaded once instead of once per
 // match (stores through Vec3* may alias anything, so the compiler cannot
-// hoist them itself), and the body is inlined.
-void write_add_forces_all(Writer& w, const Kernel& k) {
+// hoist them itself), and the body is inlined. `indexed`: the pass over
+// ms[at[i]] (add_forces_at, for a block of the coloured scatter a tear left
+// out of order, read in place), else over consecutive matches. Two functions
+// rather than one testing `at`: the test in the loop, or a lambda over both
+// whose captures the stores may alias, cost the consecutive pass 3-15 %.
+void write_add_forces_all(Writer& w, const Kernel& k, bool indexed) {
   const ir::Body& b = k.plan->body;
   const bool forces = !b.forces.empty();
   const bool stores_values = !b.stores.empty();
-  w.open("void " + k.cls + "::add_forces_all(std::span<const Match> ms, " +
+  const std::string ss_i = indexed ? "ss[at[i]]" : "ss[i]";
+  w.open("void " + k.cls +
+         (indexed ? "::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, "
+                    "std::size_t n, "
+                  : "::add_forces_all(std::span<const Match> ms, ") +
          (has_stored_slots(k) ? "const Stored* ss" : "const Stored* /*ss*/") +
          ", const rift::ForceInput& in, " +
          (forces          ? "rift::Vec3* f, bool store"
@@ -510,7 +573,7 @@ void write_add_forces_all(Writer& w, const Kernel& k) {
     w.line("auto* const stored_" + e + " = store ? " + embedding_var(e) +
            ".values().data() : nullptr;");
   auto store_at = [&](const ir::Store& st) {
-    return "stored_" + st.embedding + "[" + slot_at(k, st.store_slot, "ss[i]") + "]";
+    return "stored_" + st.embedding + "[" + slot_at(k, st.store_slot, ss_i) + "]";
   };
   // With stored values, one loop per kind of evaluation (storing or not),
   // each with its own instantiation of the body: the integrator's other
@@ -519,15 +582,20 @@ void write_add_forces_all(Writer& w, const Kernel& k) {
   // Not inlined: two instantiations of the body in one function exceed the
   // inliner's growth limits, and the matrix products of both would be calls.
   if (stores_values) w.open("auto pass = [&]<bool kStore>() __attribute__((noinline)) {");
-  w.open("for (std::size_t i = 0; i < ms.size(); ++i) {");
-  w.line("const Match& m = ms[i];");
+  if (indexed) {
+    w.open("for (std::size_t i = 0; i < n; ++i) {");
+    w.line("const Match& m = ms[at[i]];");
+  } else {
+    w.open("for (std::size_t i = 0; i < ms.size(); ++i) {");
+    w.line("const Match& m = ms[i];");
+  }
   w.line("Result r;");
   if (forces || stores_values) {
     w.open(stores_values ? "if (!evaluate<true, kStore>(m, in, c, r)) {"
                          : "if (!evaluate<true>(m, in, c, r)) {");
     w.open(if_store + "{");
     for (const ir::Force& f : b.forces) {
-      w.line("stored_" + f.embedding + "[" + slot_at(k, f.store_slot, "ss[i]") +
+      w.line("stored_" + f.embedding + "[" + slot_at(k, f.store_slot, ss_i) +
              "] = rift::Vec3::Zero();");
     }
     for (const ir::Store& st : b.stores) {
@@ -541,7 +609,7 @@ void write_add_forces_all(Writer& w, const Kernel& k) {
     for (const ir::Force& f : b.forces) {
       const std::string field = std::string("r.") + force_field(b, f);
       w.line("f[m." + k.slots[static_cast<std::size_t>(f.vertex_slot)] + "] += " + field + ";");
-      w.line(if_store + "stored_" + f.embedding + "[" + slot_at(k, f.store_slot, "ss[i]") +
+      w.line(if_store + "stored_" + f.embedding + "[" + slot_at(k, f.store_slot, ss_i) +
              "] = " + field + ";");
     }
     if (stores_values) {
@@ -825,6 +893,8 @@ void write_group_key(Writer& w, const Kernel& k) {
   w.line();
 }
 
+void write_add_forces_grouped(Writer& w, const Kernel& k, bool indexed);
+
 void write_group_passes(Writer& w, const Kernel& k) {
   const ir::Body& b = k.plan->body;
   const std::string n = std::to_string(b.forces.size());
@@ -852,18 +922,35 @@ void write_group_passes(Writer& w, const Kernel& k) {
   w.line();
   // As add_forces_all, each force added count times; a pass that stores
   // also keeps each group's terms, which its members' stored forces copy.
+  // Over consecutive groups, and (add_forces_grouped_at) over reps[at[i]].
+  for (const bool indexed : {false, true})
+    write_add_forces_grouped(w, k, indexed);
+}
+
+void write_add_forces_grouped(Writer& w, const Kernel& k, bool indexed) {
+  const ir::Body& b = k.plan->body;
+  const std::string n = std::to_string(b.forces.size());
   w.open("void " + k.cls +
-         "::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const "
+         (indexed ? "::add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* "
+                    "counts, const std::uint32_t* at, std::size_t n, const "
+                  : "::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* "
+                    "counts, const ") +
          "rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {");
   w.line("const Columns c = columns();");
-  w.open("for (std::size_t i = 0; i < reps.size(); ++i) {");
-  w.line("const Match& m = reps[i];");
+  if (indexed) {
+    w.open("for (std::size_t i = 0; i < n; ++i) {");
+    w.line("const std::uint32_t e = at[i];");
+    w.line("const Match& m = reps[e];");
+  } else {
+    w.open("for (std::size_t i = 0; i < reps.size(); ++i) {");
+    w.line("const Match& m = reps[i];");
+  }
   w.line("Result r;");
   w.open("if (!evaluate<true>(m, in, c, r)) {");
   w.line("if (terms) for (int t = 0; t < " + n + "; ++t) terms[i * " + n + " + t].setZero();");
   w.line("continue;");
   w.close();
-  w.line("const rift::Real count = counts[i];");
+  w.line(indexed ? "const rift::Real count = counts[e];" : "const rift::Real count = counts[i];");
   for (const ir::Force& f : b.forces) {
     w.line("f[m." + k.slots[static_cast<std::size_t>(f.vertex_slot)] + "] += count * r." +
            force_field(b, f) + ";");
@@ -1009,6 +1096,11 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
   w.line(
       "void add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& "
       "in, rift::Vec3* f, bool store);");
+  w.line("/// The same over ms[at[i]] for i < n (ss parallel to ms): a block of matches a tear");
+  w.line("/// left out of order, read in place.");
+  w.line(
+      "void add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, "
+      "const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store);");
   if (!b.forces.empty()) {
     w.line(
         "/// The vertex slots of a match's kForceTerms forces, in the order add_forces_all adds");
@@ -1032,6 +1124,11 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
     w.line(
         "void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const "
         "rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);");
+    w.line("/// The same over reps[at[i]] (counts parallel to reps) for i < n.");
+    w.line(
+        "void add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, "
+        "const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, "
+        "rift::Vec3* terms);");
   }
   w.line("void reset_stored(const Match& m, const Stored& s);");
   if (accumulates(k.plan->body)) {
@@ -1120,7 +1217,8 @@ void emit_kernel(Writer& w, const InteractionPlan& plan, const PackModel& model)
   if (chooses_support_dart(k)) write_support_dart(w, k);
   write_columns(w, k);
   write_evaluate(w, k);
-  write_add_forces_all(w, k);
+  write_add_forces_all(w, k, false);
+  write_add_forces_all(w, k, true);
   write_force_targets(w, k);
   // Matches that store values are not grouped: each stores its own.
   if (!k.plan->body.forces.empty() && k.plan->body.stores.empty()) {

@@ -74,6 +74,11 @@ struct ColouredHingeKernel : HingeKernel {
     for (const Match& m : ms)
       add_forces(m, in, f, store);
   }
+  void add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n,
+                     const ForceInput& in, Vec3* f, bool store) {
+    for (std::size_t i = 0; i < n; ++i)
+      add_forces(ms[at[i]], in, f, store);
+  }
 };
 using ColouredHinge = CachedInteraction<ColouredHingeKernel>;
 

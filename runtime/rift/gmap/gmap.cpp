@@ -195,10 +195,6 @@ std::vector<Dart>& GMap::acquire_scratch() const {
 // ---- orbits and cells -----------------------------------------------------------
 
 void GMap::mark_orbit(Dart d, Orbit o, Mark m) const {
-  if (o.size() <= 2) {
-    for_each_in_orbit(d, o, [&](Dart x) { mark(x, m); });
-    return;
-  }
   // Every cell pass (for_each_cell) runs this once per cell over the whole
   // map: the links of the orbit are looked up once, and the mark's count is
   // added once at the end rather than per dart.
@@ -211,6 +207,18 @@ void GMap::mark_orbit(Dart d, Orbit o, Mark m) const {
     ++marked;
     return true;
   };
+  if (o.size() <= 2) {
+    // A path or a cycle (for_each_in_two_link_orbit), one link, or d alone:
+    // no visit list, no stack.
+    if (o.size() == 2) {
+      for_each_in_two_link_orbit(d, o.first(), o.second(), [&](Dart x, int) { claim(x); });
+    } else {
+      claim(d);
+      if (o.size() == 1) claim(alpha_[o.first()][d]);
+    }
+    mark_count_[static_cast<std::size_t>(m)] += marked;
+    return;
+  }
   if (!claim(d)) return;
   flood_orbit(d, orbit_links(alpha_, dimension_, o), acquire_scratch(), claim);
   mark_count_[static_cast<std::size_t>(m)] += marked;
@@ -287,6 +295,22 @@ void GMap::assign_missing_slots(OrbitAttachment& att) const {
     att.wake(alive_.size());
   }
   const Orbit o = att.orbit();
+  if (att.live_slots() == 0 && o.size() <= 1) {
+    // A dart alone (<>) or a dart and its i-neighbour: each orbit's
+    // smallest dart comes first in dart order, without a walk.
+    const std::size_t n = alive_.size();
+    att.reserve_slots(att.slot_capacity() + n);
+    const Dart* link = o.size() == 1 ? alpha_[o.first()].data() : nullptr;
+    for (std::size_t k = 0; k < n; ++k) {
+      const Dart d = static_cast<Dart>(k);
+      if (!alive_[d] || att.slot(d) != kNoSlot) continue;
+      const Slot s = att.reserve_slot();
+      att.assign(d, s);
+      if (link && link[d] != d) att.assign(link[d], s);
+    }
+    att.grow_columns();
+    return;
+  }
   if (att.live_slots() == 0) {
     const OrbitLinks links = orbit_links(alpha_, dimension_, o);
     std::vector<Dart>& stack = acquire_scratch();

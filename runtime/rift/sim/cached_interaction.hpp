@@ -334,12 +334,15 @@ class CachedInteraction final : public ForceModel {
   /// ... and has some: they are kept beside the matches when storing.
   static constexpr bool kKeepsStored = kSplitsStored && !std::is_empty_v<Stored>;
   static constexpr bool kHasPass =
-      requires(Kernel & k, std::span<const Match> ms, const ForceInput& in, Vec3* f) {
+      requires(Kernel & k, std::span<const Match> ms, const std::uint32_t* at, std::size_t n,
+               const ForceInput& in, Vec3* f) {
     k.add_forces_all(ms, in, f, true);
+    k.add_forces_at(ms, at, n, in, f, true);
   }
-  || requires(Kernel& k, std::span<const Match> ms, const Stored* ss, const ForceInput& in,
-              Vec3* f) {
+  || requires(Kernel& k, std::span<const Match> ms, const std::uint32_t* at, std::size_t n,
+              const Stored* ss, const ForceInput& in, Vec3* f) {
     k.add_forces_all(ms, ss, in, f, true);
+    k.add_forces_at(ms, at, n, ss, in, f, true);
   };
   static constexpr bool kColoured = kHasPass && requires(Kernel & k, const Match& m, Slot* out) {
     Kernel::kForceTerms;
@@ -370,12 +373,22 @@ class CachedInteraction final : public ForceModel {
       kernel_.store_terms(m, terms);
     }
   }
+  /// The kernel's pass over consecutive matches ms (ss parallel to them)...
   void run_pass(std::span<const Match> ms, const Stored* ss, const ForceInput& in, Vec3* f,
                 bool store) {
     if constexpr (kSplitsStored) {
       kernel_.add_forces_all(ms, ss, in, f, store);
     } else {
       kernel_.add_forces_all(ms, in, f, store);
+    }
+  }
+  /// ... and over ms[at[i]] for i < n (ss parallel to ms).
+  void run_pass_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n,
+                   const Stored* ss, const ForceInput& in, Vec3* f, bool store) {
+    if constexpr (kSplitsStored) {
+      kernel_.add_forces_at(ms, at, n, ss, in, f, store);
+    } else {
+      kernel_.add_forces_at(ms, at, n, in, f, store);
     }
   }
   /// The entry of a match the cache hands over in place.
@@ -411,6 +424,7 @@ class CachedInteraction final : public ForceModel {
     k.group_key(m, key);
     k.evaluate_terms(m, in, t);
     mk.add_forces_grouped(ms, counts, in, t, t);
+    mk.add_forces_grouped_at(ms, counts, counts, ms.size(), in, t, t);
   }
   &&(
       requires(Kernel& mk, const Match& m, const Vec3* t) { mk.store_terms(m, t); } ||
@@ -501,32 +515,27 @@ class CachedInteraction final : public ForceModel {
       const std::span<const Match> reps = groups_.representatives();
       const std::span<const std::uint32_t> counts = groups_.counts();
       const std::span<const Match> all = cache_.matches();
-      // A pass that stores runs the same loop, which also hands back each
-      // group's terms (kGather groups at a time): every member stores them.
+      // A block a tear reshuffled is read in place, through its entries. A
+      // pass that stores runs the same loops kGather groups at a time, which
+      // also hand back each group's terms: every member stores them.
       auto body = [&](const std::uint32_t* entries, std::size_t n, bool consecutive) {
         if (n == 0) return;
-        if (consecutive && !store) {
-          kernel_.add_forces_grouped(reps.subspan(entries[0], n), counts.data() + entries[0], in, f,
-                                     nullptr);
+        auto pass = [&](const std::uint32_t* at, std::size_t count, Vec3* terms) {
+          if (consecutive) {
+            kernel_.add_forces_grouped(reps.subspan(at[0], count), counts.data() + at[0], in, f,
+                                       terms);
+          } else {
+            kernel_.add_forces_grouped_at(reps, counts.data(), at, count, in, f, terms);
+          }
+        };
+        if (!store) {
+          pass(entries, n, nullptr);
           return;
         }
-        Match buffer[kGather];
-        std::uint32_t weights[kGather];
-        Vec3 terms[kGather * kTerms];  // Eigen leaves it uninitialised: free when not storing
+        Vec3 terms[kGather * kTerms];  // Eigen leaves it uninitialised
         for (std::size_t first = 0; first < n; first += kGather) {
           const std::size_t count = std::min(kGather, n - first);
-          if (consecutive) {
-            kernel_.add_forces_grouped(reps.subspan(entries[first], count),
-                                       counts.data() + entries[first], in, f, terms);
-          } else {
-            for (std::size_t i = 0; i < count; ++i) {
-              buffer[i] = reps[entries[first + i]];
-              weights[i] = counts[entries[first + i]];
-            }
-            kernel_.add_forces_grouped(std::span<const Match>(buffer, count), weights, in, f,
-                                       store ? terms : nullptr);
-          }
-          if (!store) continue;
+          pass(entries + first, count, terms);
           for (std::size_t i = 0; i < count; ++i) {
             const Vec3* t = terms + i * kTerms;
             groups_.for_each_member(entries[first + i], [&](std::uint32_t e) {
@@ -559,28 +568,13 @@ class CachedInteraction final : public ForceModel {
 
   void add_forces_coloured(const ForceInput& in, Vec3* f, bool store) {
     const std::span<const Match> all(cache_.matches());
+    // A block a tear reshuffled is read in place through its entries.
     auto body = [&](const std::uint32_t* entries, std::size_t n, bool consecutive) {
       if (n == 0) return;
       if (consecutive) {
         run_pass(all.subspan(entries[0], n), stored_from(entries[0]), in, f, store);
-        return;
-      }
-      // A block a tear reshuffled: its matches (and, for a pass that stores,
-      // their Stored) copied in order, a few at a time, into buffers the
-      // kernel runs over.
-      Match buffer[kGather];
-      Stored gathered[kGather];
-      const bool with_stored = store && keeps_stored();
-      for (std::size_t first = 0; first < n; first += kGather) {
-        const std::size_t count = std::min(kGather, n - first);
-        for (std::size_t i = 0; i < count; ++i)
-          buffer[i] = all[entries[first + i]];
-        if (with_stored) {
-          for (std::size_t i = 0; i < count; ++i)
-            gathered[i] = stored_[entries[first + i]];
-        }
-        run_pass(std::span<const Match>(buffer, count), with_stored ? gathered : nullptr, in, f,
-                 store);
+      } else {
+        run_pass_at(all, entries, n, stored_from(0), in, f, store);
       }
     };
     colouring_.run(body);

@@ -402,8 +402,9 @@ TEST(GeneratedPack, ListsEverythingByName) {
   EXPECT_EQ(pack.make_rule("separate_faces")->hook_count(), 1);
   EXPECT_EQ(pack.make_rule("sew_edges")->hook_count(), 2);
   EXPECT_EQ(pack.make_rule("nope"), nullptr);
-  ASSERT_EQ(pack.catalog().interactions.size(), 3u);
+  ASSERT_EQ(pack.catalog().interactions.size(), 4u);
   EXPECT_EQ(pack.catalog().interactions[0].name, "stretch");
+  EXPECT_EQ(pack.catalog().interactions[3].name, "chain");
   ASSERT_EQ(pack.catalog().criteria.size(), 2u);
   EXPECT_EQ(pack.catalog().criteria[0].name, "long_edge");
   EXPECT_EQ(g2::kDimension, 2);

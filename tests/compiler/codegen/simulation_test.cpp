@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -245,6 +246,43 @@ TEST(GeneratedSimulation, CriterionTearsTheClothAndKeepsTheMap) {
     sim->step();
   EXPECT_TRUE(sim->map().is_valid());
   EXPECT_NEAR(sim->total_mass(), mass, 1e-12);
+}
+
+// riftc runs an interaction's inits in one pass over its matches unless one
+// reads what an earlier one writes (kernel_emit.cpp, init_passes). chain's
+// next_rest(a) reads chain_rest at the half-edge after b, which that
+// half-edge's own match writes: run in the same pass, the matches visited
+// before their neighbour would read the default, 0. On a grid with moved
+// vertices every half-edge has its own length, so next_rest must be exactly
+// the length of one of the two half-edges that follow its ends.
+TEST(GeneratedSimulation, AnInitReadingAnotherMatchsInitRunsAfterIt) {
+  GMap g = rift::load_map("grid:quad:5x5");
+  g2::Pack().initialise(g);
+  auto x = g.embedding<Vec3>("position");
+  for (std::size_t s = 0; s < x.values().size(); ++s)
+    x.values()[s] += Vec3(0.013 * std::sin(3.0 * s), 0.021 * std::cos(7.0 * s), 0);
+  rift::SimulationSettings settings;
+  settings.dt = 1e-3;
+  Simulation sim(std::move(g), settings);
+  sim.set_total_mass(0.1);
+  sim.add_force_model(g2::Pack().make_interaction(use("chain", {{"k", Value(1.0)}})));
+  sim.initialise();
+  const GMap& m = sim.map();
+  auto pos = m.embedding<Vec3>("position");
+  auto rest = m.embedding<Real>("chain_rest");
+  auto next = m.embedding<Real>("next_rest");
+  auto length = [&](Dart d) { return (pos[m.alpha(d, 0)] - pos[d]).norm(); };
+  std::size_t checked = 0;
+  m.for_each_dart([&](Dart d) {
+    ASSERT_EQ(rest[d], length(d)) << "dart " << d;
+    // The match started from d or from its alpha_0; b is the other one.
+    const Real after_other = length(m.alpha(m.alpha(d, 0), 1));
+    const Real after_d = length(m.alpha(d, 1));
+    ASSERT_GT(next[d], 0) << "dart " << d << ": read before its neighbour's init";
+    ASSERT_TRUE(next[d] == after_other || next[d] == after_d) << "dart " << d;
+    ++checked;
+  });
+  EXPECT_EQ(checked, m.size());
 }
 
 TEST(GeneratedRegistration, AddsThePackWithItsCatalog) {

@@ -328,40 +328,27 @@ void CorotationalKernel::initialise(rift::GMap& g) {
   // §3.2: the dart each element is first matched from fixes the order of its corners.
   tag_ = require_embedding<rift::Bool>(g, "corotational_first_dart", "interaction 'corotational'");
   std::fill(tag_.values().begin(), tag_.values().end(), rift::Bool(false));
-  g.for_each_cell(kSupport, [&](rift::Dart d) { tag_[d] = true; });
-  // init fem_b(c0), once per match
+  // init fem_b(c0), fem_volume(c0), fem_mu(c0), fem_lambda(c0), once per match
   g.for_each_cell(kSupport, [&](rift::Dart support) {
+    tag_[support] = true;  // the orbit's first dart
     rift::Dart darts[18];
     if (!find(g, support, darts)) return;
     const rift::Dart d_c0 = darts[0];
     const rift::Dart d_c1 = darts[1];
     const rift::Dart d_c2 = darts[3];
     const rift::Dart d_c3 = darts[6];
-    e_fem_b[d_c0] = ((rift::Mat3() << (e_position[d_c1] - e_position[d_c0]), (e_position[d_c2] - e_position[d_c0]), (e_position[d_c3] - e_position[d_c0])).finished()).inverse();
-  });
-  // init fem_volume(c0), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
-    rift::Dart darts[18];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_c0 = darts[0];
-    const rift::Dart d_c1 = darts[1];
-    const rift::Dart d_c2 = darts[3];
-    const rift::Dart d_c3 = darts[6];
-    e_fem_volume[d_c0] = (std::abs(((rift::Mat3() << (e_position[d_c1] - e_position[d_c0]), (e_position[d_c2] - e_position[d_c0]), (e_position[d_c3] - e_position[d_c0])).finished()).determinant()) / 6.0);
-  });
-  // init fem_mu(c0), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
-    rift::Dart darts[18];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_c0 = darts[0];
-    e_fem_mu[d_c0] = (p_.young / (2.0 * (1.0 + p_.poisson)));
-  });
-  // init fem_lambda(c0), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
-    rift::Dart darts[18];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_c0 = darts[0];
-    e_fem_lambda[d_c0] = ((p_.young * p_.poisson) / ((1.0 + p_.poisson) * (1.0 - (2.0 * p_.poisson))));
+    {
+      e_fem_b[d_c0] = ((rift::Mat3() << (e_position[d_c1] - e_position[d_c0]), (e_position[d_c2] - e_position[d_c0]), (e_position[d_c3] - e_position[d_c0])).finished()).inverse();
+    }
+    {
+      e_fem_volume[d_c0] = (std::abs(((rift::Mat3() << (e_position[d_c1] - e_position[d_c0]), (e_position[d_c2] - e_position[d_c0]), (e_position[d_c3] - e_position[d_c0])).finished()).determinant()) / 6.0);
+    }
+    {
+      e_fem_mu[d_c0] = (p_.young / (2.0 * (1.0 + p_.poisson)));
+    }
+    {
+      e_fem_lambda[d_c0] = ((p_.young * p_.poisson) / ((1.0 + p_.poisson) * (1.0 - (2.0 * p_.poisson))));
+    }
   });
 }
 
@@ -435,6 +422,51 @@ void CorotationalKernel::add_forces_all(std::span<const Match> ms, const Stored*
   auto pass = [&]<bool kStore>() __attribute__((noinline)) {
     for (std::size_t i = 0; i < ms.size(); ++i) {
       const Match& m = ms[i];
+      Result r;
+      if (!evaluate<true, kStore>(m, in, c, r)) {
+        if constexpr (kStore) {
+          stored_f_fem[m.orbit12_c0] = rift::Vec3::Zero();
+          stored_f_fem[m.orbit12_c1] = rift::Vec3::Zero();
+          stored_f_fem[m.orbit12_c2] = rift::Vec3::Zero();
+          stored_f_fem[m.orbit12_c3] = rift::Vec3::Zero();
+        }
+        continue;
+      }
+      f[m.vertex_c0] += r.f_fem_c0;
+      if constexpr (kStore) stored_f_fem[m.orbit12_c0] = r.f_fem_c0;
+      f[m.vertex_c1] += r.f_fem_c1;
+      if constexpr (kStore) stored_f_fem[m.orbit12_c1] = r.f_fem_c1;
+      f[m.vertex_c2] += r.f_fem_c2;
+      if constexpr (kStore) stored_f_fem[m.orbit12_c2] = r.f_fem_c2;
+      f[m.vertex_c3] += r.f_fem_c3;
+      if constexpr (kStore) stored_f_fem[m.orbit12_c3] = r.f_fem_c3;
+      if constexpr (kStore) {
+        stored_stress_weighted[m.vertex_c0] += r.stored_stress_weighted_c0;
+        stored_stress_weighted[m.vertex_c1] += r.stored_stress_weighted_c1;
+        stored_stress_weighted[m.vertex_c2] += r.stored_stress_weighted_c2;
+        stored_stress_weighted[m.vertex_c3] += r.stored_stress_weighted_c3;
+        stored_stress_mass[m.vertex_c0] += r.stored_stress_mass_c0;
+        stored_stress_mass[m.vertex_c1] += r.stored_stress_mass_c1;
+        stored_stress_mass[m.vertex_c2] += r.stored_stress_mass_c2;
+        stored_stress_mass[m.vertex_c3] += r.stored_stress_mass_c3;
+      }
+    }
+  };
+  if (store) {
+    pass.template operator()<true>();
+  } else {
+    pass.template operator()<false>();
+  }
+}
+
+void CorotationalKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* /*ss*/, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+  const Columns c = columns();
+  rift::Vec3* const stored_f_fem = store ? e_f_fem.values().data() : nullptr;
+  auto* const stored_stress_mass = store ? e_stress_mass.values().data() : nullptr;
+  auto* const stored_stress_weighted = store ? e_stress_weighted.values().data() : nullptr;
+  auto pass = [&]<bool kStore>() __attribute__((noinline)) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const Match& m = ms[at[i]];
       Result r;
       if (!evaluate<true, kStore>(m, in, c, r)) {
         if constexpr (kStore) {

@@ -75,6 +75,9 @@ class CorotationalKernel {
   /// The force pass over every match: adds each force to f (and stores it when `store`,
   /// at the slots of ss[i], parallel to ms).
   void add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store);
+  /// The same over ms[at[i]] for i < n (ss parallel to ms): a block of matches a tear
+  /// left out of order, read in place.
+  void add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store);
   /// The vertex slots of a match's kForceTerms forces, in the order add_forces_all adds
   /// them (the coloured scatter of several threads groups matches by them).
   static constexpr int kForceTerms = 4;

@@ -180,22 +180,19 @@ void StretchKernel::initialise(rift::GMap& g) {
   e_position = require_embedding<rift::Vec3>(g, "position", "interaction 'stretch'");
   e_stretch_k = require_embedding<rift::Real>(g, "stretch_k", "interaction 'stretch'");
   e_stretch_rest = require_embedding<rift::Real>(g, "stretch_rest", "interaction 'stretch'");
-  // init stretch_k(a), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart cell) {
-    const rift::Dart support = support_dart(g, cell);
-    rift::Dart darts[2];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_a = darts[0];
-    e_stretch_k[d_a] = p_.stiffness;
-  });
-  // init stretch_rest(a), once per match
+  // init stretch_k(a), stretch_rest(a), once per match
   g.for_each_cell(kSupport, [&](rift::Dart cell) {
     const rift::Dart support = support_dart(g, cell);
     rift::Dart darts[2];
     if (!find(g, support, darts)) return;
     const rift::Dart d_a = darts[0];
     const rift::Dart d_b = darts[1];
-    e_stretch_rest[d_a] = ((e_position[d_b] - e_position[d_a])).norm();
+    {
+      e_stretch_k[d_a] = p_.stiffness;
+    }
+    {
+      e_stretch_rest[d_a] = ((e_position[d_b] - e_position[d_a])).norm();
+    }
   });
 }
 
@@ -262,6 +259,26 @@ void StretchKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, 
   }
 }
 
+void StretchKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+  const Columns c = columns();
+  rift::Vec3* const stored_f_stretch = store ? e_f_stretch.values().data() : nullptr;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Match& m = ms[at[i]];
+    Result r;
+    if (!evaluate<true>(m, in, c, r)) {
+      if (store) {
+        stored_f_stretch[ss[at[i]].dart_a] = rift::Vec3::Zero();
+        stored_f_stretch[ss[at[i]].dart_b] = rift::Vec3::Zero();
+      }
+      continue;
+    }
+    f[m.vertex_a] += r.f_stretch_a;
+    if (store) stored_f_stretch[ss[at[i]].dart_a] = r.f_stretch_a;
+    f[m.vertex_b] += r.f_stretch_b;
+    if (store) stored_f_stretch[ss[at[i]].dart_b] = r.f_stretch_b;
+  }
+}
+
 void StretchKernel::force_targets(const Match& m, rift::Slot* out) const {
   out[0] = m.vertex_a;
   out[1] = m.vertex_b;
@@ -302,6 +319,26 @@ void StretchKernel::add_forces_grouped(std::span<const Match> reps, const std::u
       continue;
     }
     const rift::Real count = counts[i];
+    f[m.vertex_a] += count * r.f_stretch_a;
+    f[m.vertex_b] += count * r.f_stretch_b;
+    if (terms) {
+      terms[i * 2 + 0] = r.f_stretch_a;
+      terms[i * 2 + 1] = r.f_stretch_b;
+    }
+  }
+}
+
+void StretchKernel::add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {
+  const Columns c = columns();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t e = at[i];
+    const Match& m = reps[e];
+    Result r;
+    if (!evaluate<true>(m, in, c, r)) {
+      if (terms) for (int t = 0; t < 2; ++t) terms[i * 2 + t].setZero();
+      continue;
+    }
+    const rift::Real count = counts[e];
     f[m.vertex_a] += count * r.f_stretch_a;
     f[m.vertex_b] += count * r.f_stretch_b;
     if (terms) {
@@ -455,30 +492,24 @@ void ShearKernel::initialise(rift::GMap& g) {
   // §3.2: the dart each element is first matched from fixes the order of its corners.
   tag_ = require_embedding<rift::Bool>(g, "shear_first_dart", "interaction 'shear'");
   std::fill(tag_.values().begin(), tag_.values().end(), rift::Bool(false));
-  g.for_each_cell(kSupport, [&](rift::Dart d) { tag_[d] = true; });
-  // init shear_k(c0), once per match
+  // init shear_k(c0), shear_rest02(c0), shear_rest13(c0), once per match
   g.for_each_cell(kSupport, [&](rift::Dart support) {
-    rift::Dart darts[8];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_c0 = darts[0];
-    e_shear_k[d_c0] = p_.stiffness;
-  });
-  // init shear_rest02(c0), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
-    rift::Dart darts[8];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_c0 = darts[0];
-    const rift::Dart d_c2 = darts[4];
-    e_shear_rest02[d_c0] = ((e_position[d_c2] - e_position[d_c0])).norm();
-  });
-  // init shear_rest13(c0), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
+    tag_[support] = true;  // the orbit's first dart
     rift::Dart darts[8];
     if (!find(g, support, darts)) return;
     const rift::Dart d_c0 = darts[0];
     const rift::Dart d_c1 = darts[2];
+    const rift::Dart d_c2 = darts[4];
     const rift::Dart d_c3 = darts[6];
-    e_shear_rest13[d_c0] = ((e_position[d_c3] - e_position[d_c1])).norm();
+    {
+      e_shear_k[d_c0] = p_.stiffness;
+    }
+    {
+      e_shear_rest02[d_c0] = ((e_position[d_c2] - e_position[d_c0])).norm();
+    }
+    {
+      e_shear_rest13[d_c0] = ((e_position[d_c3] - e_position[d_c1])).norm();
+    }
   });
 }
 
@@ -553,6 +584,32 @@ void ShearKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, co
   }
 }
 
+void ShearKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+  const Columns c = columns();
+  rift::Vec3* const stored_f_shear = store ? e_f_shear.values().data() : nullptr;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Match& m = ms[at[i]];
+    Result r;
+    if (!evaluate<true>(m, in, c, r)) {
+      if (store) {
+        stored_f_shear[ss[at[i]].orbit1_c0] = rift::Vec3::Zero();
+        stored_f_shear[ss[at[i]].orbit1_c2] = rift::Vec3::Zero();
+        stored_f_shear[ss[at[i]].orbit1_c1] = rift::Vec3::Zero();
+        stored_f_shear[ss[at[i]].orbit1_c3] = rift::Vec3::Zero();
+      }
+      continue;
+    }
+    f[m.vertex_c0] += r.f_shear_c0;
+    if (store) stored_f_shear[ss[at[i]].orbit1_c0] = r.f_shear_c0;
+    f[m.vertex_c2] += r.f_shear_c2;
+    if (store) stored_f_shear[ss[at[i]].orbit1_c2] = r.f_shear_c2;
+    f[m.vertex_c1] += r.f_shear_c1;
+    if (store) stored_f_shear[ss[at[i]].orbit1_c1] = r.f_shear_c1;
+    f[m.vertex_c3] += r.f_shear_c3;
+    if (store) stored_f_shear[ss[at[i]].orbit1_c3] = r.f_shear_c3;
+  }
+}
+
 void ShearKernel::force_targets(const Match& m, rift::Slot* out) const {
   out[0] = m.vertex_c0;
   out[1] = m.vertex_c2;
@@ -602,6 +659,30 @@ void ShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uin
       continue;
     }
     const rift::Real count = counts[i];
+    f[m.vertex_c0] += count * r.f_shear_c0;
+    f[m.vertex_c2] += count * r.f_shear_c2;
+    f[m.vertex_c1] += count * r.f_shear_c1;
+    f[m.vertex_c3] += count * r.f_shear_c3;
+    if (terms) {
+      terms[i * 4 + 0] = r.f_shear_c0;
+      terms[i * 4 + 1] = r.f_shear_c2;
+      terms[i * 4 + 2] = r.f_shear_c1;
+      terms[i * 4 + 3] = r.f_shear_c3;
+    }
+  }
+}
+
+void ShearKernel::add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {
+  const Columns c = columns();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t e = at[i];
+    const Match& m = reps[e];
+    Result r;
+    if (!evaluate<true>(m, in, c, r)) {
+      if (terms) for (int t = 0; t < 4; ++t) terms[i * 4 + t].setZero();
+      continue;
+    }
+    const rift::Real count = counts[e];
     f[m.vertex_c0] += count * r.f_shear_c0;
     f[m.vertex_c2] += count * r.f_shear_c2;
     f[m.vertex_c1] += count * r.f_shear_c1;
@@ -2004,48 +2085,34 @@ void VolumeShearKernel::initialise(rift::GMap& g) {
   // §3.2: the dart each element is first matched from fixes the order of its corners.
   tag_ = require_embedding<rift::Bool>(g, "volume_shear_first_dart", "interaction 'volume_shear'");
   std::fill(tag_.values().begin(), tag_.values().end(), rift::Bool(false));
-  g.for_each_cell(kSupport, [&](rift::Dart d) { tag_[d] = true; });
-  // init vshear_k(b0), once per match
+  // init vshear_k(b0), vshear_rest0(b0), vshear_rest1(b0), vshear_rest2(b0), vshear_rest3(b0), once per match
   g.for_each_cell(kSupport, [&](rift::Dart support) {
-    rift::Dart darts[48];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_b0 = darts[0];
-    e_vshear_k[d_b0] = p_.stiffness;
-  });
-  // init vshear_rest0(b0), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
-    rift::Dart darts[48];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_b0 = darts[0];
-    const rift::Dart d_s22 = darts[26];
-    e_vshear_rest0[d_b0] = ((e_position[d_s22] - e_position[d_b0])).norm();
-  });
-  // init vshear_rest1(b0), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
+    tag_[support] = true;  // the orbit's first dart
     rift::Dart darts[48];
     if (!find(g, support, darts)) return;
     const rift::Dart d_b0 = darts[0];
     const rift::Dart d_b2 = darts[2];
-    const rift::Dart d_s32 = darts[34];
-    e_vshear_rest1[d_b0] = ((e_position[d_s32] - e_position[d_b2])).norm();
-  });
-  // init vshear_rest2(b0), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
-    rift::Dart darts[48];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_b0 = darts[0];
     const rift::Dart d_b4 = darts[4];
-    const rift::Dart d_s02 = darts[10];
-    e_vshear_rest2[d_b0] = ((e_position[d_s02] - e_position[d_b4])).norm();
-  });
-  // init vshear_rest3(b0), once per match
-  g.for_each_cell(kSupport, [&](rift::Dart support) {
-    rift::Dart darts[48];
-    if (!find(g, support, darts)) return;
-    const rift::Dart d_b0 = darts[0];
     const rift::Dart d_b6 = darts[6];
+    const rift::Dart d_s02 = darts[10];
     const rift::Dart d_s12 = darts[18];
-    e_vshear_rest3[d_b0] = ((e_position[d_s12] - e_position[d_b6])).norm();
+    const rift::Dart d_s22 = darts[26];
+    const rift::Dart d_s32 = darts[34];
+    {
+      e_vshear_k[d_b0] = p_.stiffness;
+    }
+    {
+      e_vshear_rest0[d_b0] = ((e_position[d_s22] - e_position[d_b0])).norm();
+    }
+    {
+      e_vshear_rest1[d_b0] = ((e_position[d_s32] - e_position[d_b2])).norm();
+    }
+    {
+      e_vshear_rest2[d_b0] = ((e_position[d_s02] - e_position[d_b4])).norm();
+    }
+    {
+      e_vshear_rest3[d_b0] = ((e_position[d_s12] - e_position[d_b6])).norm();
+    }
   });
 }
 
@@ -2155,6 +2222,44 @@ void VolumeShearKernel::add_forces_all(std::span<const Match> ms, const Stored* 
   }
 }
 
+void VolumeShearKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+  const Columns c = columns();
+  rift::Vec3* const stored_f_volume_shear = store ? e_f_volume_shear.values().data() : nullptr;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Match& m = ms[at[i]];
+    Result r;
+    if (!evaluate<true>(m, in, c, r)) {
+      if (store) {
+        stored_f_volume_shear[ss[at[i]].orbit12_b0] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[at[i]].orbit12_s22] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[at[i]].orbit12_b2] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[at[i]].orbit12_s32] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[at[i]].orbit12_b4] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[at[i]].orbit12_s02] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[at[i]].orbit12_b6] = rift::Vec3::Zero();
+        stored_f_volume_shear[ss[at[i]].orbit12_s12] = rift::Vec3::Zero();
+      }
+      continue;
+    }
+    f[m.vertex_b0] += r.f_volume_shear_b0;
+    if (store) stored_f_volume_shear[ss[at[i]].orbit12_b0] = r.f_volume_shear_b0;
+    f[m.vertex_s22] += r.f_volume_shear_s22;
+    if (store) stored_f_volume_shear[ss[at[i]].orbit12_s22] = r.f_volume_shear_s22;
+    f[m.vertex_b2] += r.f_volume_shear_b2;
+    if (store) stored_f_volume_shear[ss[at[i]].orbit12_b2] = r.f_volume_shear_b2;
+    f[m.vertex_s32] += r.f_volume_shear_s32;
+    if (store) stored_f_volume_shear[ss[at[i]].orbit12_s32] = r.f_volume_shear_s32;
+    f[m.vertex_b4] += r.f_volume_shear_b4;
+    if (store) stored_f_volume_shear[ss[at[i]].orbit12_b4] = r.f_volume_shear_b4;
+    f[m.vertex_s02] += r.f_volume_shear_s02;
+    if (store) stored_f_volume_shear[ss[at[i]].orbit12_s02] = r.f_volume_shear_s02;
+    f[m.vertex_b6] += r.f_volume_shear_b6;
+    if (store) stored_f_volume_shear[ss[at[i]].orbit12_b6] = r.f_volume_shear_b6;
+    f[m.vertex_s12] += r.f_volume_shear_s12;
+    if (store) stored_f_volume_shear[ss[at[i]].orbit12_s12] = r.f_volume_shear_s12;
+  }
+}
+
 void VolumeShearKernel::force_targets(const Match& m, rift::Slot* out) const {
   out[0] = m.vertex_b0;
   out[1] = m.vertex_s22;
@@ -2222,6 +2327,38 @@ void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const st
       continue;
     }
     const rift::Real count = counts[i];
+    f[m.vertex_b0] += count * r.f_volume_shear_b0;
+    f[m.vertex_s22] += count * r.f_volume_shear_s22;
+    f[m.vertex_b2] += count * r.f_volume_shear_b2;
+    f[m.vertex_s32] += count * r.f_volume_shear_s32;
+    f[m.vertex_b4] += count * r.f_volume_shear_b4;
+    f[m.vertex_s02] += count * r.f_volume_shear_s02;
+    f[m.vertex_b6] += count * r.f_volume_shear_b6;
+    f[m.vertex_s12] += count * r.f_volume_shear_s12;
+    if (terms) {
+      terms[i * 8 + 0] = r.f_volume_shear_b0;
+      terms[i * 8 + 1] = r.f_volume_shear_s22;
+      terms[i * 8 + 2] = r.f_volume_shear_b2;
+      terms[i * 8 + 3] = r.f_volume_shear_s32;
+      terms[i * 8 + 4] = r.f_volume_shear_b4;
+      terms[i * 8 + 5] = r.f_volume_shear_s02;
+      terms[i * 8 + 6] = r.f_volume_shear_b6;
+      terms[i * 8 + 7] = r.f_volume_shear_s12;
+    }
+  }
+}
+
+void VolumeShearKernel::add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {
+  const Columns c = columns();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t e = at[i];
+    const Match& m = reps[e];
+    Result r;
+    if (!evaluate<true>(m, in, c, r)) {
+      if (terms) for (int t = 0; t < 8; ++t) terms[i * 8 + t].setZero();
+      continue;
+    }
+    const rift::Real count = counts[e];
     f[m.vertex_b0] += count * r.f_volume_shear_b0;
     f[m.vertex_s22] += count * r.f_volume_shear_s22;
     f[m.vertex_b2] += count * r.f_volume_shear_b2;

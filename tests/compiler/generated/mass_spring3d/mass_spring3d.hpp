@@ -73,6 +73,9 @@ class StretchKernel {
   /// The force pass over every match: adds each force to f (and stores it when `store`,
   /// at the slots of ss[i], parallel to ms).
   void add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store);
+  /// The same over ms[at[i]] for i < n (ss parallel to ms): a block of matches a tear
+  /// left out of order, read in place.
+  void add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store);
   /// The vertex slots of a match's kForceTerms forces, in the order add_forces_all adds
   /// them (the coloured scatter of several threads groups matches by them).
   static constexpr int kForceTerms = 2;
@@ -88,6 +91,8 @@ class StretchKernel {
   /// The force pass over groups: adds counts[i] times the forces of reps[i];
   /// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.
   void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
+  /// The same over reps[at[i]] (counts parallel to reps) for i < n.
+  void add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
   void reset_stored(const Match& m, const Stored& s);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).
@@ -171,6 +176,9 @@ class ShearKernel {
   /// The force pass over every match: adds each force to f (and stores it when `store`,
   /// at the slots of ss[i], parallel to ms).
   void add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store);
+  /// The same over ms[at[i]] for i < n (ss parallel to ms): a block of matches a tear
+  /// left out of order, read in place.
+  void add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store);
   /// The vertex slots of a match's kForceTerms forces, in the order add_forces_all adds
   /// them (the coloured scatter of several threads groups matches by them).
   static constexpr int kForceTerms = 4;
@@ -186,6 +194,8 @@ class ShearKernel {
   /// The force pass over groups: adds counts[i] times the forces of reps[i];
   /// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.
   void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
+  /// The same over reps[at[i]] (counts parallel to reps) for i < n.
+  void add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
   void reset_stored(const Match& m, const Stored& s);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).
@@ -282,6 +292,9 @@ class VolumeShearKernel {
   /// The force pass over every match: adds each force to f (and stores it when `store`,
   /// at the slots of ss[i], parallel to ms).
   void add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store);
+  /// The same over ms[at[i]] for i < n (ss parallel to ms): a block of matches a tear
+  /// left out of order, read in place.
+  void add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store);
   /// The vertex slots of a match's kForceTerms forces, in the order add_forces_all adds
   /// them (the coloured scatter of several threads groups matches by them).
   static constexpr int kForceTerms = 8;
@@ -297,6 +310,8 @@ class VolumeShearKernel {
   /// The force pass over groups: adds counts[i] times the forces of reps[i];
   /// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.
   void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
+  /// The same over reps[at[i]] (counts parallel to reps) for i < n.
+  void add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
   void reset_stored(const Match& m, const Stored& s);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).
