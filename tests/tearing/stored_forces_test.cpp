@@ -7,6 +7,8 @@
 // the same tears, the same stored values where they are read.
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 #include "rift/output/frame_mesh.hpp"
 #include "rift/scene/scene_setup.hpp"
 #include "tearing_support.hpp"
@@ -66,6 +68,29 @@ TEST(StoredForces, WithoutCriterionNothingIsStoredAndTheMotionIsTheSame) {
   for (const char* column : {"f_stretch", "f_shear", "f_bend"})
     EXPECT_TRUE(has_storage(*full, column)) << column;
   EXPECT_FALSE(has_storage(*full, "f_membrane"));  // no interaction of the scene writes it
+}
+
+// A scene without criteria is never rewritten: its set-up says so
+// (SimulationSettings::rewrites, whose effect on the interactions
+// NeverRewritten.* tests), unless the caller rewrites by hand; the motion is
+// the same bit for bit either way.
+TEST(StoredForces, ASceneWithoutCriteriaIsSetUpForAMapNeverRewritten) {
+  const std::string toml = static_scene("grid:quad:5x4", "1.0", 1.0, kSprings);
+  auto fixed = build("never_rewritten", toml);
+  SetupOptions by_hand;
+  by_hand.rewrites_by_hand = true;
+  auto rewritable = simulate("rewritten_by_hand", toml, by_hand);
+  EXPECT_FALSE(fixed->settings().rewrites);
+  EXPECT_TRUE(rewritable->settings().rewrites);
+  expect_same_run(*fixed, *rewritable, 4);
+  const std::vector<Dart> touched = {0};
+  EXPECT_THROW(fixed->on_topology_changed(touched), std::logic_error);
+  EXPECT_NO_THROW(rewritable->on_topology_changed(touched));
+  auto tearing =
+      build("criteria_rewrite",
+            static_scene("grid:quad:5x4", "1.0", 1.0,
+                         std::string(kSprings) + "[[criterion]]\nname = \"spring_split\"\n"));
+  EXPECT_TRUE(tearing->settings().rewrites);
 }
 
 TEST(StoredForces, ACriterionSeesTheForcesItReadsExactlyThroughTears) {

@@ -37,6 +37,15 @@ Dart vertex_at(const Simulation& sim, const Vec3& p) {
   return found;
 }
 
+/// The scene set up for the rewrites these tests apply by hand (it has no
+/// criterion, which would otherwise set it up for a map never rewritten).
+std::unique_ptr<Simulation> simulate_rewritten(const std::string& name, const std::string& toml) {
+  SetupOptions options;
+  options.check_each_rewrite = true;
+  options.rewrites_by_hand = true;
+  return simulate(name, toml, options);
+}
+
 std::string stretch_scene(const std::string& mesh, double mass) {
   return static_scene(mesh, "1.0", mass,
                       "[[interaction]]\nname = \"stretch\"\nstiffness = 60.0\ndamping = 0.0\n");
@@ -55,7 +64,7 @@ bool split(Simulation& sim, Dart v, const Vec3& normal) {
 TEST(VertexSplit, InnerVertexOfAQuadGridSplitsInTwo) {
   // The centre of a 4 x 4 grid, split along x = 0.5: the two edges above and
   // below it are separated; their other ends stay whole (a slit: V - E + F = 0).
-  auto sim = simulate("split2d", stretch_scene("grid:quad:4x4", 1.0));
+  auto sim = simulate_rewritten("split2d", stretch_scene("grid:quad:4x4", 1.0));
   const Counts before = counts(sim->map());
   ASSERT_EQ(before.vertices, 25u);
   ASSERT_TRUE(split(*sim, vertex_at(*sim, Vec3(0.5, 0.5, 0)), Vec3(1, 0, 0)));
@@ -75,7 +84,7 @@ TEST(VertexSplit, InnerVertexOfATriangleGridSplitsAlongTheDiagonal) {
   // The inner vertex (0.5, 0.5) of grid:tri:4x4 has six triangles around it;
   // the plane x = y through it leaves three on each side, separated along
   // the two diagonal edges at it, whose other ends stay whole.
-  auto sim = simulate("split2d_tri", stretch_scene("grid:tri:4x4", 1.0));
+  auto sim = simulate_rewritten("split2d_tri", stretch_scene("grid:tri:4x4", 1.0));
   ASSERT_EQ(counts(sim->map()).vertices, 25u);
   ASSERT_TRUE(split(*sim, vertex_at(*sim, Vec3(0.5, 0.5, 0)), Vec3(1, -1, 0).normalized()));
   EXPECT_EQ(counts(sim->map()).vertices, 26u);
@@ -86,7 +95,7 @@ TEST(VertexSplit, InnerVertexOfATriangleGridSplitsAlongTheDiagonal) {
 TEST(VertexSplit, CornerOfATriangleGridSplitsWithTheSeparatedEdges) {
   // On grid:tri:2x2 the same cut runs from corner to corner: the diagonal's
   // ends (0,0) and (1,1) lose their only link too, and the square halves.
-  auto sim = simulate("split2d_tri_small", stretch_scene("grid:tri:2x2", 1.0));
+  auto sim = simulate_rewritten("split2d_tri_small", stretch_scene("grid:tri:2x2", 1.0));
   ASSERT_TRUE(split(*sim, vertex_at(*sim, Vec3(0.5, 0.5, 0)), Vec3(1, -1, 0).normalized()));
   EXPECT_EQ(counts(sim->map()).vertices, 12u);
   EXPECT_EQ(counts(sim->map()).components, 2u);
@@ -96,7 +105,7 @@ TEST(VertexSplit, CornerOfATriangleGridSplitsWithTheSeparatedEdges) {
 TEST(VertexSplit, InnerVertexOfAHexBlockSplitsInTwo) {
   // The centre of a 4 x 4 x 4 block, split along x = 0.5: the four faces
   // around it on that plane separate; their other vertices stay whole.
-  auto sim = simulate("split3d", stretch_scene("block:hex:4x4x4", 1.0));
+  auto sim = simulate_rewritten("split3d", stretch_scene("block:hex:4x4x4", 1.0));
   const Counts before = counts(sim->map());
   ASSERT_EQ(before.vertices, 125u);
   ASSERT_TRUE(split(*sim, vertex_at(*sim, Vec3(0.5, 0.5, 0.5)), Vec3(1, 0, 0)));
@@ -111,7 +120,7 @@ TEST(VertexSplit, InnerVertexOfAHexBlockSplitsInTwo) {
 TEST(VertexSplit, HexBlockOfTwoHalvesWhenEveryFaceOfThePlaneTouchesTheVertex) {
   // In a 2 x 2 x 2 block the four faces at the centre are the whole plane
   // x = 0.5: separating them splits its nine vertices and halves the block.
-  auto sim = simulate("split3d_small", stretch_scene("block:hex:2x2x2", 1.0));
+  auto sim = simulate_rewritten("split3d_small", stretch_scene("block:hex:2x2x2", 1.0));
   ASSERT_TRUE(split(*sim, vertex_at(*sim, Vec3(0.5, 0.5, 0.5)), Vec3(1, 0, 0)));
   EXPECT_EQ(counts(sim->map()).vertices, 27u + 9u);
   EXPECT_EQ(counts(sim->map()).components, 2u);
@@ -119,7 +128,7 @@ TEST(VertexSplit, HexBlockOfTwoHalvesWhenEveryFaceOfThePlaneTouchesTheVertex) {
 }
 
 TEST(VertexSplit, InnerVertexOfATetBlockSplitsInTwo) {
-  auto sim = simulate("split3d_tet", stretch_scene("block:tet:4x4x4", 1.0));
+  auto sim = simulate_rewritten("split3d_tet", stretch_scene("block:tet:4x4x4", 1.0));
   ASSERT_EQ(counts(sim->map()).vertices, 125u);
   ASSERT_TRUE(split(*sim, vertex_at(*sim, Vec3(0.5, 0.5, 0.5)), Vec3(0, 0, 1)));
   const Counts after = counts(sim->map());
@@ -131,7 +140,7 @@ TEST(VertexSplit, InnerVertexOfATetBlockSplitsInTwo) {
 
 TEST(VertexSplit, SplitVerticesKeepTheirPositionAndVelocity) {
   for (const char* mesh : {"grid:quad:3x3", "block:hex:2x2x2"}) {
-    auto sim = simulate("split_copies", stretch_scene(mesh, 1.0));
+    auto sim = simulate_rewritten("split_copies", stretch_scene(mesh, 1.0));
     const int dim = sim->map().dimension();
     sim->map().for_each_cell(Orbit::cell(0, dim), [&](Dart d) {
       const Vec3 p = sim->position()[d];
@@ -152,7 +161,7 @@ TEST(VertexSplit, SplitVerticesKeepTheirPositionAndVelocity) {
 
 TEST(ElementRemoval, MassDecreasesByExactlyTheRemovedElements) {
   // 2D: the centre quad of a 3 x 3 grid of 1 kg (1/9 kg each) leaves a hole.
-  auto sim2 = simulate("remove2d", stretch_scene("grid:quad:3x3", 1.0));
+  auto sim2 = simulate_rewritten("remove2d", stretch_scene("grid:quad:3x3", 1.0));
   std::vector<Dart> touched;
   Dart inner = kNoDart;  // a dart of the centre face
   sim2->map().for_each_cell(Orbit::cell(2, 2), [&](Dart d) {
@@ -173,7 +182,7 @@ TEST(ElementRemoval, MassDecreasesByExactlyTheRemovedElements) {
   EXPECT_NEAR(sim2->total_mass(), 8.0 / 9.0, 1e-12);
 
   // 3D: a corner cube of a 2 x 2 x 2 block of 1 kg.
-  auto sim3 = simulate("remove3d", stretch_scene("block:hex:2x2x2", 1.0));
+  auto sim3 = simulate_rewritten("remove3d", stretch_scene("block:hex:2x2x2", 1.0));
   touched.clear();
   const Dart corner = vertex_at(*sim3, Vec3(0, 0, 0));
   ASSERT_TRUE(rule(sim3->map(), "remove_element")

@@ -94,4 +94,11 @@ void push_back_huge(std::vector<T, A>& v, const T& x) {
   v.push_back(x);
 }
 
+/// Empties v and gives its buffer back. (`v = {}` would not: it assigns an
+/// empty initializer list, which keeps the capacity.)
+template <class T, class A>
+void give_back(std::vector<T, A>& v) {
+  std::vector<T, A>().swap(v);
+}
+
 }  // namespace rift

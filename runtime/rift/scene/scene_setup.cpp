@@ -272,10 +272,14 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
                                              const SetupOptions& options, SetupReport* report) {
   SetupReport local;
   SetupReport& rep = report ? *report : local;
-  MeshData mesh = is_generator_spec(scene.mesh.source) ? make_generated_mesh(scene.mesh.source)
-                                                       : read_mesh_file(scene.mesh.source);
-  place_mesh(mesh, scene.mesh);
-  GMap map = assemble_gmap(mesh, &rep.assembly);
+  // The mesh's points and elements are given back once assembled (tens of
+  // MB at 10^6 vertices, which would otherwise stay through the set-up).
+  GMap map = [&] {
+    MeshData mesh = is_generator_spec(scene.mesh.source) ? make_generated_mesh(scene.mesh.source)
+                                                         : read_mesh_file(scene.mesh.source);
+    place_mesh(mesh, scene.mesh);
+    return assemble_gmap(mesh, &rep.assembly);
+  }();
   const int n = map.dimension();
 
   // Every component must exist for this dimension; collect the packs used.
@@ -312,6 +316,7 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
   settings.divergence_factor = scene.divergence_factor;
   settings.max_tears_per_step = scene.tearing.max_per_step;
   settings.check_each_rewrite = options.check_each_rewrite;
+  settings.rewrites = !scene.criteria.empty() || options.rewrites_by_hand;
   auto sim = std::make_unique<Simulation>(std::move(map), settings);
   GMap& m = sim->map();
   for (const Pack* p : used) {

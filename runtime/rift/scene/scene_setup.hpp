@@ -33,6 +33,12 @@ struct SetupOptions {
   /// point_arrays and cell_arrays): an interaction storing one of them keeps
   /// storing it although no criterion reads it.
   std::vector<std::string> output_arrays = {"velocity", "force", "point_index"};
+  /// The caller rewrites the map itself after the set-up (and announces it
+  /// with Simulation::on_topology_changed). Otherwise a scene without
+  /// criteria is set up for a map that is never rewritten
+  /// (SimulationSettings::rewrites = false), keeping none of what only
+  /// re-matching reads.
+  bool rewrites_by_hand = false;
 };
 
 /// The stored forces a scene reads: those its `criteria` read

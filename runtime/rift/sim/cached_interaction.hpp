@@ -73,10 +73,17 @@
 // the interaction stores (set_store_forces): a stretch spring that stores
 // nothing caches 3 slots instead of 5, and its stored-force embedding stays
 // unbound (its orbit's attachment may keep no slots at all).
+//
+// An interaction told that the map is never rewritten (set_rewrites(false),
+// a scene without criteria) keeps only what its force passes read: no
+// owners in the cache, groups without their keys, table and entries'
+// groups (member links only when it stores), a frozen colouring. rematch
+// then throws.
 #pragma once
 
 #include <algorithm>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -123,8 +130,9 @@ class CachedInteraction final : public ForceModel {
     if constexpr (kGroupable) {
       grouped_ = group_requested_ && Kernel::kGroupKey <= MatchGroups<Match>::kMaxKey;
     }
-    stored_ = {};
+    give_back(stored_);
     if (keeps_stored()) reserve_huge(stored_, map.capacity());
+    cache_.keep_owners(rewrites_);
     // The cache inserts exactly the matches this returns true for, in order.
     cache_.build(
         map, Kernel::kSupport,
@@ -137,7 +145,10 @@ class CachedInteraction final : public ForceModel {
     if constexpr (kGroupable) {
       if (grouped_) {
         typename MatchGroups<Match>::NoObserver none;
-        groups_.build(cache_.matches(), Kernel::kGroupKey, key_fn(), none);
+        using Keep = typename MatchGroups<Match>::Keep;
+        const Keep keep =
+            rewrites_ ? Keep::kEverything : (store_forces_ ? Keep::kMembers : Keep::kCounts);
+        groups_.build(cache_.matches(), Kernel::kGroupKey, key_fn(), none, keep);
         // Nothing to share (each element once, e.g. finite elements): the
         // plain pass, without the groups' upkeep.
         grouped_ = groups_.size() < cache_.size();
@@ -147,6 +158,7 @@ class CachedInteraction final : public ForceModel {
         const auto reps = groups_.representatives();
         colouring_.build(reps.size(), Kernel::kForceTerms,
                          [&](std::size_t g, Slot* out) { kernel_.force_targets(reps[g], out); });
+        if (!rewrites_) colouring_.freeze();
         return;
       }
     }
@@ -154,10 +166,15 @@ class CachedInteraction final : public ForceModel {
       const auto all = cache_.matches();
       colouring_.build(all.size(), Kernel::kForceTerms,
                        [&](std::size_t e, Slot* out) { kernel_.force_targets(all[e], out); });
+      if (!rewrites_) colouring_.freeze();
     }
   }
 
   void rematch(const GMap& map, std::span<const Dart> region) override {
+    if (!rewrites_) {
+      throw std::logic_error("interaction '" + kernel_.name() +
+                             "' was set up for a map that is never rewritten (set_rewrites)");
+    }
     if constexpr (kAccumulates) {
       if (store_forces_) kernel_.reset_accumulated(map, region);
     }
@@ -217,6 +234,9 @@ class CachedInteraction final : public ForceModel {
   /// Before initialise (which binds the stored embeddings or not).
   void set_store_forces(bool on) override { store_forces_ = on; }
   bool stores_forces() const { return store_forces_; }
+  /// Before initialise: false keeps only what the force passes read.
+  void set_rewrites(bool on) override { rewrites_ = on; }
+  bool rewrites() const { return rewrites_; }
   /// True when this interaction's force pass runs over groups.
   bool grouped() const { return grouped_; }
   /// Groups the force pass evaluates (matches when not grouped).
@@ -591,6 +611,7 @@ class CachedInteraction final : public ForceModel {
   bool group_requested_ = true;
   bool grouped_ = false;
   bool store_forces_ = true;  ///< false: nothing reads the stored forces (set_store_forces)
+  bool rewrites_ = true;      ///< false: never re-matched (set_rewrites)
 };
 
 }  // namespace rift

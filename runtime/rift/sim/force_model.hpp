@@ -49,6 +49,11 @@ class ForceModel {
   /// then neither stores nor resets, leaving their columns without storage
   /// (issue 12, lean memory). True by default.
   virtual void set_store_forces(bool /*on*/) {}
+  /// Before initialise: false when the map is never rewritten after
+  /// initialise (a scene without criteria), so that rematch is never called
+  /// and the interaction keeps none of what only re-matching reads (issue
+  /// 12, lean memory). True by default.
+  virtual void set_rewrites(bool /*on*/) {}
 
   /// Elastic energy at the given state (0 when the interaction has none).
   virtual Real potential_energy(const ForceInput& /*in*/) const { return 0; }

@@ -10,9 +10,12 @@
 // 10^6-vertex scene that does not tear does not pay 4 bytes per dart per
 // interaction (96 MB for three interactions of a quad cloth, 560 MB for a
 // hexahedral block), and the first tear pays one pass over the matches.
+// A cache built for a map that is never rewritten (keep_owners(false))
+// keeps no owners either: rematch then refuses.
 #pragma once
 
 #include <span>
+#include <stdexcept>
 #include <vector>
 
 #include "rift/core/huge_pages.hpp"
@@ -32,10 +35,18 @@ class MatchCache {
   std::span<const Dart> owners() const { return owners_; }
   /// True once the owners are indexed by dart (from the first rematch on).
   bool indexes_owners() const { return indexed_; }
+  /// Before build: false for a map that is never rewritten afterwards; the
+  /// owners (4 bytes per match), which only rematch reads, are not kept.
+  void keep_owners(bool on) { keeps_owners_ = on; }
+  bool keeps_owners() const { return keeps_owners_; }
   /// Indexes the owners now instead of at the first rematch (tests compare
   /// both ways).
   void index_owners(const GMap& map) {
     if (indexed_) return;
+    if (!keeps_owners_) {
+      throw std::logic_error(
+          "MatchCache: re-matching a cache built for a map that is never rewritten");
+    }
     entry_of_dart_.clear();
     grow_huge(entry_of_dart_, map.capacity(), kNone);
     for (std::size_t e = 0; e < owners_.size(); ++e)
@@ -60,10 +71,11 @@ class MatchCache {
     // map), so that building neither moves the arrays nor faults them in
     // page by page; only what the matches fill becomes resident.
     reserve_huge(matches_, map.capacity());
-    reserve_huge(owners_, map.capacity());
+    give_back(owners_);
+    if (keeps_owners_) reserve_huge(owners_, map.capacity());
     // Not indexed until a rematch needs it (index_owners); the memory of an
     // earlier index is given back.
-    entry_of_dart_ = {};
+    give_back(entry_of_dart_);
     indexed_ = false;
     map.for_each_cell(support, [&](Dart d) {
       const Dart owner = choose(map, d);
@@ -194,7 +206,7 @@ class MatchCache {
     }
     // Within the headroom of huge_pages.hpp: a tear appends in place.
     push_back_huge(matches_, m);
-    push_back_huge(owners_, owner);
+    if (keeps_owners_) push_back_huge(owners_, owner);
   }
   // Swap-and-pop keeps the array dense. Only rematch erases: indexed.
   template <class Observer>
@@ -215,6 +227,7 @@ class MatchCache {
   std::vector<Dart> owners_;
   std::vector<std::uint32_t> entry_of_dart_;  ///< empty until indexed_
   bool indexed_ = false;
+  bool keeps_owners_ = true;  ///< false: never re-matched, owners_ stays empty
   std::vector<Dart> frontier_;
 };
 

@@ -22,12 +22,21 @@
 // follow the MatchCache's own changes (erased, replaced, inserted), and tell
 // an observer of the groups' dense array in turn. Entries are indices in the
 // MatchCache's dense array.
+//
+// What a force pass reads is the representatives and counts; the rest (each
+// entry's group, the member links, the keys and the table) is read only to
+// follow tears, the member links also by a pass that stores. A build for a
+// map that is never rewritten keeps only what its passes read (Keep): at
+// 10^6 quads that is 24 of a grouped spring's 136 bytes per group beyond
+// the representative (issue 12, lean memory).
 #pragma once
 
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <map>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -74,6 +83,13 @@ class MatchGroups {
   /// hexahedron reading 8 vertices and 48 values, are not grouped).
   static constexpr int kMaxKey = 64;
 
+  /// What build keeps besides the representatives and their counts.
+  enum class Keep {
+    kEverything,  ///< what following tears needs (the default)
+    kMembers,     ///< the member links only: a pass that stores, never a tear
+    kCounts,      ///< nothing more: a pass that never stores, never a tear
+  };
+
   /// What the groups tell an observer (the scatter colouring over groups).
   struct NoObserver {
     /// Group g is dropped; the last group `last` then takes index g.
@@ -88,7 +104,9 @@ class MatchGroups {
   /// Members per group, parallel to representatives().
   std::span<const std::uint32_t> counts() const { return count_; }
   std::uint32_t group_of(std::uint32_t entry) const { return group_of_[entry]; }
-  /// f(entry) for each member of group g.
+  /// What the last build kept.
+  Keep keeps() const { return keep_; }
+  /// f(entry) for each member of group g (not after a build keeping kCounts).
   template <class F>
   void for_each_member(std::uint32_t g, F&& f) const {
     for (std::uint32_t e = head_[g]; e != kNone; e = next_[e])
@@ -98,20 +116,24 @@ class MatchGroups {
   /// Groups `matches` (every entry of the cache). key(const Match&,
   /// std::uint64_t* out) writes `words` words.
   template <class KeyFn, class Observer>
-  void build(std::span<const Match> matches, int words, KeyFn&& key, Observer& observer) {
+  void build(std::span<const Match> matches, int words, KeyFn&& key, Observer& observer,
+             Keep keep = Keep::kEverything) {
     words_ = words;
+    keep_ = keep;
     reps_.clear();
     count_.clear();
-    head_.clear();
+    give_back(head_);
     keys_.clear();
-    group_of_.assign(matches.size(), kNone);
-    next_.assign(matches.size(), kNone);
+    give_back(group_of_);
+    give_back(next_);
+    if (keep_ == Keep::kEverything) group_of_.assign(matches.size(), kNone);
+    if (keep_ != Keep::kCounts) next_.assign(matches.size(), kNone);
     // Never more groups than matches: reserved once (advised for huge pages),
     // the per-group arrays neither move nor fault in 4 KiB at a time, and
     // only what the groups fill becomes resident (issue 12's set-up).
     reserve_huge(reps_, matches.size());
     reserve_huge(count_, matches.size());
-    reserve_huge(head_, matches.size());
+    if (keep_ != Keep::kCounts) reserve_huge(head_, matches.size());
     reserve_huge(keys_, matches.size() * static_cast<std::size_t>(words));
     // Sized for half as many groups as matches (the usual case: an interior
     // edge's two faces) rather than grown by rehashing; add still grows it
@@ -120,6 +142,12 @@ class MatchGroups {
     table_.assign(table_size_for(matches.size() / 2), kNone);
     for (std::uint32_t e = 0; e < matches.size(); ++e)
       add(e, matches[e], key, observer);
+    if (keep_ != Keep::kEverything) {
+      // Only the tears read them: given back (the build's peak is the
+      // representatives, the keys and the table, a few moments).
+      give_back(keys_);
+      give_back(table_);
+    }
   }
 
   // ---- MatchCache::rematch's events, in its order; `matches` is the cache's
@@ -129,6 +157,7 @@ class MatchGroups {
   template <class Observer>
   void erased(std::uint32_t e, std::uint32_t last, std::span<const Match> matches,
               Observer& observer) {
+    require_everything();
     remove(e, matches, observer);
     if (e != last) {
       // Entry `last` becomes e: relink it where it was.
@@ -155,6 +184,7 @@ class MatchGroups {
     // The group's own copy of its key, not `before`'s: a parameter changed in
     // place (then announced as a rewrite) reads the same from both.
     (void)before;
+    require_everything();
     std::uint64_t b[kMaxKey];
     key(after, b);
     if (same_key(b, key_of(group_of_[e]))) {
@@ -170,6 +200,7 @@ class MatchGroups {
   /// A new entry e (the last), matched as m.
   template <class KeyFn, class Observer>
   void inserted(std::uint32_t e, const Match& m, KeyFn&& key, Observer& observer) {
+    require_everything();
     group_of_.push_back(kNone);
     next_.push_back(kNone);
     add(e, m, key, observer);
@@ -180,6 +211,7 @@ class MatchGroups {
   /// one key. Returns an empty string or what is wrong.
   template <class KeyFn>
   std::string check(std::span<const Match> matches, KeyFn&& key) const {
+    if (keep_ != Keep::kEverything) return check_kept(matches, key);
     if (group_of_.size() != matches.size()) return "entries and matches differ in number";
     std::vector<std::uint32_t> seen(reps_.size(), 0);
     std::uint64_t a[kMaxKey];
@@ -205,6 +237,49 @@ class MatchGroups {
   }
 
  private:
+  void require_everything() const {
+    if (keep_ != Keep::kEverything) {
+      throw std::logic_error(
+          "MatchGroups: following a tear with groups built for a map that is never rewritten");
+    }
+  }
+
+  /// check() of a build that kept less: the groups a fresh grouping of the
+  /// matches gives (keys of the representatives, each match counted in the
+  /// group of its key), and the member links when kept.
+  template <class KeyFn>
+  std::string check_kept(std::span<const Match> matches, KeyFn&& key) const {
+    std::map<std::vector<std::uint64_t>, std::uint32_t> group_of_key;
+    std::uint64_t a[kMaxKey];
+    for (std::uint32_t g = 0; g < reps_.size(); ++g) {
+      key(reps_[g], a);
+      if (!group_of_key.emplace(std::vector<std::uint64_t>(a, a + words_), g).second)
+        return "groups " + std::to_string(g) + " and another share a key";
+    }
+    std::vector<std::uint32_t> seen(reps_.size(), 0);
+    for (std::uint32_t e = 0; e < matches.size(); ++e) {
+      key(matches[e], a);
+      const auto it = group_of_key.find(std::vector<std::uint64_t>(a, a + words_));
+      if (it == group_of_key.end()) return "entry " + std::to_string(e) + " has no group";
+      ++seen[it->second];
+      if (keep_ == Keep::kMembers) {
+        bool listed = false;
+        for_each_member(it->second, [&](std::uint32_t m) { listed = listed || m == e; });
+        if (!listed) return "entry " + std::to_string(e) + " is not a member of its group";
+      }
+    }
+    for (std::uint32_t g = 0; g < reps_.size(); ++g) {
+      std::uint32_t n = seen[g];
+      if (keep_ == Keep::kMembers) {
+        n = 0;
+        for_each_member(g, [&](std::uint32_t) { ++n; });
+      }
+      if (seen[g] != count_[g] || n != count_[g])
+        return "group " + std::to_string(g) + " has a wrong count";
+    }
+    return "";
+  }
+
   static std::size_t table_size_for(std::size_t n) {
     std::size_t size = 16;
     while (size < 2 * n + 2)
@@ -271,7 +346,7 @@ class MatchGroups {
       g = static_cast<std::uint32_t>(reps_.size());
       reps_.push_back(m);
       count_.push_back(0);
-      head_.push_back(kNone);
+      if (keep_ != Keep::kCounts) head_.push_back(kNone);
       keys_.insert(keys_.end(), k, k + words_);
       if (2 * reps_.size() + 2 > table_.size()) {
         grow_table();  // places g too
@@ -283,9 +358,11 @@ class MatchGroups {
       }
       observer.inserted(g, m);
     }
-    group_of_[e] = g;
-    next_[e] = head_[g];
-    head_[g] = e;
+    if (keep_ == Keep::kEverything) group_of_[e] = g;
+    if (keep_ != Keep::kCounts) {
+      next_[e] = head_[g];
+      head_[g] = e;
+    }
     ++count_[g];
   }
 
@@ -349,6 +426,7 @@ class MatchGroups {
   }
 
   int words_ = 0;
+  Keep keep_ = Keep::kEverything;
   std::vector<Match> reps_;
   std::vector<std::uint32_t> count_;
   std::vector<std::uint32_t> head_;      ///< per group: its first member

@@ -4,6 +4,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "rift/core/huge_pages.hpp"
 #include "rift/core/interrupt.hpp"
 #include "rift/core/parallel.hpp"
 
@@ -11,6 +12,8 @@ namespace rift {
 
 void ScatterColouring::begin_build(std::size_t n, int k) {
   if (n >= kPendingBit) throw std::length_error("ScatterColouring: more than 2^31 matches");
+  frozen_ = false;
+  frozen_entries_ = 0;
   k_ = static_cast<std::size_t>(k);
   block_ = fixed_block_ != 0 ? fixed_block_
                              : std::max(kMinBlock, (n + kTargetBlocks - 1) / kTargetBlocks);
@@ -35,6 +38,23 @@ void ScatterColouring::begin_build(std::size_t n, int k) {
   pending_.clear();
   pending_slots_.clear();
   mask_.assign(mask_.size(), 0);
+}
+
+void ScatterColouring::freeze() {
+  // The pending entries (none after a build) stay where they are: run()
+  // scatters them last, as before.
+  frozen_ = true;
+  frozen_entries_ = where_.size();
+  give_back(where_);
+  give_back(mask_);
+  give_back(scratch_);
+}
+
+void ScatterColouring::require_changes() const {
+  if (frozen_) {
+    throw std::logic_error(
+        "ScatterColouring: a change of the matches after freeze (a map never rewritten)");
+  }
 }
 
 void ScatterColouring::colour_block(std::uint32_t b, std::span<const Slot> slots) {
@@ -85,6 +105,7 @@ void ScatterColouring::remove(std::uint32_t e) {
 }
 
 void ScatterColouring::erase(std::uint32_t e, std::uint32_t last) {
+  require_changes();
   remove(e);
   if (e != last) {
     const std::uint32_t w = where_[last];
@@ -100,12 +121,14 @@ void ScatterColouring::erase(std::uint32_t e, std::uint32_t last) {
 }
 
 void ScatterColouring::replace(std::uint32_t e, bool same, std::span<const Slot> slots) {
+  require_changes();
   if (same) return;
   remove(e);
   add_pending(e, slots);
 }
 
 void ScatterColouring::insert(std::uint32_t e, std::span<const Slot> slots) {
+  require_changes();
   if (e != where_.size()) throw std::logic_error("ScatterColouring::insert: not the next entry");
   where_.push_back(0);
   add_pending(e, slots);
@@ -153,8 +176,8 @@ void ScatterColouring::run(BlockBody body) const {
 
 std::string ScatterColouring::check_targets(std::span<const Slot> targets, int k) const {
   const std::size_t n = targets.size() / static_cast<std::size_t>(k);
-  if (where_.size() != n)
-    return "the colouring has " + std::to_string(where_.size()) + " entries, the matches " +
+  if (entries() != n)
+    return "the colouring has " + std::to_string(entries()) + " entries, the matches " +
            std::to_string(n);
   std::vector<int> seen(n, 0);
   // Per colour, the block touching each vertex.
@@ -165,7 +188,8 @@ std::string ScatterColouring::check_targets(std::span<const Slot> targets, int k
       const std::uint32_t e = order_[id * block_ + i];
       if (e >= n) return "block " + std::to_string(id) + " holds entry " + std::to_string(e);
       ++seen[e];
-      if (where_[e] != id * block_ + i) return "where_ of entry " + std::to_string(e) + " is stale";
+      if (!frozen_ && where_[e] != id * block_ + i)
+        return "where_ of entry " + std::to_string(e) + " is stale";
       if (b.consecutive && e != order_[id * block_] + i)
         return "block " + std::to_string(id) + " is not consecutive";
       if (b.colour == kSerial) continue;
@@ -182,7 +206,8 @@ std::string ScatterColouring::check_targets(std::span<const Slot> targets, int k
   }
   for (std::size_t i = 0; i < pending_.size(); ++i) {
     ++seen[pending_[i]];
-    if (where_[pending_[i]] != (kPendingBit | i)) return "where_ of a pending entry is stale";
+    if (!frozen_ && where_[pending_[i]] != (kPendingBit | i))
+      return "where_ of a pending entry is stale";
     for (std::size_t j = 0; j < k_; ++j) {
       if (pending_slots_[i * k_ + j] != targets[pending_[i] * k_ + j])
         return "the vertices of pending entry " + std::to_string(pending_[i]) + " are stale";

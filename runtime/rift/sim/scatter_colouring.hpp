@@ -22,6 +22,10 @@
 // loses a match keeps its bits), which can cost a colour, never a race.
 //
 // Entries are the indices of the matches in the MatchCache's dense array.
+//
+// A colouring of matches that never change (a map never rewritten) is
+// frozen after its build: it gives back each entry's place and the
+// per-vertex masks, which only the changes read, and refuses changes.
 #pragma once
 
 #include <algorithm>
@@ -87,6 +91,10 @@ class ScatterColouring {
     }
   }
 
+  /// After build: no change will come; what only changes read is given back.
+  void freeze();
+  bool frozen() const { return frozen_; }
+
   /// The matches changed (MatchCache::rematch's events, in its order).
   /// Entry e is dropped and the last entry `last` takes its index.
   void erase(std::uint32_t e, std::uint32_t last);
@@ -105,7 +113,7 @@ class ScatterColouring {
   std::size_t colours() const { return by_colour_.size(); }
   std::size_t blocks() const { return blocks_.size(); }
   std::size_t pending() const { return pending_.size(); }
-  std::size_t entries() const { return where_.size(); }
+  std::size_t entries() const { return frozen_ ? frozen_entries_ : where_.size(); }
 
   /// Checks the colouring against the targets the matches have now (for
   /// tests): every entry in exactly one place, no vertex touched by two
@@ -138,7 +146,12 @@ class ScatterColouring {
   void flush_pending();
   std::string check_targets(std::span<const Slot> targets, int k) const;
 
+  /// Throws when frozen.
+  void require_changes() const;
+
   std::size_t fixed_block_;  ///< 0: chosen by build()
+  bool frozen_ = false;
+  std::size_t frozen_entries_ = 0;  ///< entries() when frozen (where_ is given back)
   std::size_t block_ = kMinBlock;
   std::size_t k_ = 0;
   std::vector<Block> blocks_;

@@ -62,8 +62,11 @@ void Simulation::set_density(Real density) {
 
 void Simulation::initialise() {
   update_all_vertex_masses(map_, corner_mass_, vertex_mass_);
+  if (!settings_.rewrites && !criteria_.empty())
+    throw std::invalid_argument("a simulation with criteria rewrites its map (settings.rewrites)");
   for (auto& model : models_) {
     model->set_grouping(settings_.group_interactions);
+    model->set_rewrites(settings_.rewrites);
     model->initialise(map_);
   }
   for (auto& criterion : criteria_)
@@ -331,6 +334,11 @@ void Simulation::account_external_work(const std::vector<Vec3>& x) {
 }
 
 void Simulation::on_topology_changed(std::span<const Dart> touched) {
+  if (!settings_.rewrites) {
+    throw std::logic_error(
+        "on_topology_changed: the simulation was set up for a map that is never rewritten "
+        "(SimulationSettings::rewrites)");
+  }
   const Orbit vertex = Orbit::cell(0, map_.dimension());
   const Mark m = map_.reserve_mark();
   region_.clear();

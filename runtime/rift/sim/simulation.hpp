@@ -40,6 +40,11 @@ struct SimulationSettings {
   /// Evaluate identical matches of an interaction once (same forces to
   /// rounding, rift/sim/match_groups.hpp); false evaluates each match.
   bool group_interactions = true;
+  /// The map may be rewritten after initialise (criteria, or a caller's own
+  /// rewrites announced by on_topology_changed). false, for a scene without
+  /// criteria: the interactions keep none of what only re-matching reads
+  /// (ForceModel::set_rewrites), and on_topology_changed throws.
+  bool rewrites = true;
 };
 
 /// A simulation that cannot go on: exploded state or an invalid map.
