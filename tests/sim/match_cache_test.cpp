@@ -218,8 +218,10 @@ TEST(MatchCache, TheScatterColouringFollowsLocalRematches) {
     EXPECT_LE((plain[i] - one[i]).norm(), 1e-12 * (1 + plain[i].norm())) << i;
 }
 
-// A cache indexes its owners by dart only at its first rematch (a scene that
-// never tears never pays for the index). That index, made from the owners
+// A cache indexes its owners by dart at its first rematch or when asked: an
+// interaction on a map that is rewritten asks at set-up (its first tear then
+// costs what it touches), one on a map never rewritten keeps no index. That
+// index, made from the owners
 // after the build, must be the one the build itself would have made: through
 // the same tears and sews, a cache indexed at its build and one indexed at its
 // first rematch hold the same matches, with the same owners, in the same order.
@@ -237,7 +239,12 @@ TEST(MatchCache, AnOwnerIndexMadeAtTheFirstTearEqualsOneMadeAtTheBuild) {
   lazy.build(map, Orbit{2}, match);
   EXPECT_TRUE(eager.indexes_owners());
   EXPECT_FALSE(lazy.indexes_owners());
-  EXPECT_FALSE(hinge.cache().indexes_owners()) << "an interaction's cache is indexed at set-up";
+  EXPECT_TRUE(hinge.cache().indexes_owners()) << "a rewritten map's cache indexed at set-up";
+  GMap still = assemble_gmap(make_generated_mesh("grid:quad:8x8"));
+  Hinge frozen;
+  frozen.set_rewrites(false);
+  frozen.initialise(still);
+  EXPECT_FALSE(frozen.cache().indexes_owners()) << "a map never rewritten needs no index";
   auto same = [&](int step) {
     ASSERT_EQ(lazy.size(), eager.size()) << "step " << step;
     for (std::size_t e = 0; e < eager.size(); ++e) {

@@ -142,6 +142,10 @@ class CachedInteraction final : public ForceModel {
           return true;
         },
         support_chooser());
+    // A map that is rewritten gets its owner index now rather than at the
+    // first rewrite: that tear then costs what it touches, like every other,
+    // not a pass over the whole map (issue 12, deliverable 1).
+    if (rewrites_) cache_.index_owners(map);
     if constexpr (kGroupable) {
       if (grouped_) {
         typename MatchGroups<Match>::NoObserver none;
