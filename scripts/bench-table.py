@@ -20,13 +20,20 @@ PAPER_TABLE2 = {
 UNIT_NS = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
 
 
-def gbench(out, name):
-    """Median of each benchmark of OUT/NAME.json: {run_name: entry}."""
+def gbench_runs(out, name):
+    """Every entry of OUT/NAME.json (Google Benchmark's JSON), or None."""
     path = os.path.join(out, name + ".json")
     if not os.path.exists(path):
         return None
     with open(path) as f:
-        runs = json.load(f)["benchmarks"]
+        return json.load(f)["benchmarks"]
+
+
+def gbench(out, name):
+    """Median of each benchmark of OUT/NAME.json: {run_name: entry}."""
+    runs = gbench_runs(out, name)
+    if runs is None:
+        return None
     medians = {r["run_name"]: r for r in runs if r.get("aggregate_name") == "median"}
     if not medians:  # one repetition: the runs themselves
         medians = {r["run_name"]: r for r in runs if r.get("run_type") == "iteration"}
@@ -35,11 +42,9 @@ def gbench(out, name):
 
 def gbench_fastest(out, name):
     """The fastest repetition of each benchmark of OUT/NAME.json: {run_name: entry}."""
-    path = os.path.join(out, name + ".json")
-    if not os.path.exists(path):
+    runs = gbench_runs(out, name)
+    if runs is None:
         return None
-    with open(path) as f:
-        runs = json.load(f)["benchmarks"]
     fastest = {}
     for r in runs:
         if r.get("run_type") == "iteration":
