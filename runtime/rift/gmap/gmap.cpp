@@ -310,6 +310,21 @@ void GMap::assign_missing_slots(OrbitAttachment& att) const {
     att.grow_columns();
     return;
   }
+  if (att.live_slots() == 0 && o.size() == 2) {
+    // A path or a cycle (a vertex of a surface, a face's edge loop): walked
+    // along it, without the flood's stack and its second look at each dart.
+    // The same slots: one per orbit, in the order of the orbits' smallest darts.
+    const std::size_t n = alive_.size();
+    att.reserve_slots(att.slot_capacity() + n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const Dart d = static_cast<Dart>(k);
+      if (!alive_[d] || att.slot(d) != kNoSlot) continue;
+      const Slot s = att.reserve_slot();
+      for_each_in_two_link_orbit(d, o.first(), o.second(), [&](Dart x, int) { att.assign(x, s); });
+    }
+    att.grow_columns();
+    return;
+  }
   if (att.live_slots() == 0) {
     const OrbitLinks links = orbit_links(alpha_, dimension_, o);
     std::vector<Dart>& stack = acquire_scratch();
