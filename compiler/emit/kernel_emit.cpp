@@ -259,7 +259,10 @@ void write_find(Writer& w, const Kernel& k) {
          "::find(const rift::GMap& g, rift::Dart support, rift::Dart* darts) const {");
   const std::string hook = node(plan.match.hooks[0]);
   if (k.inter->tagged) {
-    w.line("const rift::Dart " + hook + " = tagged_dart(g, tag_, support, kSupport);");
+    // A kernel of a map never rewritten keeps no tag: it is matched only
+    // from the dart the initialisation's walk gives, which is the one tagged.
+    w.line("const rift::Dart " + hook +
+           " = tag_ ? tagged_dart(g, tag_, support, kSupport) : support;");
     w.line("if (" + hook + " == rift::kNoDart) return false;  // created after initialisation");
   } else {
     w.line("const rift::Dart " + hook + " = support;");
@@ -338,7 +341,9 @@ void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
            ">(g, " + quote(name) + ", " + quote(user) + ");");
   }
   if (k.inter->tagged) {
-    w.line("// §3.2: the dart each element is first matched from fixes the order of its corners.");
+    w.line("// §3.2: the dart each element is first matched from fixes the order of its corners;");
+    w.line("// only re-matching after a rewrite needs it marked.");
+    w.open("if (rewrites_) {");
     w.line("tag_ = require_embedding<rift::Bool>(g, " + quote(tag_embedding(k.inter->name.text)) +
            ", " + quote(user) + ");");
     w.line("std::fill(tag_.values().begin(), tag_.values().end(), rift::Bool(false));");
@@ -347,6 +352,7 @@ void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
     // dart, as after a pass of its own (one cell walk less).
     if (plan.inits.empty())
       w.line("g.for_each_cell(kSupport, [&](rift::Dart d) { tag_[d] = true; });");
+    w.close("}");
   }
   RenderContext ctx;
   ctx.dart = [&b](int node) { return dart_name(b.nodes[static_cast<std::size_t>(node)]); };
@@ -376,7 +382,8 @@ void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
     } else {
       w.open("g.for_each_cell(kSupport, [&](rift::Dart support) {");
     }
-    if (k.inter->tagged && first_pass) w.line("tag_[support] = true;  // the orbit's first dart");
+    if (k.inter->tagged && first_pass)
+      w.line("if (rewrites_) tag_[support] = true;  // the orbit's first dart");
     first_pass = false;
     w.line("rift::Dart darts[" + n + "];");
     w.line("if (!find(g, support, darts)) return;");
@@ -1082,6 +1089,11 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
     w.line("/// embeddings are then left unbound.");
     w.line("void set_store_forces(bool on) { store_ = on; }");
   }
+  if (inter.tagged) {
+    w.line("/// Before initialise: false for a map never rewritten, whose orbits are then");
+    w.line("/// matched only from the darts initialise walks: no tag is kept.");
+    w.line("void set_rewrites(bool on) { rewrites_ = on; }");
+  }
   w.line("/// Fills s too unless it is null.");
   w.line(
       "bool match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s = nullptr) "
@@ -1199,7 +1211,10 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
   for (const std::string& name : plan.embeddings) {
     w.line("rift::Embedding<" + embedding_storage(model, name) + "> " + embedding_var(name) + ";");
   }
-  if (inter.tagged) w.line("rift::Embedding<rift::Bool> tag_;");
+  if (inter.tagged) {
+    w.line("rift::Embedding<rift::Bool> tag_;  ///< unbound when !rewrites_");
+    w.line("bool rewrites_ = true;");
+  }
   if (!k.store_only_embeddings.empty()) w.line("bool store_ = true;");
   w.close("};");
   w.line("using " + interaction_class(inter.name.text) + " = rift::CachedInteraction<" + k.cls +

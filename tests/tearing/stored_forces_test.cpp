@@ -91,6 +91,19 @@ TEST(StoredForces, ASceneWithoutCriteriaIsSetUpForAMapNeverRewritten) {
             static_scene("grid:quad:5x4", "1.0", 1.0,
                          std::string(kSprings) + "[[criterion]]\nname = \"spring_split\"\n"));
   EXPECT_TRUE(tearing->settings().rewrites);
+  // Nothing of the cloth's packs reads the corner masses: a map never
+  // rewritten keeps none (the same masses, hence the same run above); a
+  // rewritten one, and a scene whose pack reads them (fem2d's membrane), do.
+  EXPECT_FALSE(fixed->keeps_corner_masses());
+  EXPECT_FALSE(fixed->corner_mass());
+  EXPECT_TRUE(rewritable->keeps_corner_masses());
+  EXPECT_TRUE(tearing->keeps_corner_masses());
+  auto membrane =
+      build("membrane_never_rewritten",
+            static_scene("grid:tri:4x4", "1.0", 1.0, "[[interaction]]\nname = \"membrane\"\n"));
+  EXPECT_FALSE(membrane->settings().rewrites);
+  EXPECT_TRUE(membrane->keeps_corner_masses());
+  EXPECT_TRUE(has_storage(*membrane, "corner_mass"));
 }
 
 TEST(StoredForces, ACriterionSeesTheForcesItReadsExactlyThroughTears) {

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "rift/core/input_error.hpp"
+#include "rift/core/state_embeddings.hpp"
 #include "rift/io/read_mesh.hpp"
 #include "rift/mesh/generators.hpp"
 #include "rift/scene/inert_components.hpp"
@@ -317,6 +318,15 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
   settings.max_tears_per_step = scene.tearing.max_per_step;
   settings.check_each_rewrite = options.check_each_rewrite;
   settings.rewrites = !scene.criteria.empty() || options.rewrites_by_hand;
+  // A pack lists corner_mass among its embeddings when one of its components
+  // reads it (the FEM packs, criteria); notches are cut by rules before the
+  // masses are summed: the corner masses are kept for them.
+  settings.keep_corner_masses =
+      settings.rewrites || !scene.notches.empty() ||
+      std::any_of(used.begin(), used.end(), [](const Pack* p) {
+        return std::any_of(p->embeddings().begin(), p->embeddings().end(),
+                           [](const EmbeddingDecl& e) { return e.name == state::kCornerMass; });
+      });
   auto sim = std::make_unique<Simulation>(std::move(map), settings);
   GMap& m = sim->map();
   for (const Pack* p : used) {

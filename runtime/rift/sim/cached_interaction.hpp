@@ -78,7 +78,17 @@
 // a scene without criteria) keeps only what its force passes read: no
 // owners in the cache, groups without their keys, table and entries'
 // groups (member links only when it stores), a frozen colouring. rematch
-// then throws.
+// then throws. When it is grouped, stores nothing and nothing asks for its
+// Jacobians (set_jacobians_used(false): an explicit integrator), its force
+// pass reads only the groups' representatives and counts, so the matches
+// themselves are given back too (46 MB for each of the stretch and bending
+// springs of a 10^6-vertex cloth), and potential_energy sums count × the
+// representative's energy over the groups: the same terms as the sum over
+// every match (identical keys, identical arithmetic), added in another
+// order, so its last bits may differ from that sum (docs/performance.md,
+// "Groups instead of matches when nothing tears"). A tagged kernel is told the map is never
+// rewritten too (its set_rewrites): it then keeps no tag, which only
+// re-matching reads.
 #pragma once
 
 #include <algorithm>
@@ -126,6 +136,11 @@ class CachedInteraction final : public ForceModel {
     if constexpr (requires(Kernel & k) { k.set_store_forces(true); }) {
       kernel_.set_store_forces(store_forces_);
     }
+    if constexpr (requires(Kernel & k) { k.set_rewrites(true); }) {
+      kernel_.set_rewrites(rewrites_);
+    }
+    matches_given_back_ = false;
+    matched_ = 0;
     kernel_.initialise(map);
     if constexpr (kGroupable) {
       grouped_ = group_requested_ && Kernel::kGroupKey <= MatchGroups<Match>::kMaxKey;
@@ -163,6 +178,12 @@ class CachedInteraction final : public ForceModel {
         colouring_.build(reps.size(), Kernel::kForceTerms,
                          [&](std::size_t g, Slot* out) { kernel_.force_targets(reps[g], out); });
         if (!rewrites_) colouring_.freeze();
+        // Nothing reads the matches any more: the pass reads the groups.
+        if (!rewrites_ && !store_forces_ && !jacobians_used_) {
+          matched_ = cache_.size();
+          cache_.give_back_matches();
+          matches_given_back_ = true;
+        }
         return;
       }
     }
@@ -241,6 +262,10 @@ class CachedInteraction final : public ForceModel {
   /// Before initialise: false keeps only what the force passes read.
   void set_rewrites(bool on) override { rewrites_ = on; }
   bool rewrites() const { return rewrites_; }
+  /// Before initialise: false when nothing asks for Jacobians.
+  void set_jacobians_used(bool on) override { jacobians_used_ = on; }
+  /// True when only the groups are kept, not every match (see the file comment).
+  bool matches_given_back() const { return matches_given_back_; }
   /// True when this interaction's force pass runs over groups.
   bool grouped() const { return grouped_; }
   /// Groups the force pass evaluates (matches when not grouped).
@@ -251,6 +276,13 @@ class CachedInteraction final : public ForceModel {
   /// Checks the groups against the matches (for tests; "" when right).
   std::string check_groups() const {
     if constexpr (kGroupable) {
+      if (matches_given_back_) {
+        // No matches to check against: the groups must still count them all.
+        std::size_t members = 0;
+        for (std::uint32_t c : groups_.counts())
+          members += c;
+        return members == matched_ ? "" : "the groups count another number of matches";
+      }
       if (grouped_) return groups_.check(cache_.matches(), key_fn());
     }
     return "";
@@ -258,12 +290,22 @@ class CachedInteraction final : public ForceModel {
 
   Real potential_energy(const ForceInput& in) const override {
     Real e = 0;
+    if (matches_given_back_) {
+      // Each group's members have its representative's energy, bit for bit.
+      const std::span<const Match> reps = groups_.representatives();
+      const std::span<const std::uint32_t> counts = groups_.counts();
+      for (std::size_t g = 0; g < reps.size(); ++g)
+        e += static_cast<Real>(counts[g]) * kernel_.energy(reps[g], in);
+      return e;
+    }
     for (const auto& m : cache_.matches())
       e += kernel_.energy(m, in);
     return e;
   }
 
-  std::size_t active_matches() const override { return cache_.size(); }
+  std::size_t active_matches() const override {
+    return matches_given_back_ ? matched_ : cache_.size();
+  }
 
   int jacobian_vertices() const override {
     if constexpr (requires { Kernel::kJacobianVertices; }) {
@@ -519,32 +561,37 @@ class CachedInteraction final : public ForceModel {
       const std::span<const Match> reps = groups_.representatives();
       const std::span<const std::uint32_t> counts = groups_.counts();
       const std::span<const Match> all = cache_.matches();
-      // A block a tear reshuffled is read in place, through its entries. A
-      // pass that stores runs the same loops kGather groups at a time, which
-      // also hand back each group's terms: every member stores them.
+      // A block a tear reshuffled is read in place, through its entries; of
+      // a consecutive block only the first entry is read (a frozen colouring
+      // keeps no other). A pass that stores runs the same loops kGather
+      // groups at a time, which also hand back each group's terms: every
+      // member stores them.
       auto body = [&](const std::uint32_t* entries, std::size_t n, bool consecutive) {
         if (n == 0) return;
-        auto pass = [&](const std::uint32_t* at, std::size_t count, Vec3* terms) {
+        // The block's groups from its `first`-th on, `count` of them.
+        auto pass = [&](std::size_t first, std::size_t count, Vec3* terms) {
           if (consecutive) {
-            kernel_.add_forces_grouped(reps.subspan(at[0], count), counts.data() + at[0], in, f,
-                                       terms);
+            const std::size_t g = entries[0] + first;
+            kernel_.add_forces_grouped(reps.subspan(g, count), counts.data() + g, in, f, terms);
           } else {
-            kernel_.add_forces_grouped_at(reps, counts.data(), at, count, in, f, terms);
+            kernel_.add_forces_grouped_at(reps, counts.data(), entries + first, count, in, f,
+                                          terms);
           }
         };
         if (!store) {
-          pass(entries, n, nullptr);
+          pass(0, n, nullptr);
           return;
         }
         Vec3 terms[kGather * kTerms];  // Eigen leaves it uninitialised
         for (std::size_t first = 0; first < n; first += kGather) {
           const std::size_t count = std::min(kGather, n - first);
-          pass(entries + first, count, terms);
+          pass(first, count, terms);
           for (std::size_t i = 0; i < count; ++i) {
             const Vec3* t = terms + i * kTerms;
-            groups_.for_each_member(entries[first + i], [&](std::uint32_t e) {
-              store_one(all[e], stored_entry(e), t);
-            });
+            const auto g = static_cast<std::uint32_t>(consecutive ? entries[0] + first + i
+                                                                  : entries[first + i]);
+            groups_.for_each_member(
+                g, [&](std::uint32_t e) { store_one(all[e], stored_entry(e), t); });
           }
         }
       };
@@ -614,8 +661,11 @@ class CachedInteraction final : public ForceModel {
   Stored pending_{};  ///< the Stored of the last match found
   bool group_requested_ = true;
   bool grouped_ = false;
-  bool store_forces_ = true;  ///< false: nothing reads the stored forces (set_store_forces)
-  bool rewrites_ = true;      ///< false: never re-matched (set_rewrites)
+  bool store_forces_ = true;         ///< false: nothing reads the stored forces (set_store_forces)
+  bool rewrites_ = true;             ///< false: never re-matched (set_rewrites)
+  bool jacobians_used_ = true;       ///< false: nothing asks for Jacobians (set_jacobians_used)
+  bool matches_given_back_ = false;  ///< only the groups are kept (see the file comment)
+  std::size_t matched_ = 0;          ///< the matches there were, when given back
 };
 
 }  // namespace rift

@@ -54,6 +54,11 @@ class ForceModel {
   /// and the interaction keeps none of what only re-matching reads (issue
   /// 12, lean memory). True by default.
   virtual void set_rewrites(bool /*on*/) {}
+  /// Before initialise: false when nothing will ask for Jacobians (an
+  /// explicit integrator), so that an interaction that neither stores nor is
+  /// rewritten, and evaluates identical matches once, may keep only its
+  /// groups instead of every match (issue 12, lean memory). True by default.
+  virtual void set_jacobians_used(bool /*on*/) {}
 
   /// Elastic energy at the given state (0 when the interaction has none).
   virtual Real potential_energy(const ForceInput& /*in*/) const { return 0; }

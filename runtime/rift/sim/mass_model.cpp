@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "rift/core/huge_pages.hpp"
+
 namespace rift {
 
 namespace {
@@ -78,6 +80,14 @@ struct MeasuredElements {
   std::vector<Real> measures;
 };
 
+// The corners of element e (its dart), as share_masses counts them.
+int count_corners(const GMap& map, Dart e) {
+  int count = 0;
+  map.for_each_sub_orbit(e, element_orbit(map.dimension()), corner_orbit(map.dimension()),
+                         [&](Dart) { ++count; });
+  return count;
+}
+
 MeasuredElements measure_elements(const GMap& map, const Embedding<Vec3>& position) {
   MeasuredElements out;
   map.for_each_cell(element_orbit(map.dimension()), [&](Dart e) {
@@ -109,7 +119,61 @@ Real share_masses(const GMap& map, const MeasuredElements& elements, Real densit
   return total;
 }
 
+// density * measure of each element, as share_masses computes it.
+ElementMasses with_density(MeasuredElements elements, Real density) {
+  ElementMasses out;
+  out.darts = std::move(elements.darts);
+  out.masses = std::move(elements.measures);
+  for (Real& m : out.masses)
+    m = density * m;
+  return out;
+}
+
+// The density assign_corner_masses_by_total shares the total with.
+Real density_for_total(const MeasuredElements& elements, Real total_mass) {
+  Real measure = 0;
+  for (Real m : elements.measures)
+    measure += m;
+  if (!(measure > 0)) throw std::invalid_argument("the mesh has zero area or volume");
+  return total_mass / measure;
+}
+
 }  // namespace
+
+ElementMasses element_masses_by_density(const GMap& map, Real density,
+                                        const Embedding<Vec3>& position) {
+  return with_density(measure_elements(map, position), density);
+}
+
+ElementMasses element_masses_by_total(const GMap& map, Real total_mass,
+                                      const Embedding<Vec3>& position) {
+  MeasuredElements elements = measure_elements(map, position);
+  const Real density = density_for_total(elements, total_mass);
+  return with_density(std::move(elements), density);
+}
+
+void vertex_masses_from_elements(const GMap& map, const ElementMasses& elements,
+                                 Embedding<Real>& vertex_mass) {
+  const int n = map.dimension();
+  // Every dart of an element holds its corners' share (mass / corners), as
+  // each corner's slot would: a corner lies in one element.
+  std::vector<Real> share;
+  grow_huge(share, map.capacity(), Real{0});
+  for (std::size_t k = 0; k < elements.darts.size(); ++k) {
+    const Dart e = elements.darts[k];
+    if (!map.is_alive(e)) {
+      throw std::logic_error("vertex_masses_from_elements: an element's dart was deleted");
+    }
+    const Real corner = elements.masses[k] / count_corners(map, e);
+    map.for_each_in_orbit(e, element_orbit(n), [&](Dart x) { share[x] = corner; });
+  }
+  map.for_each_cell(Orbit::cell(0, n), [&](Dart v) {
+    Real m = 0;
+    map.for_each_sub_orbit(v, Orbit::cell(0, n), corner_orbit(n), [&](Dart c) { m += share[c]; });
+    vertex_mass[v] = m;
+  });
+  give_back(share);
+}
 
 Real assign_corner_masses_by_density(GMap& map, Real density, Embedding<Real>& corner_mass,
                                      const Embedding<Vec3>& position) {
@@ -119,11 +183,7 @@ Real assign_corner_masses_by_density(GMap& map, Real density, Embedding<Real>& c
 Real assign_corner_masses_by_total(GMap& map, Real total_mass, Embedding<Real>& corner_mass,
                                    const Embedding<Vec3>& position) {
   const MeasuredElements elements = measure_elements(map, position);
-  Real measure = 0;
-  for (Real m : elements.measures)
-    measure += m;
-  if (!(measure > 0)) throw std::invalid_argument("the mesh has zero area or volume");
-  return share_masses(map, elements, total_mass / measure, corner_mass);
+  return share_masses(map, elements, density_for_total(elements, total_mass), corner_mass);
 }
 
 void update_vertex_mass(const GMap& map, Dart vertex, const Embedding<Real>& corner_mass,

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <span>
+#include <vector>
 
 #include "rift/gmap/gmap.hpp"
 
@@ -32,6 +33,30 @@ Real assign_corner_masses_by_density(GMap& map, Real density, Embedding<Real>& c
 /// Same, with the density chosen so that the whole map weighs `total_mass`.
 Real assign_corner_masses_by_total(GMap& map, Real total_mass, Embedding<Real>& corner_mass,
                                    const Embedding<Vec3>& position);
+
+/// One dart of each element, in for_each_cell's order, and the element's
+/// mass (density times its measure): what the corner masses are shared from.
+struct ElementMasses {
+  std::vector<Dart> darts;
+  std::vector<Real> masses;
+};
+
+/// The elements' masses that assign_corner_masses_by_density shares (the
+/// same numbers, bit for bit), without corner masses.
+ElementMasses element_masses_by_density(const GMap& map, Real density,
+                                        const Embedding<Vec3>& position);
+/// The same for assign_corner_masses_by_total.
+ElementMasses element_masses_by_total(const GMap& map, Real total_mass,
+                                      const Embedding<Vec3>& position);
+
+/// The vertex masses update_all_vertex_masses would sum from the corner
+/// masses that these elements' shares give (every term and its order the
+/// same, so the same bits), without a corner-mass column: for a map never
+/// rewritten, whose corner masses nothing else reads (issue 12, lean
+/// memory). Each element's share goes to a per-dart scratch array, given
+/// back on return. Throws std::logic_error when an element's dart is dead.
+void vertex_masses_from_elements(const GMap& map, const ElementMasses& elements,
+                                 Embedding<Real>& vertex_mass);
 
 /// vertex_mass(v) = sum of corner_mass over the distinct corners of v.
 void update_vertex_mass(const GMap& map, Dart vertex, const Embedding<Real>& corner_mass,

@@ -39,6 +39,16 @@ class MatchCache {
   /// owners (4 bytes per match), which only rematch reads, are not kept.
   void keep_owners(bool on) { keeps_owners_ = on; }
   bool keeps_owners() const { return keeps_owners_; }
+  /// Gives the matches back, for good: an interaction whose force pass reads
+  /// only the groups of identical matches of a map never rewritten
+  /// (CachedInteraction) keeps their representatives and counts instead.
+  /// matches() is then empty; build fills it again.
+  void give_back_matches() {
+    if (keeps_owners_) {
+      throw std::logic_error("MatchCache: giving back the matches of a cache that can rematch");
+    }
+    give_back(matches_);
+  }
   /// Indexes the owners now instead of at the first rematch (tests compare
   /// both ways).
   void index_owners(const GMap& map) {

@@ -25,7 +25,9 @@
 //
 // A colouring of matches that never change (a map never rewritten) is
 // frozen after its build: it gives back each entry's place and the
-// per-vertex masks, which only the changes read, and refuses changes.
+// per-vertex masks, which only the changes read, and refuses changes; and
+// as every block of a build is consecutive, it keeps each block's first
+// entry instead of all of them (the order of a build is the identity).
 #pragma once
 
 #include <algorithm>
@@ -57,7 +59,8 @@ class ScatterColouring {
 
   /// A non-owning reference to `void(const std::uint32_t* entries,
   /// std::size_t count, bool consecutive)`: one block's entries, in order;
-  /// `consecutive` when they are entries[0], entries[0] + 1, ...
+  /// `consecutive` when they are entries[0], entries[0] + 1, ..., and then
+  /// only entries[0] may be read (a frozen colouring keeps no other).
   class BlockBody {
    public:
     template <class F>
@@ -130,7 +133,7 @@ class ScatterColouring {
   struct Block {
     std::uint32_t size = 0;
     std::uint16_t colour = 0;  ///< kSerial: beyond kMaxColours
-    bool consecutive = true;   ///< order_ holds first, first + 1, ...
+    bool consecutive = true;   ///< its entries are first, first + 1, ...
   };
   static constexpr std::uint16_t kSerial = 0xffff;
   static constexpr std::uint32_t kPendingBit = 0x80000000u;
@@ -149,13 +152,22 @@ class ScatterColouring {
   /// Throws when frozen.
   void require_changes() const;
 
+  /// Where block b's entries start in order_.
+  std::size_t block_start(std::size_t b) const { return firsts_only_ ? b : b * block_; }
+  /// Entry i of block b.
+  std::uint32_t entry_of_block(std::size_t b, std::size_t i) const {
+    return firsts_only_ ? order_[b] + static_cast<std::uint32_t>(i) : order_[b * block_ + i];
+  }
+
   std::size_t fixed_block_;  ///< 0: chosen by build()
   bool frozen_ = false;
+  bool firsts_only_ = false;        ///< frozen, every block consecutive: order_ holds their firsts
   std::size_t frozen_entries_ = 0;  ///< entries() when frozen (where_ is given back)
   std::size_t block_ = kMinBlock;
   std::size_t k_ = 0;
   std::vector<Block> blocks_;
-  std::vector<std::uint32_t> order_;  ///< blocks × block(): block b's entries from b·block()
+  /// blocks × block(): block b's entries from b·block() (block_start)
+  std::vector<std::uint32_t> order_;
   std::vector<std::uint32_t> where_;  ///< per entry: its index in order_, or kPendingBit | index
   std::vector<std::vector<std::uint32_t>> by_colour_;  ///< block ids, increasing
   std::vector<std::uint32_t> serial_;                  ///< blocks beyond kMaxColours

@@ -22,7 +22,7 @@ Simulation::Simulation(GMap map, const SimulationSettings& settings)
   position_ = state_embedding<Vec3>(map_, state::kPosition);
   velocity_ = state_embedding<Vec3>(map_, state::kVelocity);
   vertex_mass_ = state_embedding<Real>(map_, state::kVertexMass);
-  corner_mass_ = state_embedding<Real>(map_, state::kCornerMass);
+  if (keeps_corner_masses()) corner_mass_ = state_embedding<Real>(map_, state::kCornerMass);
   pinned_ = state_embedding<Bool>(map_, state::kPinned);
 }
 
@@ -52,22 +52,44 @@ void Simulation::set_contact(std::unique_ptr<Contact> contact) {
 
 void Simulation::set_total_mass(Real total_mass) {
   if (!(total_mass > 0)) throw std::invalid_argument("the total mass must be positive");
-  assign_corner_masses_by_total(map_, total_mass, corner_mass_, position_);
+  if (keeps_corner_masses()) {
+    assign_corner_masses_by_total(map_, total_mass, corner_mass_, position_);
+  } else {
+    element_masses_ = element_masses_by_total(map_, total_mass, position_);
+  }
 }
 
 void Simulation::set_density(Real density) {
   if (!(density > 0)) throw std::invalid_argument("the density must be positive");
-  assign_corner_masses_by_density(map_, density, corner_mass_, position_);
+  if (keeps_corner_masses()) {
+    assign_corner_masses_by_density(map_, density, corner_mass_, position_);
+  } else {
+    element_masses_ = element_masses_by_density(map_, density, position_);
+  }
 }
 
 void Simulation::initialise() {
-  update_all_vertex_masses(map_, corner_mass_, vertex_mass_);
+  if (keeps_corner_masses()) {
+    update_all_vertex_masses(map_, corner_mass_, vertex_mass_);
+  } else {
+    vertex_masses_from_elements(map_, element_masses_, vertex_mass_);
+    element_masses_ = {};
+  }
   if (!settings_.rewrites && !criteria_.empty())
     throw std::invalid_argument("a simulation with criteria rewrites its map (settings.rewrites)");
   for (auto& model : models_) {
     model->set_grouping(settings_.group_interactions);
     model->set_rewrites(settings_.rewrites);
+    model->set_jacobians_used(is_implicit(settings_.integrator));
     model->initialise(map_);
+    if (!keeps_corner_masses()) {
+      const ColumnBase* c = map_.find_column(state::kCornerMass);
+      if (c && c->allocated()) {
+        throw std::logic_error("interaction '" + model->name() +
+                               "' reads corner_mass, which this simulation does not keep "
+                               "(SimulationSettings::keep_corner_masses)");
+      }
+    }
   }
   for (auto& criterion : criteria_)
     criterion->initialise(map_);

@@ -19,6 +19,7 @@
 #include "rift/sim/handles.hpp"
 #include "rift/sim/implicit_euler.hpp"
 #include "rift/sim/integrator.hpp"
+#include "rift/sim/mass_model.hpp"
 #include "rift/sim/obstacles.hpp"
 
 namespace rift {
@@ -45,6 +46,14 @@ struct SimulationSettings {
   /// criteria: the interactions keep none of what only re-matching reads
   /// (ForceModel::set_rewrites), and on_topology_changed throws.
   bool rewrites = true;
+  /// false, for a map never rewritten (rewrites = false) whose corner
+  /// masses nothing reads but the vertex masses (no pack of the scene reads
+  /// `corner_mass`): the vertex masses are summed from the elements' masses
+  /// at initialise, the same bits, and no corner mass is kept (no column,
+  /// and no corner slots unless another column needs them: 80 MB of a
+  /// 10^6-vertex cloth). An interaction that asks for corner_mass anyway
+  /// makes initialise throw. Ignored (kept) when the map is rewritten.
+  bool keep_corner_masses = true;
 };
 
 /// A simulation that cannot go on: exploded state or an invalid map.
@@ -66,7 +75,8 @@ class Simulation {
   const std::vector<std::unique_ptr<Criterion>>& criteria() const { return criteria_; }
   const std::vector<std::unique_ptr<ForceModel>>& force_models() const { return models_; }
 
-  /// Corner masses from a total mass (spread by area or volume) or a density.
+  /// Corner masses from a total mass (spread by area or volume) or a density
+  /// (without corner masses: the elements' masses, for initialise).
   void set_total_mass(Real total_mass);
   void set_density(Real density);
   /// Fixes every vertex for which pred(position) holds; returns how many.
@@ -119,7 +129,9 @@ class Simulation {
   Embedding<Vec3>& position() { return position_; }
   Embedding<Vec3>& velocity() { return velocity_; }
   Embedding<Real>& vertex_mass() { return vertex_mass_; }
+  /// Empty when the corner masses are not kept (keeps_corner_masses).
   Embedding<Real>& corner_mass() { return corner_mass_; }
+  bool keeps_corner_masses() const { return settings_.keep_corner_masses || settings_.rewrites; }
   const Embedding<Vec3>& position() const { return position_; }
   const Embedding<Vec3>& velocity() const { return velocity_; }
   const Embedding<Real>& vertex_mass() const { return vertex_mass_; }
@@ -181,6 +193,7 @@ class Simulation {
   std::vector<std::unique_ptr<ForceModel>> models_;
   Embedding<Vec3> position_, velocity_;
   Embedding<Real> vertex_mass_, corner_mass_;
+  ElementMasses element_masses_;  // without corner masses: from set_total_mass to initialise
   Embedding<Bool> pinned_;
   Embedding<Vec3> vertex_force_;  // optional: only when a pack reads state::kVertexForce
   // The loop's per-vertex forces (docs/architecture.md, "The step's arrays"):

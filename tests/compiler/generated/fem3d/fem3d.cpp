@@ -116,7 +116,7 @@ void run_initialisers(rift::GMap& g, const Params& params) {
 // ---- interaction 'corotational'
 
 bool CorotationalKernel::find(const rift::GMap& g, rift::Dart support, rift::Dart* darts) const {
-  const rift::Dart d_c0 = tagged_dart(g, tag_, support, kSupport);
+  const rift::Dart d_c0 = tag_ ? tagged_dart(g, tag_, support, kSupport) : support;
   if (d_c0 == rift::kNoDart) return false;  // created after initialisation
   const rift::Dart d_c1 = g.alpha(d_c0, 0);
   const rift::Dart d_e = g.alpha(d_c0, 1);
@@ -325,12 +325,15 @@ void CorotationalKernel::initialise(rift::GMap& g) {
   e_position = require_embedding<rift::Vec3>(g, "position", "interaction 'corotational'");
   if (store_) e_stress_mass = require_embedding<rift::Real>(g, "stress_mass", "interaction 'corotational'");
   if (store_) e_stress_weighted = require_embedding<rift::Mat3>(g, "stress_weighted", "interaction 'corotational'");
-  // §3.2: the dart each element is first matched from fixes the order of its corners.
-  tag_ = require_embedding<rift::Bool>(g, "corotational_first_dart", "interaction 'corotational'");
-  std::fill(tag_.values().begin(), tag_.values().end(), rift::Bool(false));
+  // §3.2: the dart each element is first matched from fixes the order of its corners;
+  // only re-matching after a rewrite needs it marked.
+  if (rewrites_) {
+    tag_ = require_embedding<rift::Bool>(g, "corotational_first_dart", "interaction 'corotational'");
+    std::fill(tag_.values().begin(), tag_.values().end(), rift::Bool(false));
+  }
   // init fem_b(c0), fem_volume(c0), fem_mu(c0), fem_lambda(c0), once per match
   g.for_each_cell(kSupport, [&](rift::Dart support) {
-    tag_[support] = true;  // the orbit's first dart
+    if (rewrites_) tag_[support] = true;  // the orbit's first dart
     rift::Dart darts[18];
     if (!find(g, support, darts)) return;
     const rift::Dart d_c0 = darts[0];

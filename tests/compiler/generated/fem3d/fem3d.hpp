@@ -70,6 +70,9 @@ class CorotationalKernel {
   /// Before initialise: false when nothing reads the stored forces, whose
   /// embeddings are then left unbound.
   void set_store_forces(bool on) { store_ = on; }
+  /// Before initialise: false for a map never rewritten, whose orbits are then
+  /// matched only from the darts initialise walks: no tag is kept.
+  void set_rewrites(bool on) { rewrites_ = on; }
   /// Fills s too unless it is null.
   bool match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s = nullptr) const;
   /// The force pass over every match: adds each force to f (and stores it when `store`,
@@ -141,7 +144,8 @@ class CorotationalKernel {
   rift::Embedding<rift::Vec3> e_position;
   rift::Embedding<rift::Real> e_stress_mass;
   rift::Embedding<rift::Mat3> e_stress_weighted;
-  rift::Embedding<rift::Bool> tag_;
+  rift::Embedding<rift::Bool> tag_;  ///< unbound when !rewrites_
+  bool rewrites_ = true;
   bool store_ = true;
 };
 using CorotationalInteraction = rift::CachedInteraction<CorotationalKernel>;

@@ -433,7 +433,7 @@ void StretchKernel::vertex_slots(const Match& m, rift::Slot* out) const {
 // ---- interaction 'shear'
 
 bool ShearKernel::find(const rift::GMap& g, rift::Dart support, rift::Dart* darts) const {
-  const rift::Dart d_c0 = tagged_dart(g, tag_, support, kSupport);
+  const rift::Dart d_c0 = tag_ ? tagged_dart(g, tag_, support, kSupport) : support;
   if (d_c0 == rift::kNoDart) return false;  // created after initialisation
   const rift::Dart d_d1 = g.alpha(d_c0, 0);
   const rift::Dart d_d7 = g.alpha(d_c0, 1);
@@ -489,12 +489,15 @@ void ShearKernel::initialise(rift::GMap& g) {
   e_shear_k = require_embedding<rift::Real>(g, "shear_k", "interaction 'shear'");
   e_shear_rest02 = require_embedding<rift::Real>(g, "shear_rest02", "interaction 'shear'");
   e_shear_rest13 = require_embedding<rift::Real>(g, "shear_rest13", "interaction 'shear'");
-  // §3.2: the dart each element is first matched from fixes the order of its corners.
-  tag_ = require_embedding<rift::Bool>(g, "shear_first_dart", "interaction 'shear'");
-  std::fill(tag_.values().begin(), tag_.values().end(), rift::Bool(false));
+  // §3.2: the dart each element is first matched from fixes the order of its corners;
+  // only re-matching after a rewrite needs it marked.
+  if (rewrites_) {
+    tag_ = require_embedding<rift::Bool>(g, "shear_first_dart", "interaction 'shear'");
+    std::fill(tag_.values().begin(), tag_.values().end(), rift::Bool(false));
+  }
   // init shear_k(c0), shear_rest02(c0), shear_rest13(c0), once per match
   g.for_each_cell(kSupport, [&](rift::Dart support) {
-    tag_[support] = true;  // the orbit's first dart
+    if (rewrites_) tag_[support] = true;  // the orbit's first dart
     rift::Dart darts[8];
     if (!find(g, support, darts)) return;
     const rift::Dart d_c0 = darts[0];
@@ -820,7 +823,7 @@ void ShearKernel::vertex_slots(const Match& m, rift::Slot* out) const {
 // ---- interaction 'volume_shear'
 
 bool VolumeShearKernel::find(const rift::GMap& g, rift::Dart support, rift::Dart* darts) const {
-  const rift::Dart d_b0 = tagged_dart(g, tag_, support, kSupport);
+  const rift::Dart d_b0 = tag_ ? tagged_dart(g, tag_, support, kSupport) : support;
   if (d_b0 == rift::kNoDart) return false;  // created after initialisation
   const rift::Dart d_b1 = g.alpha(d_b0, 0);
   const rift::Dart d_b7 = g.alpha(d_b0, 1);
@@ -2082,12 +2085,15 @@ void VolumeShearKernel::initialise(rift::GMap& g) {
   e_vshear_rest1 = require_embedding<rift::Real>(g, "vshear_rest1", "interaction 'volume_shear'");
   e_vshear_rest2 = require_embedding<rift::Real>(g, "vshear_rest2", "interaction 'volume_shear'");
   e_vshear_rest3 = require_embedding<rift::Real>(g, "vshear_rest3", "interaction 'volume_shear'");
-  // §3.2: the dart each element is first matched from fixes the order of its corners.
-  tag_ = require_embedding<rift::Bool>(g, "volume_shear_first_dart", "interaction 'volume_shear'");
-  std::fill(tag_.values().begin(), tag_.values().end(), rift::Bool(false));
+  // §3.2: the dart each element is first matched from fixes the order of its corners;
+  // only re-matching after a rewrite needs it marked.
+  if (rewrites_) {
+    tag_ = require_embedding<rift::Bool>(g, "volume_shear_first_dart", "interaction 'volume_shear'");
+    std::fill(tag_.values().begin(), tag_.values().end(), rift::Bool(false));
+  }
   // init vshear_k(b0), vshear_rest0(b0), vshear_rest1(b0), vshear_rest2(b0), vshear_rest3(b0), once per match
   g.for_each_cell(kSupport, [&](rift::Dart support) {
-    tag_[support] = true;  // the orbit's first dart
+    if (rewrites_) tag_[support] = true;  // the orbit's first dart
     rift::Dart darts[48];
     if (!find(g, support, darts)) return;
     const rift::Dart d_b0 = darts[0];

@@ -171,6 +171,9 @@ class ShearKernel {
   /// Before initialise: false when nothing reads the stored forces, whose
   /// embeddings are then left unbound.
   void set_store_forces(bool on) { store_ = on; }
+  /// Before initialise: false for a map never rewritten, whose orbits are then
+  /// matched only from the darts initialise walks: no tag is kept.
+  void set_rewrites(bool on) { rewrites_ = on; }
   /// Fills s too unless it is null.
   bool match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s = nullptr) const;
   /// The force pass over every match: adds each force to f (and stores it when `store`,
@@ -236,7 +239,8 @@ class ShearKernel {
   rift::Embedding<rift::Real> e_shear_k;
   rift::Embedding<rift::Real> e_shear_rest02;
   rift::Embedding<rift::Real> e_shear_rest13;
-  rift::Embedding<rift::Bool> tag_;
+  rift::Embedding<rift::Bool> tag_;  ///< unbound when !rewrites_
+  bool rewrites_ = true;
   bool store_ = true;
 };
 using ShearInteraction = rift::CachedInteraction<ShearKernel>;
@@ -287,6 +291,9 @@ class VolumeShearKernel {
   /// Before initialise: false when nothing reads the stored forces, whose
   /// embeddings are then left unbound.
   void set_store_forces(bool on) { store_ = on; }
+  /// Before initialise: false for a map never rewritten, whose orbits are then
+  /// matched only from the darts initialise walks: no tag is kept.
+  void set_rewrites(bool on) { rewrites_ = on; }
   /// Fills s too unless it is null.
   bool match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s = nullptr) const;
   /// The force pass over every match: adds each force to f (and stores it when `store`,
@@ -360,7 +367,8 @@ class VolumeShearKernel {
   rift::Embedding<rift::Real> e_vshear_rest1;
   rift::Embedding<rift::Real> e_vshear_rest2;
   rift::Embedding<rift::Real> e_vshear_rest3;
-  rift::Embedding<rift::Bool> tag_;
+  rift::Embedding<rift::Bool> tag_;  ///< unbound when !rewrites_
+  bool rewrites_ = true;
   bool store_ = true;
 };
 using VolumeShearInteraction = rift::CachedInteraction<VolumeShearKernel>;
