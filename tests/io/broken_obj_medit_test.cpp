@@ -104,6 +104,15 @@ TEST(BrokenMedit, UnknownKeywordAndMisplacedElements) {
                 11, "Tetrahedra in a mesh of dimension 2");
 }
 
+// A record of normals holds `dimension` values: before Dimension it held none,
+// and a count of 10^18 looped without reading (found by the fuzzer).
+TEST(BrokenMedit, NormalsBeforeDimension) {
+  expect_broken("normals.mesh", "MeshVersionFormatted 2\nNormals\n1000000000000000000\nEnd\n", 2,
+                "Normals before Dimension");
+  expect_broken("tangents.mesh", "MeshVersionFormatted 2\n\nTangents 3\n1 0 0\nEnd\n", 3,
+                "Tangents before Dimension");
+}
+
 TEST(BrokenMedit, NoElements) {
   expect_broken("edges.mesh", kMeditTetVertices + "Edges\n1\n1 2 0\nEnd\n", 0,
                 "no polygon or volume element (1 line or point elements were ignored)");

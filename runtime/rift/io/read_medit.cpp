@@ -142,6 +142,12 @@ class MeditReader {
   }
 
   void read_records(const Token& key, const MeditKeyword& k) {
+    // Normals and tangents hold `dimension` values per record: before
+    // Dimension a record would hold none, and a huge count would loop without
+    // reading anything.
+    if (k.per_dimension && dimension_ == 0) {
+      in_.fail(key.line, std::string(k.name) + " before Dimension");
+    }
     const std::size_t n = in_.count("the number of " + std::string(k.name));
     std::array<std::uint32_t, 8> v{};
     for (std::size_t r = 0; r < n; ++r) {
