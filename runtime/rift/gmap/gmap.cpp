@@ -294,56 +294,47 @@ void GMap::assign_missing_slots(OrbitAttachment& att) const {
     att.wake(alive_.size());
   }
   const Orbit o = att.orbit();
-  if (att.live_slots() == 0 && o.size() <= 1) {
-    // A dart alone (<>) or a dart and its i-neighbour: each orbit's
-    // smallest dart comes first in dart order, without a walk.
-    const std::size_t n = alive_.size();
-    att.reserve_slots(att.slot_capacity() + n);
-    const Dart* link = o.size() == 1 ? alpha_[o.first()].data() : nullptr;
-    for (std::size_t k = 0; k < n; ++k) {
-      const Dart d = static_cast<Dart>(k);
-      if (!alive_[d] || att.slot(d) != kNoSlot) continue;
-      const Slot s = att.reserve_slot();
-      att.assign(d, s);
-      if (link && link[d] != d) att.assign(link[d], s);
-    }
-    att.grow_columns();
-    return;
-  }
-  if (att.live_slots() == 0 && o.size() == 2) {
-    // A path or a cycle (a vertex of a surface, a face's edge loop): walked
-    // along it, without the flood's stack and its second look at each dart.
-    // The same slots: one per orbit, in the order of the orbits' smallest darts.
-    const std::size_t n = alive_.size();
-    att.reserve_slots(att.slot_capacity() + n);
-    for (std::size_t k = 0; k < n; ++k) {
-      const Dart d = static_cast<Dart>(k);
-      if (!alive_[d] || att.slot(d) != kNoSlot) continue;
-      const Slot s = att.reserve_slot();
-      for_each_in_two_link_orbit(d, o.first(), o.second(), [&](Dart x, int) { att.assign(x, s); });
-    }
-    att.grow_columns();
-    return;
-  }
   if (att.live_slots() == 0) {
-    const OrbitLinks links = orbit_links(alpha_, dimension_, o);
-    std::vector<Dart>& stack = acquire_scratch();
+    // A fresh attachment: each orbit takes the next slot when the sweep in
+    // dart order reaches its smallest dart; claim(d, s) gives d's orbit slot s.
     const std::size_t n = alive_.size();
     // At most one orbit per dart: the dart counts are reserved once.
     att.reserve_slots(att.slot_capacity() + n);
-    for (std::size_t k = 0; k < n; ++k) {
-      const Dart d = static_cast<Dart>(k);
-      if (!alive_[d] || att.slot(d) != kNoSlot) continue;
-      const Slot s = att.reserve_slot();
-      att.assign(d, s);
-      flood_orbit(d, links, stack, [&](Dart y) {
-        if (att.slot(y) != kNoSlot) return false;
-        att.assign(y, s);
-        return true;
+    auto number_orbits = [&](auto&& claim) {
+      for (std::size_t k = 0; k < n; ++k) {
+        const Dart d = static_cast<Dart>(k);
+        if (!alive_[d] || att.slot(d) != kNoSlot) continue;
+        claim(d, att.reserve_slot());
+      }
+      att.grow_columns();
+    };
+    if (o.size() <= 1) {
+      // A dart alone (<>) or a dart and its i-neighbour, without a walk.
+      const Dart* link = o.size() == 1 ? alpha_[o.first()].data() : nullptr;
+      number_orbits([&](Dart d, Slot s) {
+        att.assign(d, s);
+        if (link && link[d] != d) att.assign(link[d], s);
       });
+    } else if (o.size() == 2) {
+      // A path or a cycle (a vertex of a surface, a face's edge loop): walked
+      // along it, without a flood's stack and its second look at each dart.
+      number_orbits([&](Dart d, Slot s) {
+        for_each_in_two_link_orbit(d, o.first(), o.second(),
+                                   [&](Dart x, int) { att.assign(x, s); });
+      });
+    } else {
+      const OrbitLinks links = orbit_links(alpha_, dimension_, o);
+      std::vector<Dart>& stack = acquire_scratch();
+      number_orbits([&](Dart d, Slot s) {
+        att.assign(d, s);
+        flood_orbit(d, links, stack, [&](Dart y) {
+          if (att.slot(y) != kNoSlot) return false;
+          att.assign(y, s);
+          return true;
+        });
+      });
+      release_scratch();
     }
-    release_scratch();
-    att.grow_columns();
     return;
   }
   // The columns grow once at the end: growing each of them by one value per
