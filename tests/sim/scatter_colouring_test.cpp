@@ -79,6 +79,33 @@ std::vector<Real> scatter(const ScatterColouring& c, const std::vector<Spring>& 
   return sum;
 }
 
+/// One random change of the matches, as a tear's re-match makes them, applied
+/// to the colouring and mirrored in `springs`: an erase (swap-and-pop, as
+/// MatchCache::erase), a replacement or, when `may_insert`, an insertion.
+void random_change(ScatterColouring& c, std::vector<Spring>& springs, Slot& vertices,
+                   std::mt19937& rng, bool may_insert = true) {
+  const int what = static_cast<int>(rng() % (may_insert ? 3 : 2));
+  const auto e = static_cast<std::uint32_t>(rng() % springs.size());
+  if (what == 0 && springs.size() > 1) {
+    const auto last = static_cast<std::uint32_t>(springs.size() - 1);
+    c.erase(e, last);
+    springs[e] = springs[last];
+    springs.pop_back();
+  } else if (what == 1) {
+    // Matched again: half the time the same vertices, else one moved to
+    // another vertex, sometimes a new one (a split).
+    Spring s = springs[e];
+    const bool same = rng() % 2 == 0;
+    if (!same) s[rng() % 2] = rng() % 8 == 0 ? vertices++ : static_cast<Slot>(rng() % vertices);
+    c.replace(e, same, s);
+    springs[e] = s;
+  } else {
+    const Spring s{static_cast<Slot>(rng() % vertices), static_cast<Slot>(rng() % vertices)};
+    c.insert(static_cast<std::uint32_t>(springs.size()), s);
+    springs.push_back(s);
+  }
+}
+
 TEST(ScatterColouring, AGridNeedsFewColoursAndNoBlocksOfOneColourShareAVertex) {
   const std::vector<Spring> springs = grid_springs(60);
   for (std::size_t block : {16u, 256u, 2048u}) {
@@ -103,26 +130,7 @@ TEST(ScatterColouring, FollowsErasesReplacementsAndInsertionsAndSumsTheSameOnAny
   build(c, springs);
   std::mt19937 rng(3);
   for (int step = 0; step < 3000; ++step) {
-    const int what = static_cast<int>(rng() % 3);
-    const auto e = static_cast<std::uint32_t>(rng() % springs.size());
-    if (what == 0 && springs.size() > 1) {  // swap-and-pop, as MatchCache::erase
-      const auto last = static_cast<std::uint32_t>(springs.size() - 1);
-      c.erase(e, last);
-      springs[e] = springs[last];
-      springs.pop_back();
-    } else if (what == 1) {
-      // Matched again: half the time the same vertices, else one moved to
-      // another vertex, sometimes a new one (a split).
-      Spring s = springs[e];
-      const bool same = rng() % 2 == 0;
-      if (!same) s[rng() % 2] = rng() % 8 == 0 ? vertices++ : static_cast<Slot>(rng() % vertices);
-      c.replace(e, same, s);
-      springs[e] = s;
-    } else {
-      const Spring s{static_cast<Slot>(rng() % vertices), static_cast<Slot>(rng() % vertices)};
-      c.insert(static_cast<std::uint32_t>(springs.size()), s);
-      springs.push_back(s);
-    }
+    random_change(c, springs, vertices, rng);
     if (step % 50 == 0 || step > 2950) {
       ASSERT_EQ(check(c, springs), "") << "step " << step;
     }
@@ -138,6 +146,63 @@ TEST(ScatterColouring, FollowsErasesReplacementsAndInsertionsAndSumsTheSameOnAny
     const std::vector<Real> many = scatter(c, springs, vertices);
     EXPECT_EQ(std::memcmp(one.data(), many.data(), one.size() * sizeof(Real)), 0) << threads;
   }
+}
+
+// A small map's colouring is one block holding every match: through erases,
+// replacements and insertions it stays one consecutive block with nothing
+// pending (the kernels' fast path), until it outgrows block(); then the
+// general bookkeeping takes over, still correct.
+TEST(ScatterColouring, OneBlockHoldingEveryEntryStaysConsecutiveThroughChanges) {
+  ThreadCountGuard guard;
+  std::vector<Spring> springs = grid_springs(10);  // 360 springs
+  Slot vertices = 100;
+  constexpr std::size_t kBlock = 400;
+  ScatterColouring c(kBlock);
+  build(c, springs);
+  ASSERT_EQ(c.blocks(), 1u);
+  std::mt19937 rng(5);
+  auto all_consecutive = [&] {
+    bool consecutive = true;
+    auto body = [&](const std::uint32_t*, std::size_t, bool block_consecutive) {
+      consecutive = consecutive && block_consecutive;
+    };
+    c.run(body);
+    return consecutive;
+  };
+  for (int step = 0; step < 2000; ++step) {
+    random_change(c, springs, vertices, rng, springs.size() < kBlock);
+    ASSERT_EQ(check(c, springs), "") << "step " << step;
+    ASSERT_EQ(c.blocks(), 1u) << "step " << step;
+    ASSERT_EQ(c.pending(), 0u) << "step " << step;
+    ASSERT_TRUE(all_consecutive()) << "step " << step;
+  }
+  // Past block() entries, new blocks: on the vertices the splits above
+  // added (which only the one block's replacements marked), their colours
+  // must keep apart from the one block's.
+  const Slot grid = 100;
+  ASSERT_GT(vertices, grid + 10);
+  while (springs.size() <= 3 * kBlock) {
+    const Spring s{static_cast<Slot>(grid + rng() % (vertices - grid)),
+                   static_cast<Slot>(grid + rng() % (vertices - grid))};
+    c.insert(static_cast<std::uint32_t>(springs.size()), s);
+    springs.push_back(s);
+  }
+  for (int step = 0; step < 1000; ++step) {
+    random_change(c, springs, vertices, rng);
+    if (step % 20 == 0) {
+      ASSERT_EQ(check(c, springs), "") << "step " << step;
+    }
+  }
+  EXPECT_GT(c.blocks(), 1u);
+  EXPECT_EQ(check(c, springs), "");
+  std::vector<int> visits;
+  set_thread_count(1);
+  const std::vector<Real> one = scatter(c, springs, vertices, &visits);
+  for (int v : visits)
+    ASSERT_EQ(v, 1);
+  set_thread_count(4);
+  const std::vector<Real> four = scatter(c, springs, vertices);
+  EXPECT_EQ(std::memcmp(one.data(), four.data(), one.size() * sizeof(Real)), 0);
 }
 
 TEST(ScatterColouring, BlocksThatTouchEverythingRunOnOneThreadAfterTheColours) {

@@ -71,6 +71,15 @@ void ScatterColouring::require_changes() const {
   }
 }
 
+void ScatterColouring::mark(std::span<const Slot> slots, int colour) {
+  const std::uint64_t bit = std::uint64_t{1} << colour;
+  for (Slot v : slots) {
+    if (v == kNoSlot) continue;
+    if (v >= mask_.size()) mask_.resize(static_cast<std::size_t>(v) + 1, 0);
+    mask_[v] |= bit;
+  }
+}
+
 void ScatterColouring::colour_block(std::uint32_t b, std::span<const Slot> slots) {
   std::uint64_t used = 0;
   for (Slot v : slots) {
@@ -84,10 +93,7 @@ void ScatterColouring::colour_block(std::uint32_t b, std::span<const Slot> slots
     return;
   }
   const int c = std::countr_zero(~used);
-  const std::uint64_t bit = std::uint64_t{1} << c;
-  for (Slot v : slots) {
-    if (v != kNoSlot) mask_[v] |= bit;
-  }
+  mark(slots, c);
   blocks_[b].colour = static_cast<std::uint16_t>(c);
   if (static_cast<std::size_t>(c) >= by_colour_.size()) by_colour_.resize(c + 1);
   by_colour_[c].push_back(b);  // blocks are coloured in increasing order
@@ -118,8 +124,27 @@ void ScatterColouring::remove(std::uint32_t e) {
   --b.size;
 }
 
+// A colouring of one block that holds every entry, in order (a small map:
+// at most block() matches), stays so through changes, at a cost independent
+// of the block's size: an erased entry's place is taken by the last one,
+// which leaves the block 0 .. n-2; a replaced entry keeps its place, its new
+// vertices marked with the block's colour (for the blocks a growth past
+// block() would add); a new entry joins the block while it has room. The
+// block then runs consecutively, the kernels' fast path, instead of in place
+// with a pending list after it; one block runs on one thread, so the sums
+// stay independent of the thread count.
+bool ScatterColouring::whole_in_one_block() const {
+  return blocks_.size() == 1 && pending_.empty() && blocks_[0].consecutive &&
+         blocks_[0].size == where_.size() && blocks_[0].colour != kSerial;
+}
+
 void ScatterColouring::erase(std::uint32_t e, std::uint32_t last) {
   require_changes();
+  if (whole_in_one_block()) {
+    --blocks_[0].size;
+    where_.pop_back();
+    return;
+  }
   remove(e);
   if (e != last) {
     const std::uint32_t w = where_[last];
@@ -137,6 +162,10 @@ void ScatterColouring::erase(std::uint32_t e, std::uint32_t last) {
 void ScatterColouring::replace(std::uint32_t e, bool same, std::span<const Slot> slots) {
   require_changes();
   if (same) return;
+  if (whole_in_one_block()) {
+    mark(slots, blocks_[0].colour);
+    return;
+  }
   remove(e);
   add_pending(e, slots);
 }
@@ -144,6 +173,13 @@ void ScatterColouring::replace(std::uint32_t e, bool same, std::span<const Slot>
 void ScatterColouring::insert(std::uint32_t e, std::span<const Slot> slots) {
   require_changes();
   if (e != where_.size()) throw std::logic_error("ScatterColouring::insert: not the next entry");
+  if (whole_in_one_block() && blocks_[0].size < block_) {
+    order_[e] = e;
+    where_.push_back(e);
+    ++blocks_[0].size;
+    mark(slots, blocks_[0].colour);
+    return;
+  }
   where_.push_back(0);
   add_pending(e, slots);
 }

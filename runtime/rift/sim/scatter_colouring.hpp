@@ -16,7 +16,8 @@
 // After a tear (MatchCache::rematch) the colouring follows locally: a match
 // lost leaves its block, a match whose vertices changed and a new match go
 // to a short "pending" list scattered after the colours on one thread, and
-// every block() pending matches become a new block with its own colour. Masks
+// every block() pending matches become a new block with its own colour (a
+// colouring of one block holding every match keeps it so instead). Masks
 // per vertex (one bit per colour of a block touching it) make colouring a
 // block cost its own size; they only ever over-approximate (a block that
 // loses a match keeps its bits), which can cost a colour, never a race.
@@ -142,6 +143,11 @@ class ScatterColouring {
   void begin_build(std::size_t n, int k);
   /// Colours block b from the masks of `slots` and records its bits.
   void colour_block(std::uint32_t b, std::span<const Slot> slots);
+  /// One block holds every entry, consecutively (see the .cpp): changes
+  /// keep it so.
+  bool whole_in_one_block() const;
+  /// Marks these vertex slots (kNoSlot: none) with a colour's bit.
+  void mark(std::span<const Slot> slots, int colour);
   /// Takes e out of its block or the pending list.
   void remove(std::uint32_t e);
   void add_pending(std::uint32_t e, std::span<const Slot> slots);
