@@ -99,6 +99,14 @@ struct Kernel {
   std::set<std::string> store_only_embeddings;
 };
 
+/// The embeddings a body's forces are stored in, each once.
+std::set<std::string> force_embeddings(const ir::Body& b) {
+  std::set<std::string> names;
+  for (const ir::Force& f : b.forces)
+    names.insert(f.embedding);
+  return names;
+}
+
 /// Where the force pass finds slot s: the match's field or, for a slot only
 /// stores write, the field of its Stored `stored` (e.g. "ss[i]" or "s").
 std::string slot_at(const Kernel& k, int s, const std::string& stored) {
@@ -565,9 +573,7 @@ void write_add_forces_all(Writer& w, const Kernel& k, bool indexed) {
                           : "rift::Vec3* /*f*/, bool /*store*/") +
          ") {");
   w.line("const Columns c = columns();");
-  std::set<std::string> stores;
-  for (const ir::Force& f : b.forces)
-    stores.insert(f.embedding);
+  const std::set<std::string> stores = force_embeddings(b);
   // Not asked for unless storing: a column nothing reads has no storage
   // (rift::ForceModel::set_store_forces), and values() would give it some.
   for (const std::string& e : stores)
@@ -927,6 +933,28 @@ void write_group_passes(Writer& w, const Kernel& k) {
   }
   w.close();
   w.line();
+  // The members of a pass's groups store their group's terms in one call:
+  // each column's storage is asked for once (values() is an acquire load,
+  // which no later load may pass), not once per member and force.
+  w.open("void " + k.cls + "::store_terms_of(std::span<const Match> ms, " +
+         (has_stored_slots(k) ? "const Stored* ss" : "const Stored* /*ss*/") +
+         ", const std::uint32_t* entries, const std::uint32_t* term_of, std::size_t n, const "
+         "rift::Vec3* terms) {");
+  const std::set<std::string> stores = force_embeddings(b);
+  for (const std::string& e : stores)
+    w.line("rift::Vec3* const stored_" + e + " = " + embedding_var(e) + ".values().data();");
+  w.open("for (std::size_t i = 0; i < n; ++i) {");
+  w.line("[[maybe_unused]] const Match& m = ms[entries[i]];");
+  if (has_stored_slots(k)) w.line("[[maybe_unused]] const Stored& s = ss[entries[i]];");
+  w.line("const rift::Vec3* const t = terms + std::size_t{term_of[i]} * " + n + ";");
+  for (std::size_t i = 0; i < b.forces.size(); ++i) {
+    const ir::Force& f = b.forces[i];
+    w.line("stored_" + f.embedding + "[" + slot_at(k, f.store_slot, "s") + "] = t[" +
+           std::to_string(i) + "];");
+  }
+  w.close();
+  w.close();
+  w.line();
   // As add_forces_all, each force added count times; a pass that stores
   // also keeps each group's terms, which its members' stored forces copy.
   // Over consecutive groups, and (add_forces_grouped_at) over reps[at[i]].
@@ -1131,6 +1159,11 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
         "const;");
     w.line("/// Stores forces computed by evaluate_terms into m's stored-force slots.");
     w.line("void store_terms(const Match& m, const Stored& s, const rift::Vec3* terms);");
+    w.line("/// store_terms for entries[i] of ms (ss parallel to ms), i < n, with the");
+    w.line("/// terms at terms + term_of[i] * kForceTerms.");
+    w.line(
+        "void store_terms_of(std::span<const Match> ms, const Stored* ss, const std::uint32_t* "
+        "entries, const std::uint32_t* term_of, std::size_t n, const rift::Vec3* terms);");
     w.line("/// The force pass over groups: adds counts[i] times the forces of reps[i];");
     w.line("/// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.");
     w.line(

@@ -88,6 +88,9 @@ class StretchKernel {
   bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
   /// Stores forces computed by evaluate_terms into m's stored-force slots.
   void store_terms(const Match& m, const Stored& s, const rift::Vec3* terms);
+  /// store_terms for entries[i] of ms (ss parallel to ms), i < n, with the
+  /// terms at terms + term_of[i] * kForceTerms.
+  void store_terms_of(std::span<const Match> ms, const Stored* ss, const std::uint32_t* entries, const std::uint32_t* term_of, std::size_t n, const rift::Vec3* terms);
   /// The force pass over groups: adds counts[i] times the forces of reps[i];
   /// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.
   void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
@@ -194,6 +197,9 @@ class ShearKernel {
   bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
   /// Stores forces computed by evaluate_terms into m's stored-force slots.
   void store_terms(const Match& m, const Stored& s, const rift::Vec3* terms);
+  /// store_terms for entries[i] of ms (ss parallel to ms), i < n, with the
+  /// terms at terms + term_of[i] * kForceTerms.
+  void store_terms_of(std::span<const Match> ms, const Stored* ss, const std::uint32_t* entries, const std::uint32_t* term_of, std::size_t n, const rift::Vec3* terms);
   /// The force pass over groups: adds counts[i] times the forces of reps[i];
   /// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.
   void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
@@ -314,6 +320,9 @@ class VolumeShearKernel {
   bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
   /// Stores forces computed by evaluate_terms into m's stored-force slots.
   void store_terms(const Match& m, const Stored& s, const rift::Vec3* terms);
+  /// store_terms for entries[i] of ms (ss parallel to ms), i < n, with the
+  /// terms at terms + term_of[i] * kForceTerms.
+  void store_terms_of(std::span<const Match> ms, const Stored* ss, const std::uint32_t* entries, const std::uint32_t* term_of, std::size_t n, const rift::Vec3* terms);
   /// The force pass over groups: adds counts[i] times the forces of reps[i];
   /// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.
   void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
