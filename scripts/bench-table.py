@@ -151,7 +151,9 @@ def rows(out):
     row("set-up of 10⁶ vertices, quads / hexahedra", "≤ 1 s / ≤ 4 s",
         lambda: "%.2f s / %.1f s" % (q["quads1m"]["setup_ms"] / 1e3, h["hex1m"]["setup_ms"] / 1e3))
 
-    th = gbench(out, "threads")
+    th = {}
+    for name in ("threads", "threads1", "threads2"):  # one process per thread count since 30a6001
+        th.update(gbench(out, name) or {})
 
     def threads():
         one = real_ns(find(th, "BM_ThreadsRk4Cloth/1000/1/"))
