@@ -63,6 +63,20 @@ std::string force_field(const ir::Body& body, const ir::Force& f) {
   return f.embedding + "_" + body.nodes[static_cast<std::size_t>(f.node)];
 }
 
+/// The earlier force whose value force i's is the negation of (`force b.f =
+/// -l_f` after `force a.f = l_f`: the body is shared, so both read one node),
+/// or -1. A scatter subtracts that force instead of adding this one: x - y
+/// is exactly x + (-y), and count * (-y) exactly -(count * y), so the same
+/// bits for three negations and (grouped) three products fewer.
+int negated_force(const ir::Body& b, std::size_t i) {
+  const ir::Node& n = b.graph[b.forces[i].value];
+  if (n.op != ir::Op::Neg) return -1;
+  for (std::size_t j = 0; j < i; ++j) {
+    if (b.forces[j].value == n.operand(0)) return static_cast<int>(j);
+  }
+  return -1;
+}
+
 /// The field of Result a `store` is returned in: `stored_fem_stress_c0`.
 std::string store_field(const ir::Body& body, const ir::Store& st) {
   return "stored_" + st.embedding + "_" + body.nodes[static_cast<std::size_t>(st.node)];
@@ -619,9 +633,15 @@ void write_add_forces_all(Writer& w, const Kernel& k, bool indexed) {
     w.close();
     w.line("continue;");
     w.close();
-    for (const ir::Force& f : b.forces) {
+    for (std::size_t i = 0; i < b.forces.size(); ++i) {
+      const ir::Force& f = b.forces[i];
       const std::string field = std::string("r.") + force_field(b, f);
-      w.line("f[m." + k.slots[static_cast<std::size_t>(f.vertex_slot)] + "] += " + field + ";");
+      const std::string target = "f[m." + k.slots[static_cast<std::size_t>(f.vertex_slot)] + "]";
+      if (const int j = negated_force(b, i); j >= 0) {
+        w.line(target + " -= r." + force_field(b, b.forces[static_cast<std::size_t>(j)]) + ";");
+      } else {
+        w.line(target + " += " + field + ";");
+      }
       w.line(if_store + "stored_" + f.embedding + "[" + slot_at(k, f.store_slot, ss_i) +
              "] = " + field + ";");
     }
@@ -986,9 +1006,23 @@ void write_add_forces_grouped(Writer& w, const Kernel& k, bool indexed) {
   w.line("continue;");
   w.close();
   w.line(indexed ? "const rift::Real count = counts[e];" : "const rift::Real count = counts[i];");
-  for (const ir::Force& f : b.forces) {
-    w.line("f[m." + k.slots[static_cast<std::size_t>(f.vertex_slot)] + "] += count * r." +
-           force_field(b, f) + ";");
+  // count times each force; a force another one negates is kept (cf<i>).
+  std::vector<bool> negated_later(b.forces.size(), false);
+  for (std::size_t i = 0; i < b.forces.size(); ++i) {
+    if (const int j = negated_force(b, i); j >= 0)
+      negated_later[static_cast<std::size_t>(j)] = true;
+  }
+  for (std::size_t i = 0; i < b.forces.size(); ++i) {
+    const ir::Force& f = b.forces[i];
+    const std::string target = "f[m." + k.slots[static_cast<std::size_t>(f.vertex_slot)] + "]";
+    if (const int j = negated_force(b, i); j >= 0) {
+      w.line(target + " -= cf" + std::to_string(j) + ";");
+    } else if (negated_later[i]) {
+      w.line("const rift::Vec3 cf" + std::to_string(i) + " = count * r." + force_field(b, f) + ";");
+      w.line(target + " += cf" + std::to_string(i) + ";");
+    } else {
+      w.line(target + " += count * r." + force_field(b, f) + ";");
+    }
   }
   w.open("if (terms) {");
   for (std::size_t i = 0; i < b.forces.size(); ++i) {

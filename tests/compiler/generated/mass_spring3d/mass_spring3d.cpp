@@ -254,7 +254,7 @@ void StretchKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, 
     }
     f[m.vertex_a] += r.f_stretch_a;
     if (store) stored_f_stretch[ss[i].dart_a] = r.f_stretch_a;
-    f[m.vertex_b] += r.f_stretch_b;
+    f[m.vertex_b] -= r.f_stretch_a;
     if (store) stored_f_stretch[ss[i].dart_b] = r.f_stretch_b;
   }
 }
@@ -274,7 +274,7 @@ void StretchKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t
     }
     f[m.vertex_a] += r.f_stretch_a;
     if (store) stored_f_stretch[ss[at[i]].dart_a] = r.f_stretch_a;
-    f[m.vertex_b] += r.f_stretch_b;
+    f[m.vertex_b] -= r.f_stretch_a;
     if (store) stored_f_stretch[ss[at[i]].dart_b] = r.f_stretch_b;
   }
 }
@@ -330,8 +330,9 @@ void StretchKernel::add_forces_grouped(std::span<const Match> reps, const std::u
       continue;
     }
     const rift::Real count = counts[i];
-    f[m.vertex_a] += count * r.f_stretch_a;
-    f[m.vertex_b] += count * r.f_stretch_b;
+    const rift::Vec3 cf0 = count * r.f_stretch_a;
+    f[m.vertex_a] += cf0;
+    f[m.vertex_b] -= cf0;
     if (terms) {
       terms[i * 2 + 0] = r.f_stretch_a;
       terms[i * 2 + 1] = r.f_stretch_b;
@@ -350,8 +351,9 @@ void StretchKernel::add_forces_grouped_at(std::span<const Match> reps, const std
       continue;
     }
     const rift::Real count = counts[e];
-    f[m.vertex_a] += count * r.f_stretch_a;
-    f[m.vertex_b] += count * r.f_stretch_b;
+    const rift::Vec3 cf0 = count * r.f_stretch_a;
+    f[m.vertex_a] += cf0;
+    f[m.vertex_b] -= cf0;
     if (terms) {
       terms[i * 2 + 0] = r.f_stretch_a;
       terms[i * 2 + 1] = r.f_stretch_b;
@@ -589,11 +591,11 @@ void ShearKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, co
     }
     f[m.vertex_c0] += r.f_shear_c0;
     if (store) stored_f_shear[ss[i].orbit1_c0] = r.f_shear_c0;
-    f[m.vertex_c2] += r.f_shear_c2;
+    f[m.vertex_c2] -= r.f_shear_c0;
     if (store) stored_f_shear[ss[i].orbit1_c2] = r.f_shear_c2;
     f[m.vertex_c1] += r.f_shear_c1;
     if (store) stored_f_shear[ss[i].orbit1_c1] = r.f_shear_c1;
-    f[m.vertex_c3] += r.f_shear_c3;
+    f[m.vertex_c3] -= r.f_shear_c1;
     if (store) stored_f_shear[ss[i].orbit1_c3] = r.f_shear_c3;
   }
 }
@@ -615,11 +617,11 @@ void ShearKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* 
     }
     f[m.vertex_c0] += r.f_shear_c0;
     if (store) stored_f_shear[ss[at[i]].orbit1_c0] = r.f_shear_c0;
-    f[m.vertex_c2] += r.f_shear_c2;
+    f[m.vertex_c2] -= r.f_shear_c0;
     if (store) stored_f_shear[ss[at[i]].orbit1_c2] = r.f_shear_c2;
     f[m.vertex_c1] += r.f_shear_c1;
     if (store) stored_f_shear[ss[at[i]].orbit1_c1] = r.f_shear_c1;
-    f[m.vertex_c3] += r.f_shear_c3;
+    f[m.vertex_c3] -= r.f_shear_c1;
     if (store) stored_f_shear[ss[at[i]].orbit1_c3] = r.f_shear_c3;
   }
 }
@@ -686,10 +688,12 @@ void ShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uin
       continue;
     }
     const rift::Real count = counts[i];
-    f[m.vertex_c0] += count * r.f_shear_c0;
-    f[m.vertex_c2] += count * r.f_shear_c2;
-    f[m.vertex_c1] += count * r.f_shear_c1;
-    f[m.vertex_c3] += count * r.f_shear_c3;
+    const rift::Vec3 cf0 = count * r.f_shear_c0;
+    f[m.vertex_c0] += cf0;
+    f[m.vertex_c2] -= cf0;
+    const rift::Vec3 cf2 = count * r.f_shear_c1;
+    f[m.vertex_c1] += cf2;
+    f[m.vertex_c3] -= cf2;
     if (terms) {
       terms[i * 4 + 0] = r.f_shear_c0;
       terms[i * 4 + 1] = r.f_shear_c2;
@@ -710,10 +714,12 @@ void ShearKernel::add_forces_grouped_at(std::span<const Match> reps, const std::
       continue;
     }
     const rift::Real count = counts[e];
-    f[m.vertex_c0] += count * r.f_shear_c0;
-    f[m.vertex_c2] += count * r.f_shear_c2;
-    f[m.vertex_c1] += count * r.f_shear_c1;
-    f[m.vertex_c3] += count * r.f_shear_c3;
+    const rift::Vec3 cf0 = count * r.f_shear_c0;
+    f[m.vertex_c0] += cf0;
+    f[m.vertex_c2] -= cf0;
+    const rift::Vec3 cf2 = count * r.f_shear_c1;
+    f[m.vertex_c1] += cf2;
+    f[m.vertex_c3] -= cf2;
     if (terms) {
       terms[i * 4 + 0] = r.f_shear_c0;
       terms[i * 4 + 1] = r.f_shear_c2;
@@ -2235,19 +2241,19 @@ void VolumeShearKernel::add_forces_all(std::span<const Match> ms, const Stored* 
     }
     f[m.vertex_b0] += r.f_volume_shear_b0;
     if (store) stored_f_volume_shear[ss[i].orbit12_b0] = r.f_volume_shear_b0;
-    f[m.vertex_s22] += r.f_volume_shear_s22;
+    f[m.vertex_s22] -= r.f_volume_shear_b0;
     if (store) stored_f_volume_shear[ss[i].orbit12_s22] = r.f_volume_shear_s22;
     f[m.vertex_b2] += r.f_volume_shear_b2;
     if (store) stored_f_volume_shear[ss[i].orbit12_b2] = r.f_volume_shear_b2;
-    f[m.vertex_s32] += r.f_volume_shear_s32;
+    f[m.vertex_s32] -= r.f_volume_shear_b2;
     if (store) stored_f_volume_shear[ss[i].orbit12_s32] = r.f_volume_shear_s32;
     f[m.vertex_b4] += r.f_volume_shear_b4;
     if (store) stored_f_volume_shear[ss[i].orbit12_b4] = r.f_volume_shear_b4;
-    f[m.vertex_s02] += r.f_volume_shear_s02;
+    f[m.vertex_s02] -= r.f_volume_shear_b4;
     if (store) stored_f_volume_shear[ss[i].orbit12_s02] = r.f_volume_shear_s02;
     f[m.vertex_b6] += r.f_volume_shear_b6;
     if (store) stored_f_volume_shear[ss[i].orbit12_b6] = r.f_volume_shear_b6;
-    f[m.vertex_s12] += r.f_volume_shear_s12;
+    f[m.vertex_s12] -= r.f_volume_shear_b6;
     if (store) stored_f_volume_shear[ss[i].orbit12_s12] = r.f_volume_shear_s12;
   }
 }
@@ -2273,19 +2279,19 @@ void VolumeShearKernel::add_forces_at(std::span<const Match> ms, const std::uint
     }
     f[m.vertex_b0] += r.f_volume_shear_b0;
     if (store) stored_f_volume_shear[ss[at[i]].orbit12_b0] = r.f_volume_shear_b0;
-    f[m.vertex_s22] += r.f_volume_shear_s22;
+    f[m.vertex_s22] -= r.f_volume_shear_b0;
     if (store) stored_f_volume_shear[ss[at[i]].orbit12_s22] = r.f_volume_shear_s22;
     f[m.vertex_b2] += r.f_volume_shear_b2;
     if (store) stored_f_volume_shear[ss[at[i]].orbit12_b2] = r.f_volume_shear_b2;
-    f[m.vertex_s32] += r.f_volume_shear_s32;
+    f[m.vertex_s32] -= r.f_volume_shear_b2;
     if (store) stored_f_volume_shear[ss[at[i]].orbit12_s32] = r.f_volume_shear_s32;
     f[m.vertex_b4] += r.f_volume_shear_b4;
     if (store) stored_f_volume_shear[ss[at[i]].orbit12_b4] = r.f_volume_shear_b4;
-    f[m.vertex_s02] += r.f_volume_shear_s02;
+    f[m.vertex_s02] -= r.f_volume_shear_b4;
     if (store) stored_f_volume_shear[ss[at[i]].orbit12_s02] = r.f_volume_shear_s02;
     f[m.vertex_b6] += r.f_volume_shear_b6;
     if (store) stored_f_volume_shear[ss[at[i]].orbit12_b6] = r.f_volume_shear_b6;
-    f[m.vertex_s12] += r.f_volume_shear_s12;
+    f[m.vertex_s12] -= r.f_volume_shear_b6;
     if (store) stored_f_volume_shear[ss[at[i]].orbit12_s12] = r.f_volume_shear_s12;
   }
 }
@@ -2374,14 +2380,18 @@ void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const st
       continue;
     }
     const rift::Real count = counts[i];
-    f[m.vertex_b0] += count * r.f_volume_shear_b0;
-    f[m.vertex_s22] += count * r.f_volume_shear_s22;
-    f[m.vertex_b2] += count * r.f_volume_shear_b2;
-    f[m.vertex_s32] += count * r.f_volume_shear_s32;
-    f[m.vertex_b4] += count * r.f_volume_shear_b4;
-    f[m.vertex_s02] += count * r.f_volume_shear_s02;
-    f[m.vertex_b6] += count * r.f_volume_shear_b6;
-    f[m.vertex_s12] += count * r.f_volume_shear_s12;
+    const rift::Vec3 cf0 = count * r.f_volume_shear_b0;
+    f[m.vertex_b0] += cf0;
+    f[m.vertex_s22] -= cf0;
+    const rift::Vec3 cf2 = count * r.f_volume_shear_b2;
+    f[m.vertex_b2] += cf2;
+    f[m.vertex_s32] -= cf2;
+    const rift::Vec3 cf4 = count * r.f_volume_shear_b4;
+    f[m.vertex_b4] += cf4;
+    f[m.vertex_s02] -= cf4;
+    const rift::Vec3 cf6 = count * r.f_volume_shear_b6;
+    f[m.vertex_b6] += cf6;
+    f[m.vertex_s12] -= cf6;
     if (terms) {
       terms[i * 8 + 0] = r.f_volume_shear_b0;
       terms[i * 8 + 1] = r.f_volume_shear_s22;
@@ -2406,14 +2416,18 @@ void VolumeShearKernel::add_forces_grouped_at(std::span<const Match> reps, const
       continue;
     }
     const rift::Real count = counts[e];
-    f[m.vertex_b0] += count * r.f_volume_shear_b0;
-    f[m.vertex_s22] += count * r.f_volume_shear_s22;
-    f[m.vertex_b2] += count * r.f_volume_shear_b2;
-    f[m.vertex_s32] += count * r.f_volume_shear_s32;
-    f[m.vertex_b4] += count * r.f_volume_shear_b4;
-    f[m.vertex_s02] += count * r.f_volume_shear_s02;
-    f[m.vertex_b6] += count * r.f_volume_shear_b6;
-    f[m.vertex_s12] += count * r.f_volume_shear_s12;
+    const rift::Vec3 cf0 = count * r.f_volume_shear_b0;
+    f[m.vertex_b0] += cf0;
+    f[m.vertex_s22] -= cf0;
+    const rift::Vec3 cf2 = count * r.f_volume_shear_b2;
+    f[m.vertex_b2] += cf2;
+    f[m.vertex_s32] -= cf2;
+    const rift::Vec3 cf4 = count * r.f_volume_shear_b4;
+    f[m.vertex_b4] += cf4;
+    f[m.vertex_s02] -= cf4;
+    const rift::Vec3 cf6 = count * r.f_volume_shear_b6;
+    f[m.vertex_b6] += cf6;
+    f[m.vertex_s12] -= cf6;
     if (terms) {
       terms[i * 8 + 0] = r.f_volume_shear_b0;
       terms[i * 8 + 1] = r.f_volume_shear_s22;
