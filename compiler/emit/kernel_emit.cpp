@@ -1006,7 +1006,8 @@ void write_add_forces_grouped(Writer& w, const Kernel& k, bool indexed) {
   w.line("continue;");
   w.close();
   w.line(indexed ? "const rift::Real count = counts[e];" : "const rift::Real count = counts[i];");
-  // count times each force; a force another one negates is kept (cf<i>).
+  // count times each force; a force a later one negates is kept (cf<i>),
+  // even when it negates an earlier one itself (`-(-fa)`).
   std::vector<bool> negated_later(b.forces.size(), false);
   for (std::size_t i = 0; i < b.forces.size(); ++i) {
     if (const int j = negated_force(b, i); j >= 0)
@@ -1015,11 +1016,11 @@ void write_add_forces_grouped(Writer& w, const Kernel& k, bool indexed) {
   for (std::size_t i = 0; i < b.forces.size(); ++i) {
     const ir::Force& f = b.forces[i];
     const std::string target = "f[m." + k.slots[static_cast<std::size_t>(f.vertex_slot)] + "]";
-    if (const int j = negated_force(b, i); j >= 0) {
-      w.line(target + " -= cf" + std::to_string(j) + ";");
-    } else if (negated_later[i]) {
+    if (negated_later[i]) {
       w.line("const rift::Vec3 cf" + std::to_string(i) + " = count * r." + force_field(b, f) + ";");
       w.line(target + " += cf" + std::to_string(i) + ";");
+    } else if (const int j = negated_force(b, i); j >= 0) {
+      w.line(target + " -= cf" + std::to_string(j) + ";");
     } else {
       w.line(target + " += count * r." + force_field(b, f) + ";");
     }
