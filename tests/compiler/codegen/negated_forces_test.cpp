@@ -91,12 +91,12 @@ TEST(NegatedForces, SubtractedForcesAreTheForcesSpelledOutBitForBit) {
     for (const Vec3& f : shared.stored_f)
       largest = std::max(largest, f.norm());
     EXPECT_GT(largest, 0.1);  // deformed and moving: the springs pull
-    // Each half-edge's two stored forces are fa and -fa at a, -fa at b:
-    // the sums on the vertices are twice the springs' forces, not zero.
-    Real sum = 0;
+    // a receives fa (f) and -(-fa) = fa (g), b receives -fa twice: the
+    // vertices' sums are twice the springs' forces, not zero.
+    Real strongest = 0;
     for (const Vec3& f : shared.on_vertices)
-      sum = std::max(sum, f.norm());
-    EXPECT_GT(sum, 0.1);
+      strongest = std::max(strongest, f.norm());
+    EXPECT_GT(strongest, 0.1);
   }
 }
 
