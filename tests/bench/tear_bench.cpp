@@ -63,6 +63,7 @@ void BM_OneTear(benchmark::State& state, rift::GridKind kind) {
   TearingCloth& c = cloths.at(n);
   std::vector<rift::Dart> touched;
   std::size_t tears = 0;
+  std::size_t touched_darts = 0;
   for (auto _ : state) {
     double spent = 0;
     for (;;) {
@@ -74,12 +75,17 @@ void BM_OneTear(benchmark::State& state, rift::GridKind kind) {
       const bool applied = c.sim->criteria()[0]->apply(c.sim->map(), cand, touched);
       if (applied) c.sim->on_topology_changed(touched);
       spent += thread_seconds() - t0;
+      if (applied) touched_darts += touched.size();
       if (applied) break;
     }
     ++tears;
     state.SetIterationTime(spent);
   }
   state.counters["vertices"] = static_cast<double>(c.sim->map().count_cells(rift::Orbit{1, 2}));
+  // How much a tear rewrites: a tear far from the border and from earlier
+  // tears touches more darts than one on a small, already torn cloth.
+  state.counters["touched_darts"] =
+      static_cast<double>(touched_darts) / static_cast<double>(std::max<std::size_t>(tears, 1));
 }
 
 }  // namespace
