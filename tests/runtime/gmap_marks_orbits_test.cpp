@@ -1,7 +1,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 #include <set>
+#include <vector>
 
 #include "rift/gmap/gmap.hpp"
 #include "rift/mesh/assemble.hpp"
@@ -131,6 +133,60 @@ TEST(Orbits, SubOrbitsReachingOutsideTheOrbitAreVisitedOnceAndUnmarked) {
     for (Mark m = 0; m < GMap::kMaxMarks; ++m)
       ASSERT_FALSE(map.is_marked(d, m)) << "dart " << d << " mark " << m;
   }
+}
+
+// What for_each_cell promises, by its definition: the smallest dart of each
+// orbit, in increasing order.
+std::vector<Dart> smallest_darts_in_order(const GMap& map, Orbit o) {
+  std::vector<Dart> out;
+  map.for_each_dart([&](Dart d) {
+    const std::set<Dart> orbit = reference_orbit(map, d, o);
+    if (*orbit.begin() == d) out.push_back(d);
+  });
+  return out;
+}
+
+std::vector<Dart> cells_of(const GMap& map, Orbit o) {
+  std::vector<Dart> out;
+  map.for_each_cell(o, [&](Dart d) { out.push_back(d); });
+  return out;
+}
+
+// Orbits with an embedding are passed over by their slots, the others by a
+// marked walk: both give the same darts in the same order, also once unsews
+// have split orbits (new slots out of dart order) and darts were deleted.
+TEST(Cells, ForEachCellGivesEachOrbitsSmallestDartInOrder) {
+  for (const char* spec : {"grid:tri:5x4", "grid:mix:4x3", "block:hex:2x2x1", "block:tet:2x1x1"}) {
+    GMap map = assemble_gmap(make_generated_mesh(spec));
+    const int n = map.dimension();
+    map.add_embedding<Real>("corner", Orbit::cell(0, n).without(n), MergePolicy::kSum, 1.0);
+    map.add_embedding<Real>("edge", Orbit::cell(1, n), MergePolicy::kSum, 1.0);
+    std::mt19937 rng(7);
+    std::uniform_int_distribution<Dart> pick(0, static_cast<Dart>(map.capacity() - 1));
+    for (int tear = 0; tear <= 12; ++tear) {
+      for (const Orbit o :
+           {Orbit::cell(0, n), Orbit::cell(1, n), Orbit::cell(n, n), Orbit::cell(0, n).without(n),
+            Orbit::cell(n - 1, n), Orbit{0}, Orbit{}}) {
+        ASSERT_EQ(cells_of(map, o), smallest_darts_in_order(map, o))
+            << spec << " after " << tear << " unsews, orbit " << o.str();
+      }
+      const Dart d = pick(rng);
+      if (!map.is_free(d, n)) map.unsew(d, n);
+      ASSERT_TRUE(map.check_validity(3).empty()) << spec;
+    }
+  }
+}
+
+// Darts made one by one get their slots only when sewn or asked for: until
+// then a pass over such an orbit walks the links.
+TEST(Cells, ForEachCellOverDartsWithoutSlotsYet) {
+  GMap map(2);
+  map.add_embedding<Real>("value", Orbit{1, 2});
+  const Dart a = map.create_dart();
+  const Dart b = map.create_dart();
+  const Dart c = map.create_dart();
+  map.link(a, b, 1);
+  EXPECT_EQ(cells_of(map, Orbit{1, 2}), (std::vector<Dart>{a, c}));
 }
 
 TEST(Cells, ForEachCellGivesOneDartPerCell) {

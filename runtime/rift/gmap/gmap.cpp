@@ -236,6 +236,21 @@ bool GMap::in_same_orbit(Dart a, Dart b, Orbit o) const {
   return found;
 }
 
+const OrbitAttachment* GMap::slotted_attachment(Orbit o) const {
+  for (const auto& att : attachments_) {
+    if (att->orbit() != o || att->dormant()) continue;
+    // A valid map gives every live dart a slot; a map being built dart by
+    // dart may not have yet (sew and assign_missing_slots fill them in).
+    const Slot* slot = att->slot_data();
+    const std::size_t n = alive_.size();
+    bool complete = true;
+    for (std::size_t i = 0; i < n; ++i)
+      complete &= !alive_[i] || slot[i] != kNoSlot;
+    if (complete) return att.get();
+  }
+  return nullptr;
+}
+
 std::size_t GMap::count_cells(Orbit o) const {
   std::size_t n = 0;
   for_each_cell(o, [&](Dart) { ++n; });

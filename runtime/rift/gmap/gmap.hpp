@@ -191,7 +191,8 @@ class GMap {
   template <class F>
   void for_each_sub_orbit(Dart d, Orbit o, Orbit sub, F&& f) const;
 
-  /// Calls f(d) with one dart of each orbit <o> of the map.
+  /// Calls f(d) with one dart of each orbit <o> of the map: its smallest
+  /// dart, in increasing order of those darts.
   template <class F>
   void for_each_cell(Orbit o, F&& f) const;
   std::size_t count_cells(Orbit o) const;
@@ -264,6 +265,9 @@ class GMap {
   void split_embeddings_after_unsew(const std::vector<Dart>& pairs, int i);
   std::vector<Dart>& acquire_scratch() const;
   void release_scratch() const { --scratch_depth_; }
+  /// An attachment of orbit o that gives every live dart a slot, or null
+  /// (none is awake, or darts made by hand have no slot yet).
+  const OrbitAttachment* slotted_attachment(Orbit o) const;
 
   int dimension_;
   std::uint64_t identity_;
@@ -397,6 +401,31 @@ void GMap::for_each_sub_orbit(Dart d, Orbit o, Orbit sub, F&& f) const {
 
 template <class F>
 void GMap::for_each_cell(Orbit o, F&& f) const {
+  const std::size_t n = alive_.size();
+  if (const OrbitAttachment* att = slotted_attachment(o)) {
+    // Each orbit of a valid map holds one slot of the attachment and no two
+    // orbits share one (check_validity): the first dart of each slot met in
+    // dart order is its orbit's smallest dart, the dart the marked walk below
+    // gives, in the same order. One sequential pass over the slots instead
+    // of a walk per orbit over the links and the marks (most of a large
+    // set-up's cell passes, and of a criterion's cell list after a tear).
+    std::vector<Dart>& seen = acquire_scratch();  // one bit per slot
+    struct ScratchGuard {
+      const GMap& map;
+      ~ScratchGuard() { map.release_scratch(); }
+    } guard{*this};
+    seen.assign((att->slot_capacity() + 31) / 32, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!alive_[i]) continue;
+      // Read through the attachment: f may add darts, which moves its slots.
+      const Slot s = att->slot(static_cast<Dart>(i));
+      const Dart bit = Dart{1} << (s % 32);
+      if (seen[s / 32] & bit) continue;
+      seen[s / 32] |= bit;
+      f(static_cast<Dart>(i));
+    }
+    return;
+  }
   // The mark is released even when f throws (an interrupt inside a pass).
   struct MarkGuard {
     const GMap& map;
@@ -404,7 +433,6 @@ void GMap::for_each_cell(Orbit o, F&& f) const {
     ~MarkGuard() { map.free_mark(m); }
   } guard{*this, reserve_mark()};
   const Mark m = guard.m;
-  const std::size_t n = alive_.size();
   for (std::size_t i = 0; i < n; ++i) {
     const Dart d = static_cast<Dart>(i);
     if (!alive_[d] || is_marked(d, m)) continue;
