@@ -379,27 +379,36 @@ TEST(Grouping, MoreGroupsThanTheTableExpectsKeepFirstAppearanceOrder) {
     out = key_words(m.a, out);
     key_words(m.b, out);
   };
-  MatchGroups<Pair> groups;
-  MatchGroups<Pair>::NoObserver none;
-  groups.build(std::span<const Pair>(matches), 2, key, none);
-  ASSERT_EQ(groups.check(std::span<const Pair>(matches), key), "");
-  std::vector<Pair> firsts;
-  std::vector<std::uint32_t> counts;
-  for (std::uint32_t e = 0; e < matches.size(); ++e) {
-    std::uint32_t g = 0;
-    while (g < firsts.size() && (firsts[g].a != matches[e].a || firsts[g].b != matches[e].b))
-      ++g;
-    if (g == firsts.size()) {
-      firsts.push_back(matches[e]);
-      counts.push_back(0);
+  // Every prefix length around the build's look-ahead too (fewer matches
+  // than it reads ahead, exactly as many, one more), then all of them.
+  for (const std::size_t n :
+       {std::size_t{0}, std::size_t{1}, std::size_t{7}, std::size_t{MatchGroups<Pair>::kAhead},
+        std::size_t{MatchGroups<Pair>::kAhead + 1}, matches.size()}) {
+    const std::span<const Pair> some(matches.data(), n);
+    MatchGroups<Pair> groups;
+    MatchGroups<Pair>::NoObserver none;
+    groups.build(some, 2, key, none);
+    ASSERT_EQ(groups.check(some, key), "") << n << " matches";
+    std::vector<Pair> firsts;
+    std::vector<std::uint32_t> counts;
+    for (std::uint32_t e = 0; e < n; ++e) {
+      std::uint32_t g = 0;
+      while (g < firsts.size() && (firsts[g].a != some[e].a || firsts[g].b != some[e].b))
+        ++g;
+      if (g == firsts.size()) {
+        firsts.push_back(some[e]);
+        counts.push_back(0);
+      }
+      ++counts[g];
+      ASSERT_EQ(groups.group_of(e), g) << "entry " << e << " of " << n;
     }
-    ++counts[g];
-    ASSERT_EQ(groups.group_of(e), g) << "entry " << e;
+    if (n == matches.size()) {
+      EXPECT_GT(firsts.size(), matches.size() / 2);
+    }
+    ASSERT_EQ(groups.size(), firsts.size());
+    for (std::uint32_t g = 0; g < firsts.size(); ++g)
+      EXPECT_EQ(groups.counts()[g], counts[g]) << "group " << g << " of " << n << " matches";
   }
-  EXPECT_GT(firsts.size(), matches.size() / 2);
-  ASSERT_EQ(groups.size(), firsts.size());
-  for (std::uint32_t g = 0; g < firsts.size(); ++g)
-    EXPECT_EQ(groups.counts()[g], counts[g]) << "group " << g;
 }
 }  // namespace
 }  // namespace rift::physics_test
