@@ -36,7 +36,12 @@ gbench() {
     --benchmark_enable_random_interleaving=true "$@" > "$out/$name.json"
 }
 # rift bench runs, one JSON object per line, ROUNDS rounds interleaved over
-# the scenes: `rbench NAME ROUNDS STEPS SCENE...`.
+# the scenes: `rbench NAME ROUNDS STEPS SCENE...`. With WARM=1 (set-ups),
+# each timed run comes right after an untimed run of the same scene: on a
+# virtual machine, memory the guest touches for the first time (or again
+# after the host took it back) can cost more than the set-up's own work, and
+# by a varying amount (docs/performance.md, "The run of `528f040`"); the run
+# before leaves warm the memory the timed run reuses.
 rbench() {
   local name=$1 rounds=$2 steps=$3
   shift 3
@@ -44,6 +49,9 @@ rbench() {
   : > "$out/$name.jsonl"
   for _ in $(seq "$rounds"); do
     for scene in "$@"; do
+      if [ "${WARM:-0}" = 1 ]; then
+        "$rift" bench "$scene" --steps "$steps" --threads 1 --json > /dev/null
+      fi
       "$rift" bench "$scene" --steps "$steps" --threads 1 --json >> "$out/$name.jsonl"
     done
   done
@@ -77,8 +85,8 @@ with_source examples/table2/quads-basic.toml quads1m "grid:quad:999x999"
 sed -i 's|^total = .*|total = 826.0|' "$out/quads1m.toml"
 with_source examples/paper/fig12.toml hex1m "block:hex:99x99x99"
 sed -i 's|^total = .*|total = 13333.0|' "$out/hex1m.toml"
-rbench setup_quads 2 1 "$out/quads1m.toml"
-rbench setup_hex 1 1 "$out/hex1m.toml"
+WARM=1 rbench setup_quads 2 1 "$out/quads1m.toml"
+WARM=1 rbench setup_hex 1 1 "$out/hex1m.toml"
 step "reference peak memory"
 /usr/bin/time -f "%M" -o "$out/reference_rss_kb.txt" "$bench/rift_bench_scaling" \
   --benchmark_filter='BM_ScalingClothReference/quads_cumulated/999$' --benchmark_min_time=0.01 \

@@ -82,8 +82,9 @@ void BM_OneTear(benchmark::State& state, rift::GridKind kind) {
     state.SetIterationTime(spent);
   }
   state.counters["vertices"] = static_cast<double>(c.sim->map().count_cells(rift::Orbit{1, 2}));
-  // How much a tear rewrites: a tear far from the border and from earlier
-  // tears touches more darts than one on a small, already torn cloth.
+  // How many darts a tear rewrites, on average: its work, which should not
+  // depend on the cloth's size (46 at 10x10, 42 at 1000x1000 in one run), so
+  // that what differs between sizes is where that work lands in memory.
   state.counters["touched_darts"] =
       static_cast<double>(touched_darts) / static_cast<double>(std::max<std::size_t>(tears, 1));
 }

@@ -154,7 +154,7 @@ std::vector<Dart> cells_of(const GMap& map, Orbit o) {
 
 // Orbits with an embedding are passed over by their slots, the others by a
 // marked walk: both give the same darts in the same order, also once unsews
-// have split orbits (new slots out of dart order) and darts were deleted.
+// have split orbits (their new slots out of dart order).
 TEST(Cells, ForEachCellGivesEachOrbitsSmallestDartInOrder) {
   for (const char* spec : {"grid:tri:5x4", "grid:mix:4x3", "block:hex:2x2x1", "block:tet:2x1x1"}) {
     GMap map = assemble_gmap(make_generated_mesh(spec));
