@@ -410,5 +410,72 @@ TEST(Grouping, MoreGroupsThanTheTableExpectsKeepFirstAppearanceOrder) {
       EXPECT_EQ(groups.counts()[g], counts[g]) << "group " << g << " of " << n << " matches";
   }
 }
+
+// The table homes a key by its first word (a vertex slot, near which the
+// build's next keys fall). Keys that all begin with the same word (a vertex
+// in every group, or a first word that is not a slot) would make one long
+// run: the table must then turn to the hash of the whole key, at the build
+// and when tears add groups, and still give every entry the group a plain
+// search gives, find each group and drop groups cleanly.
+TEST(Grouping, KeysSharingTheirFirstWordGroupAsAPlainSearch) {
+  struct Pair {
+    std::uint32_t a, b;
+  };
+  auto key = [](const Pair& m, std::uint64_t* out) {
+    out = key_words(m.a, out);
+    key_words(m.b, out);
+  };
+  // Groups by a plain search, in order of first appearance.
+  auto plain = [](std::span<const Pair> ms) {
+    std::vector<Pair> firsts;
+    std::vector<std::uint32_t> group;
+    for (const Pair& m : ms) {
+      std::uint32_t g = 0;
+      while (g < firsts.size() && (firsts[g].a != m.a || firsts[g].b != m.b))
+        ++g;
+      if (g == firsts.size()) firsts.push_back(m);
+      group.push_back(g);
+    }
+    return group;
+  };
+  MatchGroups<Pair>::NoObserver none;
+  // A hub: 3000 matches, every one on vertex 7, 1000 distinct partners.
+  std::vector<Pair> hub;
+  for (std::uint32_t i = 0; i < 3000; ++i)
+    hub.push_back({7, (i * 2654435761u) % 1000});
+  MatchGroups<Pair> groups;
+  groups.build(hub, 2, key, none);
+  EXPECT_FALSE(groups.homes_by_first_word()) << "the hub's run did not turn the table over";
+  ASSERT_EQ(groups.check(hub, key), "");
+  const std::vector<std::uint32_t> expected = plain(hub);
+  for (std::uint32_t e = 0; e < hub.size(); ++e)
+    ASSERT_EQ(groups.group_of(e), expected[e]) << "entry " << e;
+
+  // Spread keys first (the table homes by slot), then a tear adds a hub.
+  std::vector<Pair> ms;
+  for (std::uint32_t i = 0; i < 2000; ++i)
+    ms.push_back({i / 2, i / 2 + 1});  // two matches per group
+  MatchGroups<Pair> torn;
+  torn.build(ms, 2, key, none);
+  EXPECT_TRUE(torn.homes_by_first_word());
+  ASSERT_EQ(torn.check(ms, key), "");
+  for (std::uint32_t i = 0; i < 400; ++i) {
+    ms.push_back({500, 5000 + i});
+    torn.inserted(static_cast<std::uint32_t>(ms.size() - 1), ms.back(), key, none);
+  }
+  EXPECT_FALSE(torn.homes_by_first_word());
+  ASSERT_EQ(torn.check(ms, key), "");
+  EXPECT_EQ(torn.size(), 1000u + 400u);
+  // Then drops entries (the MatchCache's swap with the last), emptying
+  // groups of both kinds.
+  for (std::uint32_t k = 0; k < 700; ++k) {
+    const std::uint32_t e = (k * 7919u) % static_cast<std::uint32_t>(ms.size());
+    const auto last = static_cast<std::uint32_t>(ms.size() - 1);
+    torn.erased(e, last, ms, none);
+    ms[e] = ms[last];
+    ms.pop_back();
+    ASSERT_EQ(torn.check(ms, key), "") << "after dropping " << k + 1 << " entries";
+  }
+}
 }  // namespace
 }  // namespace rift::physics_test

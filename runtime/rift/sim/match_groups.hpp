@@ -108,6 +108,8 @@ class MatchGroups {
   std::uint32_t group_of(std::uint32_t entry) const { return group_of_[entry]; }
   /// What the last build kept.
   Keep keeps() const { return keep_; }
+  /// Whether the table still homes keys by their first word (see hash).
+  bool homes_by_first_word() const { return by_slot_; }
   /// f(entry) for each member of group g (not after a build keeping kCounts).
   template <class F>
   void for_each_member(std::uint32_t g, F&& f) const {
@@ -122,6 +124,7 @@ class MatchGroups {
              Keep keep = Keep::kEverything) {
     words_ = words;
     keep_ = keep;
+    by_slot_ = true;
     reps_.clear();
     count_.clear();
     give_back(head_);
@@ -314,6 +317,19 @@ class MatchGroups {
     return size;
   }
 
+  /// A key's home in the table. Keys begin with a vertex slot (generated
+  /// kernels write their vertices first), and matches come in the order of
+  /// the darts, near which their vertices' slots were given: homed by that
+  /// first word (kSpread positions per slot, the rest of the key choosing
+  /// within a window of kWindow), a build's probes walk the table nearly in
+  /// order instead of missing the caches on nearly every match, as a hash
+  /// of the whole key did (a quarter of the 10^6 quad cloth's set-up).
+  /// A key set whose first words cluster (a vertex in a thousand groups,
+  /// or keys whose first word is not a slot) makes long runs: the first
+  /// run longer than kLongRun turns this off for the table (by_slot_),
+  /// which is then filled again by the hash of the whole key. Where groups
+  /// sit in the table never changes which group a key finds, nor the
+  /// groups' order.
   std::size_t hash(const std::uint64_t* k) const {
     std::uint64_t h = 0x9e3779b97f4a7c15ull;
     for (int i = 0; i < words_; ++i) {
@@ -321,7 +337,26 @@ class MatchGroups {
       h *= 0xbf58476d1ce4e5b9ull;
       h ^= h >> 31;
     }
+    if (by_slot_) h = k[0] * kSpread + (h & (kWindow - 1));
     return static_cast<std::size_t>(h) & (table_.size() - 1);
+  }
+
+  /// Places group g (key k) at the end of its run. False when the run was
+  /// longer than kLongRun and the table turned to the hash of the whole key
+  /// (refilled with every group, g among them).
+  bool place(std::uint32_t g, const std::uint64_t* k) {
+    const std::size_t mask = table_.size() - 1;
+    std::size_t i = hash(k);
+    for (std::size_t run = 0; table_[i] != kNone; ++run) {
+      if (by_slot_ && run > kLongRun) {
+        by_slot_ = false;
+        refill_table(table_.size());
+        return false;
+      }
+      i = (i + 1) & mask;
+    }
+    table_[i] = g;
+    return true;
   }
 
   const std::uint64_t* key_of(std::uint32_t g) const {
@@ -363,13 +398,13 @@ class MatchGroups {
     grow_huge(table_, size, kNone);
   }
 
-  void grow_table() {
-    fresh_table(table_size_for(2 * reps_.size()));
+  void grow_table() { refill_table(table_size_for(2 * reps_.size())); }
+
+  /// A fresh table of `size` positions holding every group.
+  void refill_table(std::size_t size) {
+    fresh_table(size);
     for (std::uint32_t g = 0; g < reps_.size(); ++g) {
-      std::size_t i = hash(key_of(g));
-      while (table_[i] != kNone)
-        i = (i + 1) & (table_.size() - 1);
-      table_[i] = g;
+      if (!place(g, key_of(g))) return;  // refilled by the whole key's hash
     }
   }
 
@@ -393,10 +428,7 @@ class MatchGroups {
       if (2 * reps_.size() + 2 > table_.size()) {
         grow_table();  // places g too
       } else {
-        std::size_t i = hash(k);
-        while (table_[i] != kNone)
-          i = (i + 1) & (table_.size() - 1);
-        table_[i] = g;
+        place(g, k);
       }
       observer.inserted(g, m);
     }
@@ -467,7 +499,14 @@ class MatchGroups {
     }
   }
 
+  /// hash(): positions per value of a key's first word, the window the
+  /// rest of the key chooses in, the run that turns this off.
+  static constexpr std::uint64_t kSpread = 4;
+  static constexpr std::uint64_t kWindow = 16;
+  static constexpr std::size_t kLongRun = 64;
+
   int words_ = 0;
+  bool by_slot_ = true;  ///< homes by the key's first word (see hash)
   Keep keep_ = Keep::kEverything;
   std::vector<Match> reps_;
   std::vector<std::uint32_t> count_;
