@@ -189,6 +189,61 @@ TEST(Cells, ForEachCellOverDartsWithoutSlotsYet) {
   EXPECT_EQ(cells_of(map, Orbit{1, 2}), (std::vector<Dart>{a, c}));
 }
 
+// slotted_attachment trusts the attachment's count of darts holding a slot
+// instead of looking at every dart: that count must follow darts created
+// without slots, deleted, given slots, unsewn and sewn again, and compaction.
+TEST(Cells, SlottedAttachmentIsFoundExactlyWhenEveryLiveDartHasASlot) {
+  GMap map = assemble_gmap(make_grid(GridKind::Quad, 3, 3));
+  map.add_embedding<Real>("value", Orbit{1, 2}, MergePolicy::kSum, 1.0);
+  OrbitAttachment* att = map.attachment_of("value");
+  ASSERT_NE(att, nullptr);
+  auto every_live_dart_slotted = [&] {
+    bool all = true;
+    map.for_each_dart([&](Dart d) { all = all && att->slot(d) != kNoSlot; });
+    return all;
+  };
+  auto agree = [&](const char* when) {
+    EXPECT_EQ(map.slotted_attachment(Orbit{1, 2}) != nullptr, every_live_dart_slotted()) << when;
+  };
+  agree("after assembly");
+  EXPECT_NE(map.slotted_attachment(Orbit{1, 2}), nullptr);
+  const Dart loose = map.create_dart();
+  agree("after a dart made without a slot");
+  EXPECT_EQ(map.slotted_attachment(Orbit{1, 2}), nullptr);
+  map.delete_dart(loose);
+  agree("after deleting it");
+  EXPECT_NE(map.slotted_attachment(Orbit{1, 2}), nullptr);
+  const Dart a = map.create_dart();
+  map.create_dart();
+  agree("after two more");
+  map.assign_missing_slots(*att);
+  agree("after giving them slots");
+  EXPECT_NE(map.slotted_attachment(Orbit{1, 2}), nullptr);
+  map.delete_dart(a);
+  agree("after deleting a slotted dart");
+  for (const auto& other : map.attachments())  // the map's own embeddings too
+    map.assign_missing_slots(*other);
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<Dart> pick(0, static_cast<Dart>(map.capacity() - 1));
+  for (int k = 0; k < 20; ++k) {
+    const Dart d = pick(rng);
+    if (!map.is_alive(d) || map.is_free(d, 2)) continue;
+    const Dart e = map.alpha(d, 2);
+    map.unsew(d, 2);
+    agree("after an unsew");
+    if (k % 2 == 0) {
+      ASSERT_TRUE(map.sew(d, e, 2));
+      agree("after sewing it back");
+    }
+    const auto problems = map.check_validity(3);
+    ASSERT_TRUE(problems.empty()) << problems.front();
+  }
+  map.compact();
+  agree("after compaction");
+  EXPECT_NE(map.slotted_attachment(Orbit{1, 2}), nullptr);
+  EXPECT_TRUE(map.check_validity(3).empty());
+}
+
 TEST(Cells, ForEachCellGivesOneDartPerCell) {
   GMap map = assemble_gmap(make_grid(GridKind::Tri, 4, 3));
   std::set<std::set<Dart>> faces;

@@ -45,6 +45,10 @@ class OrbitAttachment {
   bool slot_alive(Slot s) const { return dart_count_[s] > 0; }
   std::uint32_t darts_in_slot(Slot s) const { return dart_count_[s]; }
   std::size_t live_slots() const { return dart_count_.size() - free_slots_.size(); }
+  /// Darts holding a slot (dead darts hold none: GMap::delete_dart releases
+  /// them), kept by assign and release so that GMap::slotted_attachment
+  /// knows without a pass over the darts whether every live dart has one.
+  std::size_t slotted_darts() const { return slotted_darts_; }
   /// Slots no dart owns (reused first by allocate_slot).
   const std::vector<Slot>& free_slots() const { return free_slots_; }
 
@@ -102,6 +106,7 @@ class OrbitAttachment {
     release(d);
     slot_of_dart_[d] = s;
     ++dart_count_[s];
+    ++slotted_darts_;
   }
 
   void release(Dart d) {
@@ -109,6 +114,7 @@ class OrbitAttachment {
     Slot old = slot_of_dart_[d];
     if (old == kNoSlot) return;
     slot_of_dart_[d] = kNoSlot;
+    --slotted_darts_;
     if (--dart_count_[old] == 0) free_slots_.push_back(old);
   }
 
@@ -149,6 +155,7 @@ class OrbitAttachment {
   std::vector<Slot> slot_of_dart_;
   std::vector<std::uint32_t> dart_count_;
   std::vector<Slot> free_slots_;
+  std::size_t slotted_darts_ = 0;
   std::vector<std::unique_ptr<ColumnBase>> columns_;
 };
 

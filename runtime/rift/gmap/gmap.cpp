@@ -241,12 +241,9 @@ const OrbitAttachment* GMap::slotted_attachment(Orbit o) const {
     if (att->orbit() != o || att->dormant()) continue;
     // A valid map gives every live dart a slot; a map being built dart by
     // dart may not have yet (sew and assign_missing_slots fill them in).
-    const Slot* slot = att->slot_data();
-    const std::size_t n = alive_.size();
-    bool complete = true;
-    for (std::size_t i = 0; i < n; ++i)
-      complete &= !alive_[i] || slot[i] != kNoSlot;
-    if (complete) return att.get();
+    // Only live darts hold slots, so counting them is enough (a pass over
+    // every dart here was 3 % of a 10^6-vertex set-up).
+    if (att->slotted_darts() == size()) return att.get();
   }
   return nullptr;
 }
@@ -434,6 +431,12 @@ std::vector<std::string> GMap::check_validity(std::size_t limit) const {
       }
     }
     if (!problems.empty()) break;  // the orbit sizes below need constant slots
+    if (att->slotted_darts() != size()) {
+      // Every live dart has a slot (above): the attachment's count of darts
+      // holding one, which slotted_attachment trusts, must say so.
+      problems.push_back(where() + "counts " + std::to_string(att->slotted_darts()) +
+                         " darts with a value, the map has " + std::to_string(size()));
+    }
     for (Slot s = 0; s < slots && !full(); ++s) {
       if (validity_count_[s] != att->darts_in_slot(s)) {
         problems.push_back(where() + "slot " + std::to_string(s) + " is used by " +

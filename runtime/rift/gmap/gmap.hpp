@@ -240,6 +240,10 @@ class GMap {
   /// by its smallest dart as at declaration. embedding() calls it: whoever
   /// holds a handle reads slots.
   void wake(OrbitAttachment& attachment) const;
+  /// An awake attachment of orbit o that gives every live dart a slot, or
+  /// null (none is awake, or darts made by hand have no slot yet). O(1):
+  /// for_each_cell asks it on every call.
+  const OrbitAttachment* slotted_attachment(Orbit o) const;
 
   // ---- validity and maintenance ------------------------------------------------------
 
@@ -265,10 +269,6 @@ class GMap {
   void split_embeddings_after_unsew(const std::vector<Dart>& pairs, int i);
   std::vector<Dart>& acquire_scratch() const;
   void release_scratch() const { --scratch_depth_; }
-  /// An attachment of orbit o that gives every live dart a slot, or null
-  /// (none is awake, or darts made by hand have no slot yet).
-  const OrbitAttachment* slotted_attachment(Orbit o) const;
-
   int dimension_;
   std::uint64_t identity_;
   std::uint64_t topology_version_ = 0;
