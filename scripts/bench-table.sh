@@ -116,8 +116,15 @@ else
 fi
 
 # Building a G-map against CGAL's Generalized_map (only built with CGAL's headers).
+# glibc's malloc returns large freed blocks to the system (mmap, trimming) or
+# keeps them, depending on the sizes it saw free before: the builds measured
+# after a 1000² build in the same process reused warm memory, the others
+# faulted in fresh pages at every build, which once made CGAL look 2.6 times
+# slower than it is (docs/performance.md, "The run of `fdad719`"). Every build
+# here reuses the heap's memory: the figures compare the two builds' work.
 if [ -x "$bench/rift_bench_gmap" ]; then
-  gbench gmap "$bench/rift_bench_gmap" --benchmark_filter='BM_(Rift|CgalBare)_Build/'
+  GLIBC_TUNABLES=glibc.malloc.trim_threshold=4294967296:glibc.malloc.mmap_threshold=4294967296 \
+    gbench gmap "$bench/rift_bench_gmap" --benchmark_filter='BM_(Rift|CgalBare)_Build/'
 else
   rm -f "$out/gmap.json"
 fi
