@@ -235,6 +235,13 @@ bool chooses_support_dart(const Kernel& k) {
   return !k.inter->tagged && !k.plan->body.forces.empty() && !vertex_fields(k).empty();
 }
 
+/// A kernel whose inits choose each orbit's support dart hands each choice to
+/// a rift::SupportSink (rift/sim/support_sink.hpp): the simulator's match
+/// cache then matches the orbit from it without choosing again.
+bool hands_out_supports(const Kernel& k) {
+  return chooses_support_dart(k) && !k.plan->inits.empty();
+}
+
 /// Render context of the force loop: stage arrays and column pointers, by slot.
 RenderContext loop_context(const Kernel& k) {
   RenderContext ctx;
@@ -354,7 +361,8 @@ void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
   const InteractionPlan& plan = *k.plan;
   const ir::Body& b = plan.body;
   const std::string user = std::string("interaction '") + k.inter->name.text + "'";
-  w.open("void " + k.cls + "::initialise(rift::GMap& g) {");
+  w.open("void " + k.cls + "::initialise(rift::GMap& g" +
+         (hands_out_supports(k) ? ", rift::SupportSink sink" : "") + ") {");
   w.line(model.pack_namespace + "::declare_embeddings(g);");
   for (const std::string& name : plan.embeddings) {
     // Asking for a column wakes its orbit's attachment: not when nothing is stored.
@@ -401,6 +409,7 @@ void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
     if (chooses_support_dart(k)) {
       w.open("g.for_each_cell(kSupport, [&](rift::Dart cell) {");
       w.line("const rift::Dart support = support_dart(g, cell);");
+      if (hands_out_supports(k) && first_pass) w.line("if (sink) sink(support);");
     } else {
       w.open("g.for_each_cell(kSupport, [&](rift::Dart support) {");
     }
@@ -1146,7 +1155,12 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
   w.line("/// Declares the pack's embeddings the map lacks, binds them" +
          std::string(inter.tagged ? ", tags the first dart of every support orbit" : "") +
          " and runs the interaction's inits.");
-  w.line("void initialise(rift::GMap& g);");
+  if (hands_out_supports(k)) {
+    w.line("/// sink(d), when given, with each orbit's support dart as the inits choose it.");
+    w.line("void initialise(rift::GMap& g, rift::SupportSink sink = {});");
+  } else {
+    w.line("void initialise(rift::GMap& g);");
+  }
   if (!k.store_only_embeddings.empty()) {
     w.line("/// Before initialise: false when nothing reads the stored forces, whose");
     w.line("/// embeddings are then left unbound.");

@@ -109,6 +109,7 @@
 #include "rift/sim/match_cache.hpp"
 #include "rift/sim/match_groups.hpp"
 #include "rift/sim/scatter_colouring.hpp"
+#include "rift/sim/support_sink.hpp"
 
 namespace rift {
 
@@ -145,22 +146,29 @@ class CachedInteraction final : public ForceModel {
     }
     matches_given_back_ = false;
     matched_ = 0;
-    kernel_.initialise(map);
-    if constexpr (kGroupable) {
-      grouped_ = group_requested_ && Kernel::kGroupKey <= MatchGroups<Match>::kMaxKey;
-    }
     give_back(stored_);
     if (keeps_stored()) reserve_huge(stored_, map.capacity());
     cache_.keep_owners(rewrites_);
     // The cache inserts exactly the matches this returns true for, in order.
-    cache_.build(
-        map, Kernel::kSupport,
-        [&](const GMap& m, Dart d, typename Kernel::Match& out) {
-          if (!match_one(m, d, out)) return false;
-          if (keeps_stored()) stored_.push_back(pending_);
-          return true;
-        },
-        support_chooser());
+    auto match = [&](const GMap& m, Dart d, typename Kernel::Match& out) {
+      if (!match_one(m, d, out)) return false;
+      if (keeps_stored()) stored_.push_back(pending_);
+      return true;
+    };
+    if constexpr (requires(GMap & g) { kernel_.initialise(g, SupportSink{}); }) {
+      // The inits choose every orbit's support dart (support_sink.hpp): the
+      // cache matches each orbit from it as they go. A match reads slots,
+      // which the inits do not change, never the values they write.
+      cache_.start_build(map);
+      auto build_from = [&](Dart support) { cache_.build_from(map, support, match); };
+      kernel_.initialise(map, SupportSink::to(build_from));
+    } else {
+      kernel_.initialise(map);
+      cache_.build(map, Kernel::kSupport, match, support_chooser());
+    }
+    if constexpr (kGroupable) {
+      grouped_ = group_requested_ && Kernel::kGroupKey <= MatchGroups<Match>::kMaxKey;
+    }
     // A map that is rewritten gets its owner index now rather than at the
     // first rewrite: that tear then costs what it touches, like every other,
     // not a pass over the whole map (issue 12, deliverable 1).

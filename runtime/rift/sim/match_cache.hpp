@@ -75,6 +75,15 @@ class MatchCache {
   /// owner afterwards: rematch asks choose only for an orbit without one.
   template <class MatchFn, class ChooseFn>
   void build(const GMap& map, Orbit support, MatchFn&& match, ChooseFn&& choose) {
+    start_build(map);
+    map.for_each_cell(support, [&](Dart d) { build_from(map, choose(map, d), match); });
+  }
+
+  /// build in two halves, for a caller that walks the support orbits itself
+  /// (CachedInteraction, during its kernel's inits): start_build empties the
+  /// cache, then build_from matches each orbit from its owner, the orbits in
+  /// the order of GMap::for_each_cell.
+  void start_build(const GMap& map) {
     matches_.clear();
     owners_.clear();
     // At most one match per dart: reserved once (huge pages for a large
@@ -87,11 +96,11 @@ class MatchCache {
     // earlier index is given back.
     give_back(entry_of_dart_);
     indexed_ = false;
-    map.for_each_cell(support, [&](Dart d) {
-      const Dart owner = choose(map, d);
-      Match m{};
-      if (match(map, owner, m)) insert(owner, m);
-    });
+  }
+  template <class MatchFn>
+  void build_from(const GMap& map, Dart owner, MatchFn&& match) {
+    Match m{};
+    if (match(map, owner, m)) insert(owner, m);
   }
 
   /// The owner of a support orbit when nothing chooses: the dart at hand.

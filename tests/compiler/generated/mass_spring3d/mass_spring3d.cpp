@@ -174,7 +174,7 @@ bool StretchKernel::find(const rift::GMap& g, rift::Dart support, rift::Dart* da
   return true;
 }
 
-void StretchKernel::initialise(rift::GMap& g) {
+void StretchKernel::initialise(rift::GMap& g, rift::SupportSink sink) {
   rift::packs::mass_spring3d::declare_embeddings(g);
   if (store_) e_f_stretch = require_embedding<rift::Vec3>(g, "f_stretch", "interaction 'stretch'");
   e_position = require_embedding<rift::Vec3>(g, "position", "interaction 'stretch'");
@@ -183,6 +183,7 @@ void StretchKernel::initialise(rift::GMap& g) {
   // init stretch_k(a), stretch_rest(a), once per match
   g.for_each_cell(kSupport, [&](rift::Dart cell) {
     const rift::Dart support = support_dart(g, cell);
+    if (sink) sink(support);
     rift::Dart darts[2];
     if (!find(g, support, darts)) return;
     const rift::Dart d_a = darts[0];

@@ -61,7 +61,8 @@ class StretchKernel {
   const std::string& name() const { return name_; }
   const StretchParams& params() const { return p_; }
   /// Declares the pack's embeddings the map lacks, binds them and runs the interaction's inits.
-  void initialise(rift::GMap& g);
+  /// sink(d), when given, with each orbit's support dart as the inits choose it.
+  void initialise(rift::GMap& g, rift::SupportSink sink = {});
   /// Before initialise: false when nothing reads the stored forces, whose
   /// embeddings are then left unbound.
   void set_store_forces(bool on) { store_ = on; }
