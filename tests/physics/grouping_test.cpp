@@ -501,6 +501,24 @@ TEST(Grouping, KeysSharingTheirFirstWordGroupAsAPlainSearch) {
   for (std::uint32_t e = 0; e < hub.size(); ++e)
     ASSERT_EQ(groups.group_of(e), expected[e]) << "entry " << e;
 
+  // Every first word heading 24 keys, none shared (a hexahedral block's face
+  // diagonals): told how many first words there are, the table gives each
+  // enough room to keep homing by them, for as many groups as matches.
+  std::vector<Pair> fan;
+  for (std::uint32_t v = 0; v < 2000; ++v) {
+    for (std::uint32_t j = 0; j < 24; ++j)
+      fan.push_back({v, 100000 + 24 * v + j});
+  }
+  MatchGroups<Pair> fanned;
+  fanned.build(fan, 2, key, none, MatchGroups<Pair>::Keep::kEverything, 2000);
+  EXPECT_TRUE(fanned.homes_by_first_word());
+  ASSERT_EQ(fanned.check(fan, key), "");
+  EXPECT_EQ(fanned.size(), fan.size());
+  MatchGroups<Pair> unsized;  // the same keys, the first words' count unknown
+  unsized.build(fan, 2, key, none);
+  EXPECT_FALSE(unsized.homes_by_first_word());
+  ASSERT_EQ(unsized.check(fan, key), "");
+
   // Spread keys first (the table homes by slot), then a tear adds a hub.
   std::vector<Pair> ms;
   for (std::uint32_t i = 0; i < 2000; ++i)

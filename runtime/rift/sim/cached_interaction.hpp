@@ -105,6 +105,7 @@
 
 #include "rift/core/interrupt.hpp"
 #include "rift/core/parallel.hpp"
+#include "rift/core/state_embeddings.hpp"
 #include "rift/sim/force_model.hpp"
 #include "rift/sim/match_cache.hpp"
 #include "rift/sim/match_groups.hpp"
@@ -179,7 +180,10 @@ class CachedInteraction final : public ForceModel {
         using Keep = typename MatchGroups<Match>::Keep;
         const Keep keep =
             rewrites_ ? Keep::kEverything : (store_forces_ ? Keep::kMembers : Keep::kCounts);
-        groups_.build(cache_.matches(), Kernel::kGroupKey, key_fn(), none, keep);
+        // A generated key's first word is a vertex slot (match_groups.hpp).
+        const OrbitAttachment* vertices = map.attachment_of(state::kPosition);
+        groups_.build(cache_.matches(), Kernel::kGroupKey, key_fn(), none, keep,
+                      vertices && !vertices->dormant() ? vertices->slot_capacity() : 0);
         // Nothing to share (each element once, e.g. finite elements): the
         // plain pass, without the groups' upkeep.
         grouped_ = groups_.size() < cache_.size();

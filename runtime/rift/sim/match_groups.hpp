@@ -120,8 +120,11 @@ class MatchGroups {
   /// Groups `matches` (every entry of the cache). key(const Match&,
   /// std::uint64_t* out) writes `words` words.
   template <class KeyFn, class Observer>
+  ///
+  /// first_words: the number of values a key's first word takes (the vertex
+  /// slots, for generated kernels), or 0 when unknown; see hash().
   void build(std::span<const Match> matches, int words, KeyFn&& key, Observer& observer,
-             Keep keep = Keep::kEverything) {
+             Keep keep = Keep::kEverything, std::size_t first_words = 0) {
     words_ = words;
     keep_ = keep;
     by_slot_ = true;
@@ -144,6 +147,15 @@ class MatchGroups {
     // edge's two faces) rather than grown by rehashing; add still grows it
     // for more. Group ids come in order of first match whatever the table's
     // size, so the groups are the same.
+    // As many positions per first word as a table for as many groups as
+    // matches has for each (the table itself starts at half that and may
+    // wrap around): a vertex that is the first word of many keys (a
+    // hexahedral block's vertex heads up to 24 face diagonals, none shared)
+    // then keeps its run to itself, however many groups there turn out to be.
+    spread_ = first_words == 0 ? kSpread
+                               : std::clamp<std::uint64_t>(
+                                     std::bit_floor(table_size_for(matches.size()) / first_words),
+                                     1, kMaxSpread);
     fresh_table(table_size_for(matches.size() / 2));
     // At 10^6 vertices the table and the keys are far larger than the caches
     // and a match's probe reads both at random: nearly all of the grouping's
@@ -320,7 +332,7 @@ class MatchGroups {
   /// A key's home in the table. Keys begin with a vertex slot (generated
   /// kernels write their vertices first), and matches come in the order of
   /// the darts, near which their vertices' slots were given: homed by that
-  /// first word (kSpread positions per slot, the rest of the key choosing
+  /// first word (spread_ positions per slot, the rest of the key choosing
   /// within a window of 2^kWindowBits), a build's probes walk the table nearly in
   /// order instead of missing the caches on nearly every match, as a hash
   /// of the whole key did (a quarter of the 10^6 quad cloth's set-up).
@@ -339,7 +351,7 @@ class MatchGroups {
       for (int i = 1; i < words_; ++i)
         rest ^= k[i] + static_cast<std::uint64_t>(i);
       const std::uint64_t within = (rest * 0x9e3779b97f4a7c15ull) >> (64 - kWindowBits);
-      return static_cast<std::size_t>(k[0] * kSpread + within) & (table_.size() - 1);
+      return static_cast<std::size_t>(k[0] * spread_ + within) & (table_.size() - 1);
     }
     std::uint64_t h = 0x9e3779b97f4a7c15ull;
     for (int i = 0; i < words_; ++i) {
@@ -508,14 +520,17 @@ class MatchGroups {
     }
   }
 
-  /// hash(): positions per value of a key's first word, the window the
-  /// rest of the key chooses in, the run that turns this off.
+  /// hash(): positions per value of a key's first word (when build is not
+  /// told how many values it takes, and at most), the window the rest of
+  /// the key chooses in, the run that turns this off.
   static constexpr std::uint64_t kSpread = 4;
+  static constexpr std::uint64_t kMaxSpread = 64;
   static constexpr int kWindowBits = 4;
   static constexpr std::size_t kLongRun = 64;
 
   int words_ = 0;
-  bool by_slot_ = true;  ///< homes by the key's first word (see hash)
+  bool by_slot_ = true;             ///< homes by the key's first word (see hash)
+  std::uint64_t spread_ = kSpread;  ///< positions per value of a key's first word
   Keep keep_ = Keep::kEverything;
   std::vector<Match> reps_;
   std::vector<std::uint32_t> count_;
