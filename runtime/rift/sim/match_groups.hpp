@@ -118,11 +118,10 @@ class MatchGroups {
   }
 
   /// Groups `matches` (every entry of the cache). key(const Match&,
-  /// std::uint64_t* out) writes `words` words.
+  /// std::uint64_t* out) writes `words` words. first_words: the number of
+  /// values a key's first word takes (the vertex slots, for generated
+  /// kernels), or 0 when unknown; see hash().
   template <class KeyFn, class Observer>
-  ///
-  /// first_words: the number of values a key's first word takes (the vertex
-  /// slots, for generated kernels), or 0 when unknown; see hash().
   void build(std::span<const Match> matches, int words, KeyFn&& key, Observer& observer,
              Keep keep = Keep::kEverything, std::size_t first_words = 0) {
     words_ = words;
