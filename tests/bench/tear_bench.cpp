@@ -9,6 +9,8 @@
 // count. A tear should cost what it touches: the same at 10x10 and 1000x1000.
 #include <benchmark/benchmark.h>
 
+#include <sys/resource.h>
+
 #include <ctime>
 #include <map>
 
@@ -24,6 +26,14 @@ double thread_seconds() {
   timespec t{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// Minor page faults of this thread so far: memory a tear touches for the
+// first time (new darts, slots and matches growing into reserved pages).
+long thread_minor_faults() {
+  rusage u{};
+  getrusage(RUSAGE_THREAD, &u);
+  return u.ru_minflt;
 }
 
 struct TearingCloth {
@@ -65,6 +75,9 @@ void BM_OneTear(benchmark::State& state, rift::GridKind kind) {
   std::size_t tears = 0;
   std::size_t touched_darts = 0;
   double total_spent = 0;
+  long faults = 0;
+  double faulting_spent = 0;
+  std::size_t faulting_tears = 0;
   for (auto _ : state) {
     double spent = 0;
     for (;;) {
@@ -72,10 +85,18 @@ void BM_OneTear(benchmark::State& state, rift::GridKind kind) {
       const rift::TearCandidate& cand = c.candidates[c.next++];
       if (!c.sim->map().is_alive(cand.at)) continue;
       touched.clear();
+      const long f0 = thread_minor_faults();
       const double t0 = thread_seconds();
       const bool applied = c.sim->criteria()[0]->apply(c.sim->map(), cand, touched);
       if (applied) c.sim->on_topology_changed(touched);
-      spent += thread_seconds() - t0;
+      const double dt = thread_seconds() - t0;
+      const long df = thread_minor_faults() - f0;
+      spent += dt;
+      faults += df;
+      if (df > 0) {
+        faulting_spent += dt;
+        ++faulting_tears;
+      }
       if (applied) touched_darts += touched.size();
       if (applied) break;
     }
@@ -93,6 +114,11 @@ void BM_OneTear(benchmark::State& state, rift::GridKind kind) {
   // (its later tears touch 40 to 70 darts, against 46 on the small cloths,
   // rebuilt when their candidates run out): the time per touched dart
   // compares the sizes at equal work.
+  state.counters["faults_per_tear"] =
+      static_cast<double>(faults) / static_cast<double>(std::max<std::size_t>(tears, 1));
+  state.counters["faulting_tears_share"] =
+      static_cast<double>(faulting_tears) / static_cast<double>(std::max<std::size_t>(tears, 1));
+  state.counters["faulting_time_share"] = faulting_spent / std::max(total_spent, 1e-300);
   state.counters["ns_per_touched_dart"] =
       1e9 * total_spent / static_cast<double>(std::max<std::size_t>(touched_darts, 1));
 }

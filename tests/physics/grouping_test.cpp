@@ -8,6 +8,7 @@
 
 #include "physics_setup.hpp"
 #include "rift/core/parallel.hpp"
+#include "rift/core/prefetch.hpp"
 #include "rift/sim/match_groups.hpp"
 #include "same_bits.hpp"
 
@@ -289,6 +290,88 @@ TEST(Grouping, GroupsFollowTears) {
     }
     EXPECT_GT(sim->tears(), 0u);
   }
+}
+
+// A re-match on a map of kPrefetchFromDarts darts or more first asks for the
+// entries, groups and slots it will read (rift/core/prefetch.hpp): the tears
+// and cuts of such a cloth must leave the same groups, colouring and forces as the
+// small cloths of GroupsFollowTears, and a valid map.
+TEST(Grouping, TearsOfAMapPastThePrefetchSizeKeepGroupsAndForces) {
+  SimSetup setup;
+  setup.interactions = paper_cloth_springs();
+  setup.criteria = {{"spring_split", {{"threshold", 1e-9}}}};
+  auto sim = simulate(assemble_gmap(make_grid(GridKind::Quad, 260, 260)), setup);
+  ASSERT_GE(sim->map().capacity(), kPrefetchFromDarts) << "the cloth no longer takes that path";
+  move_vertices(*sim, [](const Vec3& x) { return Vec3(1.1 * x.x(), 1.05 * x.y(), x.z()); });
+  const ForceInput in{sim->position().values().data(), sim->velocity().values().data()};
+  std::vector<Vec3> f(sim->position().values().size(), Vec3::Zero());
+  for (const auto& m : sim->force_models())
+    m->add_forces(in, f.data(), true);
+  std::vector<TearCandidate> candidates;
+  sim->criteria()[0]->collect(sim->map(), candidates);
+  ASSERT_GT(candidates.size(), 1000u);
+  std::size_t tears = 0;
+  std::vector<Dart> touched;
+  // Spread over the cloth, as the tear benchmark does.
+  for (std::size_t k = 0; k < 60; ++k) {
+    const TearCandidate& c = candidates[(k * 7919) % candidates.size()];
+    if (!sim->map().is_alive(c.at)) continue;
+    touched.clear();
+    if (!sim->criteria()[0]->apply(sim->map(), c, touched)) continue;
+    sim->on_topology_changed(touched);
+    ++tears;
+  }
+  ASSERT_GT(tears, 30u);
+  // Cuts along random interior edges too: their matches are dropped, which
+  // moves the last entries and groups into the holes.
+  GMap& map = sim->map();
+  std::mt19937 rng(7);
+  for (int c = 0; c < 40; ++c) {
+    Dart d = kNoDart;
+    while (d == kNoDart) {
+      const Dart x = static_cast<Dart>(rng() % map.capacity());
+      if (map.is_alive(x) && !map.is_free(x, 2)) d = x;
+    }
+    touched.clear();
+    map.for_each_in_orbit(d, Orbit::cell(1, 2), [&](Dart x) { touched.push_back(x); });
+    map.unsew(d, 2);
+    sim->on_topology_changed(touched);
+  }
+  ASSERT_TRUE(sim->map().is_valid());
+  const ForceInput after{sim->position().values().data(), sim->velocity().values().data()};
+  std::vector<Vec3> fg(sim->position().values().size(), Vec3::Zero());
+  std::vector<Vec3> fp = fg;
+  for (const auto& model : sim->force_models()) {
+    model->add_forces(after, fg.data(), false);
+    if (auto* s = dynamic_cast<Stretch2d*>(model.get())) {
+      ASSERT_EQ(s->check_groups(), "");
+      const auto reps = s->groups().representatives();
+      ASSERT_EQ(s->colouring().check(
+                    reps.size(), 2,
+                    [&](std::size_t g, Slot* out) { s->kernel().force_targets(reps[g], out); }),
+                "");
+      for (const auto& m : s->cache().matches()) {
+        Vec3 t[2];
+        s->kernel().evaluate_terms(m, after, t);
+        fp[m.vertex_a] += t[0];
+        fp[m.vertex_b] += t[1];
+      }
+    } else if (auto* b = dynamic_cast<Bend2d*>(model.get())) {
+      ASSERT_EQ(b->check_groups(), "");
+      for (const auto& m : b->cache().matches()) {
+        Vec3 t[2];
+        b->kernel().evaluate_terms(m, after, t);
+        fp[m.vertex_l] += t[0];
+        fp[m.vertex_r] += t[1];
+      }
+    } else {
+      model->add_forces(after, fp.data(), false);  // shear: no two faces share a diagonal
+    }
+  }
+  const Real tolerance = 1e-12 * largest(fp);
+  ASSERT_GT(tolerance, 0);
+  for (std::size_t s = 0; s < fp.size(); ++s)
+    ASSERT_LE((fg[s] - fp[s]).norm(), tolerance) << "slot " << s;
 }
 
 // The inits choose each support orbit's dart and hand it to the match cache

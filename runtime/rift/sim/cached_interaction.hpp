@@ -552,6 +552,14 @@ class CachedInteraction final : public ForceModel {
       inner.inserted(e, m);
       if (self.keeps_stored()) self.stored_.push_back(self.pending_);
     }
+    // MatchCache::rematch's hints (see prefetch_entries there).
+    void prefetch_entry(std::uint32_t e) const {
+      if (self.keeps_stored()) prefetch(&self.stored_[e]);
+      if constexpr (requires { inner.prefetch_entry(e); }) inner.prefetch_entry(e);
+    }
+    void prefetch_group(std::uint32_t e) const {
+      if constexpr (requires { inner.prefetch_group(e); }) inner.prefetch_group(e);
+    }
   };
 
   // Follows the match cache's changes in the groups, and the groups' in the colouring.
@@ -578,6 +586,8 @@ class CachedInteraction final : public ForceModel {
       Colouring c{self};
       self.groups_.inserted(e, m, self.key_fn(), c);
     }
+    void prefetch_entry(std::uint32_t e) const { self.groups_.prefetch_entry(e); }
+    void prefetch_group(std::uint32_t e) const { self.groups_.prefetch_group_of(e); }
   };
 
   // The coloured scatter over groups: each group's representative is

@@ -41,6 +41,7 @@
 #include <vector>
 
 #include "rift/core/huge_pages.hpp"
+#include "rift/core/prefetch.hpp"
 #include "rift/core/types.hpp"
 #include "rift/embed/value.hpp"
 
@@ -216,6 +217,24 @@ class MatchGroups {
     }
     group_of_.pop_back();
     next_.pop_back();
+  }
+
+  /// Hints for a caller about to announce changes of entry e (a re-match
+  /// of a large map: MatchCache::prefetch_entries): its links, then its
+  /// group's key, representative and count. Nothing is read but group_of.
+  void prefetch_entry(std::uint32_t e) const {
+    if (keep_ != Keep::kEverything || e >= group_of_.size()) return;
+    prefetch(&group_of_[e]);
+    prefetch(&next_[e]);
+  }
+  void prefetch_group_of(std::uint32_t e) const {
+    if (keep_ != Keep::kEverything || e >= group_of_.size()) return;
+    const std::uint32_t g = group_of_[e];
+    if (g == kNone) return;
+    prefetch(key_of(g));
+    prefetch(&reps_[g]);
+    prefetch(&count_[g]);
+    prefetch(&head_[g]);
   }
 
   /// Entry e is matched again: `before` becomes `after`.
