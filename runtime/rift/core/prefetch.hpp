@@ -13,9 +13,10 @@
 
 namespace rift {
 
-/// Maps with fewer darts keep their per-dart arrays (4 bytes a dart each) in
-/// the caches, where a pass of hints costs more than it saves: at 10x10 the
-/// tear's hints made it 6 % slower, at 1000x1000 6 % faster (issue 12).
+/// Maps with fewer darts keep their per-dart arrays (4 bytes a dart each, 2 MiB
+/// here) near the caches, where a pass of hints costs more than it saves: a
+/// 10x10 cloth's tear took 6 % longer with them, a 1000x1000 cloth's 0.80x
+/// the time (docs/performance.md, "One tear as the loop pays it").
 inline constexpr std::size_t kPrefetchFromDarts = std::size_t{1} << 19;
 
 inline void prefetch(const void* address) {

@@ -11,11 +11,13 @@ void update_embedding_slots(GMap& g, const Dart* darts, std::size_t count, Scrat
   // Every awake attachment's slots of the rewritten darts, asked for before
   // the first is read: on a large map each attachment's slot array is a miss
   // per dart, and the loops below would take them one after the other.
-  for (const auto& attachment : g.attachments()) {
-    if (attachment->dormant() || g.capacity() < kPrefetchFromDarts) continue;
-    const Slot* slots = attachment->slot_data();
-    for (std::size_t k = 0; k < count; ++k)
-      prefetch(slots + darts[k]);
+  if (g.capacity() >= kPrefetchFromDarts) {
+    for (const auto& attachment : g.attachments()) {
+      if (attachment->dormant()) continue;
+      const Slot* slots = attachment->slot_data();
+      for (std::size_t k = 0; k < count; ++k)
+        prefetch(slots + darts[k]);
+    }
   }
   for (const auto& attachment : g.attachments()) {
     OrbitAttachment& att = *attachment;
