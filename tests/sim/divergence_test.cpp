@@ -10,6 +10,7 @@
 #include <limits>
 #include <string>
 
+#include "rift/core/parallel.hpp"
 #include "rift/core/state_embeddings.hpp"
 #include "rift/mesh/assemble.hpp"
 #include "rift/mesh/generators.hpp"
@@ -161,6 +162,50 @@ TEST(Divergence, WithoutAnEnergyScaleTheSpeedCheckStillHolds) {
         << e.what();
     EXPECT_TRUE(names_vertex(e.what(), sim, 5)) << e.what();
   }
+}
+
+TEST(Divergence, ManyBlocksNameTheFirstVertexInSlotOrderOnAnyThreads) {
+  // The check runs in parallel blocks of kParallelBlock vertices; combined in
+  // block order, it names the vertex the serial pass named (the first in slot
+  // order) whatever the thread count.
+  for (const int threads : {1, 2, 8}) {
+    set_thread_count(threads);
+    Simulation sim = springs(IntegratorKind::kRK4, 1e-3, 0, Vec3::Zero(), 99);
+    sim.step();
+    const std::size_t n = sim.velocity().values().size();
+    ASSERT_GT(n, 8 * kParallelBlock) << "too few blocks to spread";
+    const Real across = sim.divergence().length_scale();
+    // Two vertices as fast, in different blocks: the lower slot is named.
+    const auto first = static_cast<Slot>(3 * kParallelBlock + 17);
+    const auto later = static_cast<Slot>(7 * kParallelBlock + 5);
+    sim.velocity().values()[later] = Vec3(0, 3 * across / 1e-3, 0);
+    sim.velocity().values()[first] = Vec3(0, 3 * across / 1e-3, 0);
+    try {
+      sim.step();
+      FAIL() << threads << " threads: two vertices crossed the body in one step";
+    } catch (const SimulationError& e) {
+      EXPECT_TRUE(names_vertex(e.what(), sim, first)) << threads << " threads: " << e.what();
+    }
+    // Non-finite velocities in two blocks: the first in slot order is named.
+    Simulation broken = springs(IntegratorKind::kRK4, 1e-3, 0, Vec3::Zero(), 99);
+    broken.step();
+    broken.velocity().values()[later] = Vec3(std::nan(""), 0, 0);
+    broken.velocity().values()[first + kParallelBlock] = Vec3(std::nan(""), 0, 0);
+    try {
+      broken.step();
+      FAIL() << threads << " threads: a NaN velocity went through";
+    } catch (const SimulationError& e) {
+      Slot bad = kNoSlot;
+      const auto& v = broken.velocity().values();
+      const auto& x = broken.position().values();
+      for (Slot s = 0; s < v.size() && bad == kNoSlot; ++s) {
+        if (!v[s].allFinite() || !x[s].allFinite()) bad = s;
+      }
+      ASSERT_NE(bad, kNoSlot);
+      EXPECT_TRUE(names_vertex(e.what(), broken, bad)) << threads << " threads: " << e.what();
+    }
+  }
+  set_thread_count(0);
 }
 
 TEST(Divergence, FactorZeroKeepsOnlyTheFiniteCheck) {

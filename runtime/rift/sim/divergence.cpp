@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "rift/core/parallel.hpp"
 #include "rift/core/state_embeddings.hpp"
 #include "rift/sim/simulation.hpp"
 
@@ -118,26 +119,52 @@ void DivergenceMonitor::check(const Simulation& sim) {
   const std::vector<Real>& w = sim.inverse_masses();
   const std::vector<Vec3>& f = sim.internal_forces();
   const Real dt = sim.settings().dt;
-  // One flat pass: the kinetic energy, the fastest and the most energetic
-  // free vertex, and the work of prescribed vertices (inverse mass 0, moving).
+  // One flat pass over the vertices, in parallel blocks: the kinetic energy,
+  // the fastest and the most energetic free vertex, and the work of
+  // prescribed vertices (inverse mass 0, moving). Each block keeps its own
+  // partial results; they are combined in block order below, so the outcome
+  // does not depend on the thread count. On one thread this pass was 4 % of
+  // an RK4 step of the 10⁶-vertex cloth, the step's last serial part.
+  const std::size_t n = x.size();
+  const std::size_t blocks = (n + kParallelBlock - 1) / kParallelBlock;
+  if (partials_.size() < blocks) partials_.resize(blocks);
+  auto scan = [&](std::size_t first, std::size_t last) {
+    Partial p;
+    for (std::size_t k = first; k < last; ++k) {
+      const Slot s = static_cast<Slot>(k);
+      if (!att.slot_alive(s)) continue;
+      if (!x[s].allFinite() || !v[s].allFinite()) {
+        p.bad = s;
+        break;
+      }
+      const Real speed2 = v[s].squaredNorm();
+      if (s < w.size() && w[s] > 0) {
+        const Real e = 0.5 * m[s] * speed2;
+        p.kinetic += e;
+        if (e > p.top_energy) p.top_energy = e, p.most_energetic = s;
+        if (speed2 > p.top_speed2) p.top_speed2 = speed2, p.fastest = s;
+      } else if (speed2 > 0) {
+        if (s < f.size()) p.work += std::abs(f[s].dot(v[s])) * dt;
+        p.constrained_speed = std::max(p.constrained_speed, std::sqrt(speed2));
+      }
+    }
+    partials_[first / kParallelBlock] = p;
+  };
+  parallel_blocks(n, kParallelBlock, scan);
+  // In block order, with the serial pass's ties: the first slot wins.
   Real kinetic = 0, top_speed = 0, top_energy = -1;
   Slot fastest = kNoSlot, most_energetic = kNoSlot, bad = kNoSlot;
-  for (Slot s = 0; s < x.size(); ++s) {
-    if (!att.slot_alive(s)) continue;
-    if (!x[s].allFinite() || !v[s].allFinite()) {
-      bad = s;
+  for (std::size_t b = 0; b < blocks && bad == kNoSlot; ++b) {
+    const Partial& p = partials_[b];
+    if (p.bad != kNoSlot) {
+      bad = p.bad;
       break;
     }
-    const Real speed2 = v[s].squaredNorm();
-    if (s < w.size() && w[s] > 0) {
-      const Real e = 0.5 * m[s] * speed2;
-      kinetic += e;
-      if (e > top_energy) top_energy = e, most_energetic = s;
-      if (speed2 > top_speed) top_speed = speed2, fastest = s;
-    } else if (speed2 > 0) {
-      if (s < f.size()) constrained_work_ += std::abs(f[s].dot(v[s])) * dt;
-      constrained_speed_ = std::max(constrained_speed_, std::sqrt(speed2));
-    }
+    kinetic += p.kinetic;
+    if (p.top_energy > top_energy) top_energy = p.top_energy, most_energetic = p.most_energetic;
+    if (p.top_speed2 > top_speed) top_speed = p.top_speed2, fastest = p.fastest;
+    constrained_work_ += p.work;
+    constrained_speed_ = std::max(constrained_speed_, p.constrained_speed);
   }
   top_speed = std::sqrt(top_speed);
   // Formatted only on failure: a passing check allocates nothing.

@@ -21,6 +21,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "rift/core/types.hpp"
 
@@ -44,9 +45,17 @@ class DivergenceMonitor {
   Real length_scale() const { return length_; }
 
  private:
+  /// One block's share of check(): kept here so that a warm check
+  /// allocates nothing.
+  struct Partial {
+    Real kinetic = 0, top_energy = -1, top_speed2 = 0, work = 0, constrained_speed = 0;
+    Slot most_energetic = kNoSlot, fastest = kNoSlot, bad = kNoSlot;
+  };
+
   bool started_ = false;
   Real free_mass_ = 0, length_ = 0, initial_speed_ = 0, initial_energy_ = 0;
   Real constrained_work_ = 0, constrained_speed_ = 0;
+  std::vector<Partial> partials_;
 };
 
 }  // namespace rift
