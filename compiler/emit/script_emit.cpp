@@ -1,7 +1,8 @@
 // A script becomes one function with the signature of a rule function, so that
 // criteria and other scripts call it like a rule. Its statements run in order
 // on the current map: a `for each` first lists one dart per sub-orbit (on the
-// map as it is when the statement starts), then, per dart still alive, checks
+// map as it is when the statement starts, in a buffer the thread keeps, so
+// that a warm rewrite allocates nothing), then, per dart still alive, checks
 // its `where` and sets the embedding or applies the rule. Every application is
 // a generated rule function, which matches again and keeps every check.
 #include "emit/emit_context.hpp"
@@ -20,7 +21,7 @@ void open_each(Writer& w, const lower::ScriptStep& st, const ir::Body& body,
   } else {
     const std::string var = ctx.dart(st.each_var);
     w.open("{");
-    w.line("std::vector<rift::Dart> each;");
+    w.line("rift::generated::DartList each;");
     w.line("g.for_each_sub_orbit(" + render_place(st.each_dart, ctx) + ", " +
            orbit_code(st.each_outer) + ", " + orbit_code(st.each_sub) +
            ", [&](rift::Dart x) { each.push_back(x); });");

@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include "allocation_watch.hpp"
+#include "criteria3d.hpp"
 #include "physics_setup.hpp"
+#include "rift/core/huge_pages.hpp"
 
 namespace rift::physics_test {
 namespace {
@@ -67,6 +69,90 @@ TEST(NoAllocation, Bdf2StepsOfTheClothAllocateNothing) {
 TEST(NoAllocation, EvaluatingACriterionThatDoesNotHoldAllocatesNothing) {
   EXPECT_EQ(allocations_during_steps(GridKind::Quad, {{"global_edge", {{"threshold", 1e3}}}}, 100),
             0);
+}
+
+// A tear as the loop pays it (the criterion's rewrite, then the masses and
+// the re-match around the touched darts) on a cloth whose arrays all have
+// headroom: once warm, it appends in place and allocates nothing.
+/// The physics packs and both tearing packs.
+const PackRegistry& tearing_packs() {
+  static const PackRegistry registry = [] {
+    PackRegistry r;
+    rift_register_pack_mass_spring2d(r);
+    rift_register_pack_mass_spring3d(r);
+    rift_register_pack_criteria2d(r);
+    rift_register_pack_criteria3d(r);
+    return r;
+  }();
+  return registry;
+}
+
+long allocations_of_warm_tears(GMap map, const std::vector<Use>& interactions, int* tears) {
+  SimSetup setup;
+  setup.registry = &tearing_packs();
+  setup.interactions = interactions;
+  setup.criteria = {{"spring_split", {{"threshold", 1e-9}}}};
+  auto sim = simulate(std::move(map), setup);
+  move_vertices(*sim, [](const Vec3& p) { return Vec3(1.1 * p.x(), 1.05 * p.y(), p.z()); });
+  const auto& x = sim->position().values();
+  const auto& v = sim->velocity().values();
+  std::vector<Vec3> f(x.size(), Vec3::Zero());
+  for (const auto& m : sim->force_models())
+    m->add_forces({x.data(), v.data()}, f.data(), true);
+  std::vector<TearCandidate> candidates;
+  sim->criteria()[0]->collect(sim->map(), candidates);
+  EXPECT_GT(candidates.size(), 200u);
+  std::vector<Dart> touched;
+  touched.reserve(1 << 14);
+  std::size_t next = 0;
+  // The next candidate still alive, spread over the mesh, torn as the loop
+  // tears it (Simulation::on_topology_changed: masses, re-match).
+  auto tear = [&] {
+    for (; next < candidates.size(); ++next) {
+      const TearCandidate& c = candidates[(next * 7919) % candidates.size()];
+      if (!sim->map().is_alive(c.at)) continue;
+      touched.clear();
+      if (!sim->criteria()[0]->apply(sim->map(), c, touched)) continue;
+      sim->on_topology_changed(touched);
+      ++next;
+      return true;
+    }
+    return false;
+  };
+  for (int k = 0; k < 20; ++k)
+    EXPECT_TRUE(tear());  // warm-up: scratch buffers reach their size
+  const long before = test_support::allocation_count();
+  *tears = 0;
+  for (int k = 0; k < 40 && tear(); ++k)
+    ++*tears;
+  const long allocations = test_support::allocation_count() - before;
+  EXPECT_TRUE(sim->map().check_validity(5).empty());
+  return allocations;
+}
+
+// A tear as the loop pays it (the criterion's rewrite, then the masses and
+// the re-match around the touched darts) on a mesh whose arrays all have
+// headroom (huge_pages.hpp): once warm, it appends in place and allocates
+// nothing, scripts that call scripts included.
+TEST(NoAllocation, WarmTearsAllocateNothing) {
+  set_headroom_factor(4, 0);
+  for (GridKind kind : {GridKind::Quad, GridKind::Tri, GridKind::Mix}) {
+    int tears = 0;
+    EXPECT_EQ(allocations_of_warm_tears(assemble_gmap(make_grid(kind, 30, 30)),
+                                        paper_cloth_springs(), &tears),
+              0)
+        << static_cast<int>(kind) << ", " << tears << " tears";
+    EXPECT_GT(tears, 30);
+  }
+  for (const char* block : {"block:hex:6x6x6", "block:tet:5x5x5"}) {
+    int tears = 0;
+    EXPECT_EQ(allocations_of_warm_tears(assemble_gmap(make_generated_mesh(block)),
+                                        {{"stretch", {{"stiffness", 60.0}}}}, &tears),
+              0)
+        << block << ", " << tears << " tears";
+    EXPECT_GT(tears, 30) << block;
+  }
+  set_headroom_factor(2);
 }
 
 // rift run --check validates the whole map after every rewrite: on a valid

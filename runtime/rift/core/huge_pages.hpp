@@ -94,6 +94,16 @@ void push_back_huge(std::vector<T, A>& v, const T& x) {
   v.push_back(x);
 }
 
+/// Gives v, filled to its size piece by piece (its last regrow may have left
+/// it nearly full), the headroom a regrow would give it now, so that the
+/// rewrites that extend it later append in place instead of one of them
+/// copying the whole array (a large array only, as grow_huge).
+template <class T, class A>
+void reserve_headroom(std::vector<T, A>& v) {
+  if (detail::gets_headroom<T>(v.size()) && v.capacity() < v.size() * headroom_factor())
+    detail::regrow_huge(v, v.size());
+}
+
 /// Empties v and gives its buffer back. (`v = {}` would not: it assigns an
 /// empty initializer list, which keeps the capacity.)
 template <class T, class A>

@@ -4,7 +4,9 @@
 // or reset, so the same set serves every pack.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "rift/core/types.hpp"
@@ -25,9 +27,34 @@ struct Scratch {
   std::vector<Slot> slots;
   std::vector<Slot> claimed;
   std::vector<Slot> seen;
+  // DartList's buffers: the first dart_lists_open are held by open lists.
+  std::vector<std::unique_ptr<std::vector<Dart>>> dart_lists;
+  std::size_t dart_lists_open = 0;
 };
 
 /// This thread's buffers.
 Scratch& scratch();
+
+/// The darts a script's `for each` lists before it runs its statement once
+/// per dart. Scripts nest (a statement may apply another script, which lists
+/// darts of its own while the outer list is being walked), so one shared
+/// buffer would not do: each open list borrows a buffer of this thread's
+/// Scratch, in stack order, and gives it back, emptied but with its capacity,
+/// when it goes out of scope. A warm rewrite then lists without allocating.
+class DartList {
+ public:
+  DartList();
+  ~DartList();
+  DartList(const DartList&) = delete;
+  DartList& operator=(const DartList&) = delete;
+
+  void push_back(Dart d) { darts_->push_back(d); }
+  const Dart* begin() const { return darts_->data(); }
+  const Dart* end() const { return darts_->data() + darts_->size(); }
+  std::size_t size() const { return darts_->size(); }
+
+ private:
+  std::vector<Dart>* darts_;
+};
 
 }  // namespace rift::generated

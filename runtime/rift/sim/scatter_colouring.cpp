@@ -75,7 +75,7 @@ void ScatterColouring::mark(std::span<const Slot> slots, int colour) {
   const std::uint64_t bit = std::uint64_t{1} << colour;
   for (Slot v : slots) {
     if (v == kNoSlot) continue;
-    if (v >= mask_.size()) mask_.resize(static_cast<std::size_t>(v) + 1, 0);
+    if (v >= mask_.size()) grow_huge(mask_, static_cast<std::size_t>(v) + 1, std::uint64_t{0});
     mask_[v] |= bit;
   }
 }
@@ -84,7 +84,7 @@ void ScatterColouring::colour_block(std::uint32_t b, std::span<const Slot> slots
   std::uint64_t used = 0;
   for (Slot v : slots) {
     if (v == kNoSlot) continue;
-    if (v >= mask_.size()) mask_.resize(static_cast<std::size_t>(v) + 1, 0);
+    if (v >= mask_.size()) grow_huge(mask_, static_cast<std::size_t>(v) + 1, std::uint64_t{0});
     used |= mask_[v];
   }
   if (~used == 0) {

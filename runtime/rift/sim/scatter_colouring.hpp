@@ -38,6 +38,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "rift/core/huge_pages.hpp"
 #include "rift/core/types.hpp"
 
 namespace rift {
@@ -93,6 +94,9 @@ class ScatterColouring {
         targets(e, scratch_.data() + (e - first) * k_);
       colour_block(static_cast<std::uint32_t>(first / block_), scratch_);
     }
+    // The vertices tears add extend the mask in place (freeze gives it back
+    // when none will come).
+    reserve_headroom(mask_);
   }
 
   /// After build: no change will come; what only changes read is given back.

@@ -188,7 +188,7 @@ bool apply_remove_element(rift::GMap& g, std::span<const rift::Dart> hooks, cons
   [[maybe_unused]] const rift::Dart d_f = hooks[0];
   bool applied = false;
   {
-    std::vector<rift::Dart> each;
+    rift::generated::DartList each;
     g.for_each_sub_orbit(d_f, rift::Orbit{0, 1}, rift::Orbit{0}, [&](rift::Dart x) { each.push_back(x); });
     for (const rift::Dart d_e : each) {
       if (!g.is_alive(d_e)) continue;
@@ -219,7 +219,7 @@ bool apply_split_vertex(rift::GMap& g, std::span<const rift::Dart> hooks, const 
   auto e_side = require_embedding<rift::Bool>(g, "side", "script 'split_vertex'");
   bool applied = false;
   {
-    std::vector<rift::Dart> each;
+    rift::generated::DartList each;
     g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart x) { each.push_back(x); });
     for (const rift::Dart d_f : each) {
       if (!g.is_alive(d_f)) continue;
@@ -228,7 +228,7 @@ bool apply_split_vertex(rift::GMap& g, std::span<const rift::Dart> hooks, const 
     }
   }
   {
-    std::vector<rift::Dart> each;
+    rift::generated::DartList each;
     g.for_each_sub_orbit(d_v, rift::Orbit{1, 2}, rift::Orbit{2}, [&](rift::Dart x) { each.push_back(x); });
     for (const rift::Dart d_e : each) {
       if (!g.is_alive(d_e)) continue;
