@@ -316,6 +316,35 @@ TEST(SubOrbits, TheDartsAndOrderOfTheMarkingWalkWithOrWithoutSlots) {
   EXPECT_EQ(generated::sub_orbit_buffers().depth, 0u);
 }
 
+// Nested lists (a script's for-each applying a script that lists darts of
+// its own) each keep their darts; a list opened after one closed reuses its
+// buffer empty, and a warm list allocates nothing new from the pool.
+TEST(DartLists, NestedListsKeepTheirDartsAndReuseTheirBuffers) {
+  const std::size_t pooled = scratch().dart_lists.size();
+  const Dart* inner_buffer = nullptr;
+  {
+    generated::DartList outer;
+    for (Dart d = 0; d < 5; ++d)
+      outer.push_back(d);
+    for (Dart d : outer) {
+      generated::DartList inner;
+      for (Dart k = 0; k < 100; ++k)
+        inner.push_back(1000 + d * 100 + k);
+      ASSERT_EQ(inner.size(), 100u);
+      EXPECT_EQ(*inner.begin(), 1000 + d * 100);
+      if (inner_buffer == nullptr) inner_buffer = inner.begin();
+      EXPECT_EQ(inner.begin(), inner_buffer) << "the closed list's buffer is reused";
+    }
+    ASSERT_EQ(outer.size(), 5u);
+    for (Dart d = 0; d < 5; ++d)
+      EXPECT_EQ(outer.begin()[d], d);
+  }
+  EXPECT_EQ(scratch().dart_lists_open, 0u);
+  EXPECT_EQ(scratch().dart_lists.size(), std::max<std::size_t>(pooled, 2));
+  generated::DartList again;
+  EXPECT_EQ(again.size(), 0u);
+}
+
 TEST(SymmetricEigen, EigenvaluesAndTheLargestEigenvectorOfRandomSpectra) {
   std::mt19937 rng(3);
   std::normal_distribution<Real> n(0, 1);

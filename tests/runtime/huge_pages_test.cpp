@@ -72,6 +72,29 @@ TEST(HugeArrays, FactorOneGivesExactBuffersThatStillGrowGeometrically) {
   EXPECT_EQ(headroom_factor(), 1u);
 }
 
+// An array filled element by element (its last regrow may have left it
+// full) gets its headroom at once, and keeps its values; a small one, with
+// the default threshold, stays as it is.
+TEST(HugeArrays, ReserveHeadroomGivesAFilledArrayItsRoom) {
+  const FactorGuard guard;
+  set_headroom_factor(3);
+  std::vector<std::uint32_t> v(kLarge);
+  for (std::uint32_t k = 0; k < kLarge; ++k)
+    v[k] = k;
+  ASSERT_LT(v.capacity(), 3 * kLarge);
+  reserve_headroom(v);
+  EXPECT_GE(v.capacity(), 3 * kLarge);
+  ASSERT_EQ(v.size(), kLarge);
+  for (std::uint32_t k = 0; k < kLarge; ++k)
+    ASSERT_EQ(v[k], k);
+  const std::uint32_t* moved = v.data();
+  reserve_headroom(v);  // already has it: keeps its buffer
+  EXPECT_EQ(v.data(), moved);
+  std::vector<std::uint32_t> small(100, 1u);
+  reserve_headroom(small);
+  EXPECT_EQ(small.capacity(), 100u);
+}
+
 // By default only large arrays get headroom: a small one's spare room would
 // be memory (malloc's heap), and copying it is cheap.
 TEST(HugeArrays, ASmallArrayGetsExactlyWhatItAsksFor) {
