@@ -180,15 +180,15 @@ void ElementMatrix::multiply(const Vec3* p, Vec3* out, std::size_t n) const {
 }
 
 void ElementMatrix::add_diagonal(Mat3* diag) const {
+  // Through each element kind's gather (built by assemble, which comes
+  // first): per vertex, its blocks in increasing term order, the order of a
+  // serial loop over the matches, so the sums do not depend on the threads.
   for (const ElementBlocks& e : elements_) {
     const std::size_t k = static_cast<std::size_t>(e.k);
-    for (std::size_t m = 0; m < e.matches; ++m) {
-      const Slot* s = e.slots.data() + m * k;
-      const Mat3* c = e.blocks.data() + m * k * k;
-      for (std::size_t i = 0; i < k; ++i) {
-        if (s[i] != kNoSlot) diag[s[i]] += c[i * k + i];
-      }
-    }
+    e.gather.add_each(diag, [&](std::uint32_t t) -> const Mat3& {
+      const std::size_t m = t / k, i = t % k;
+      return e.blocks[m * k * k + i * k + i];
+    });
   }
 }
 

@@ -42,20 +42,20 @@ void Preconditioner::update(const ElementMatrix* blocks, const std::vector<Real>
   if (kind_ == PreconditionerKind::kNone) return;
   diagonal_only_ = kind_ == PreconditionerKind::kJacobi || !blocks;
   if (diagonal_only_) {
+    // Each vertex on its own: in parallel, the same bits on any threads.
     inverse_diagonal_.resize(n);
-    for (std::size_t i = 0; i < n; ++i)
-      inverse_diagonal_[i] = mass[i] * Mat3::Identity();
+    parallel_for(n, [&](std::size_t i) { inverse_diagonal_[i] = mass[i] * Mat3::Identity(); });
     if (blocks) blocks->add_diagonal(inverse_diagonal_.data());
-    for (std::size_t i = 0; i < n; ++i) {
+    parallel_for(n, [&](std::size_t i) {
       if (!is_free[i]) {
         inverse_diagonal_[i].setZero();
-        continue;
+        return;
       }
       bool invertible = false;
       Mat3 inv;
       inverse_diagonal_[i].computeInverseWithCheck(inv, invertible);
       inverse_diagonal_[i] = invertible ? inv : Mat3::Identity();
-    }
+    });
     return;
   }
   // Incomplete Cholesky on the scalar matrix (3 n unknowns).

@@ -18,6 +18,7 @@
 #include <span>
 #include <vector>
 
+#include "rift/core/parallel.hpp"
 #include "rift/core/types.hpp"
 
 namespace rift {
@@ -32,6 +33,22 @@ class TermGather {
   /// out[s] += terms[t] for every t with targets[t] == s, t increasing, in
   /// parallel over the slots. `terms` is in the entry order of build().
   void add_to(const Vec3* terms, Vec3* out) const;
+
+  /// out[s] += term(t) for every t with targets[t] == s, t increasing, in
+  /// parallel over the slots: for terms that are not a flat array of their
+  /// own (the diagonal blocks of element matrices, read in place).
+  template <class T, class Term>
+  void add_each(T* out, Term&& term) const {
+    parallel_for(slots(), [&](std::size_t s) {
+      const std::uint32_t end = offsets_[s + 1];
+      std::uint32_t k = offsets_[s];
+      if (k == end) return;
+      T sum = out[s];
+      for (; k < end; ++k)
+        sum += term(entries_[k]);
+      out[s] = sum;
+    });
+  }
 
   /// Slots that receive a term: max target + 1.
   std::size_t slots() const { return offsets_.empty() ? 0 : offsets_.size() - 1; }
