@@ -8,7 +8,9 @@
 // thread steals the core its partner needs: 2 threads ran a small implicit
 // beam 15 times slower than 1. Sleeping workers cost a wake-up per pass
 // (tens of microseconds), which kMinParallelBlocks keeps small next to the
-// work of the pass.
+// work of the pass; a worker first waits a few microseconds awake
+// (spin_until), which catches the next pass of a solver whose passes come
+// back to back, and gives its core back long before libgomp would.
 #include "rift/core/parallel.hpp"
 
 #include <algorithm>
@@ -62,13 +64,15 @@ class Pool {
       next_.store(0, std::memory_order_relaxed);
       error_ = nullptr;
       error_block_ = std::numeric_limits<std::size_t>::max();
-      busy_ = workers_.size();
+      busy_.store(workers_.size(), std::memory_order_relaxed);
       ++generation_;
+      published_.store(generation_, std::memory_order_release);
     }
     wake_.notify_all();
     work();
+    spin_until([&] { return busy_.load(std::memory_order_acquire) == 0; });
     std::unique_lock lock(mutex_);
-    done_.wait(lock, [&] { return busy_ == 0; });
+    done_.wait(lock, [&] { return busy_.load(std::memory_order_relaxed) == 0; });
     body_ = nullptr;
     if (error_) std::rethrow_exception(error_);
   }
@@ -123,16 +127,36 @@ class Pool {
       workers_.emplace_back([this, seen = generation_] { worker(seen); });
   }
 
+  // Waits a few microseconds for `ready` before the caller falls back to
+  // sleeping: the passes of an implicit step come back to back (a PCG
+  // iteration is seven passes of microseconds each), and a worker put to
+  // sleep between them joins each pass a wake-up late, when the caller has
+  // done most of its blocks. Bounded, unlike libgomp's spinning (see the
+  // top of this file): on a loaded machine a spinner gives its core back
+  // within kSpinRounds pauses.
+  template <class Ready>
+  static void spin_until(Ready&& ready) {
+    for (int i = 0; i < kSpinRounds && !ready(); ++i)
+      cpu_pause();
+  }
+
+  static void cpu_pause() {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#endif
+  }
+
   void worker(std::uint64_t seen) {
-    std::unique_lock lock(mutex_);
     for (;;) {
+      spin_until([&] { return published_.load(std::memory_order_acquire) != seen; });
+      std::unique_lock lock(mutex_);
       wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
       if (stop_) return;
       seen = generation_;
       lock.unlock();
       work();
       lock.lock();
-      if (--busy_ == 0) done_.notify_one();
+      if (busy_.fetch_sub(1, std::memory_order_acq_rel) == 1) done_.notify_one();
     }
   }
 
@@ -142,7 +166,10 @@ class Pool {
   std::vector<std::thread> workers_;
   std::uint64_t generation_ = 0;
   bool stop_ = false;
-  std::size_t busy_ = 0;
+  std::atomic<std::size_t> busy_{0};
+  // generation_, readable without the lock (by a spinning worker).
+  std::atomic<std::uint64_t> published_{0};
+  static constexpr int kSpinRounds = 2000;
   // The current pass.
   std::size_t n_ = 0, block_ = 1, blocks_ = 0;
   const BlockFn* body_ = nullptr;
