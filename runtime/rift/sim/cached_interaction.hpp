@@ -193,7 +193,11 @@ class CachedInteraction final : public ForceModel {
         const auto reps = groups_.representatives();
         colouring_.build(reps.size(), Kernel::kForceTerms,
                          [&](std::size_t g, Slot* out) { kernel_.force_targets(reps[g], out); });
-        if (!rewrites_) colouring_.freeze();
+        if (rewrites_) {
+          colouring_.expect_changes();
+        } else {
+          colouring_.freeze();
+        }
         // Nothing reads the matches any more: the pass reads the groups.
         if (!rewrites_ && !store_forces_ && !jacobians_used_) {
           matched_ = cache_.size();
@@ -207,7 +211,11 @@ class CachedInteraction final : public ForceModel {
       const auto all = cache_.matches();
       colouring_.build(all.size(), Kernel::kForceTerms,
                        [&](std::size_t e, Slot* out) { kernel_.force_targets(all[e], out); });
-      if (!rewrites_) colouring_.freeze();
+      if (rewrites_) {
+        colouring_.expect_changes();
+      } else {
+        colouring_.freeze();
+      }
     }
   }
 
