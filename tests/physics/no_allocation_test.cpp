@@ -5,9 +5,9 @@
 #include <gtest/gtest.h>
 
 #include "allocation_watch.hpp"
-#include "criteria3d.hpp"
 #include "physics_setup.hpp"
 #include "rift/core/huge_pages.hpp"
+#include "standard_packs.hpp"
 
 namespace rift::physics_test {
 namespace {
@@ -74,22 +74,9 @@ TEST(NoAllocation, EvaluatingACriterionThatDoesNotHoldAllocatesNothing) {
 // A tear as the loop pays it (the criterion's rewrite, then the masses and
 // the re-match around the touched darts) on a cloth whose arrays all have
 // headroom: once warm, it appends in place and allocates nothing.
-/// The physics packs and both tearing packs.
-const PackRegistry& tearing_packs() {
-  static const PackRegistry registry = [] {
-    PackRegistry r;
-    rift_register_pack_mass_spring2d(r);
-    rift_register_pack_mass_spring3d(r);
-    rift_register_pack_criteria2d(r);
-    rift_register_pack_criteria3d(r);
-    return r;
-  }();
-  return registry;
-}
-
 long allocations_of_warm_tears(GMap map, const std::vector<Use>& interactions, int* tears) {
   SimSetup setup;
-  setup.registry = &tearing_packs();
+  setup.registry = &test_support::standard_packs();
   setup.interactions = interactions;
   setup.criteria = {{"spring_split", {{"threshold", 1e-9}}}};
   auto sim = simulate(std::move(map), setup);

@@ -35,15 +35,7 @@ void TermGather::build(std::span<const Slot> targets) {
 }
 
 void TermGather::add_to(const Vec3* terms, Vec3* out) const {
-  parallel_for(slots(), [&](std::size_t s) {
-    const std::uint32_t end = offsets_[s + 1];
-    std::uint32_t k = offsets_[s];
-    if (k == end) return;
-    Vec3 sum = out[s];
-    for (; k < end; ++k)
-      sum += terms[entries_[k]];
-    out[s] = sum;
-  });
+  add_each(out, [terms](std::uint32_t t) -> const Vec3& { return terms[t]; });
 }
 
 }  // namespace rift
