@@ -8,9 +8,10 @@
 // thread steals the core its partner needs: 2 threads ran a small implicit
 // beam 15 times slower than 1. Sleeping workers cost a wake-up per pass
 // (tens of microseconds), which kMinParallelBlocks keeps small next to the
-// work of the pass; a worker first waits a few microseconds awake
-// (spin_until), which catches the next pass of a solver whose passes come
-// back to back, and gives its core back long before libgomp would.
+// work of the pass; a worker first waits awake for at most kSpinRounds
+// pauses (spin_until: tens of microseconds, a hundred on CPUs whose pause
+// takes 140 cycles), which catches the next pass of a solver whose passes
+// come back to back, and gives its core back long before libgomp would.
 #include "rift/core/parallel.hpp"
 
 #include <algorithm>
@@ -127,8 +128,8 @@ class Pool {
       workers_.emplace_back([this, seen = generation_] { worker(seen); });
   }
 
-  // Waits a few microseconds for `ready` before the caller falls back to
-  // sleeping: the passes of an implicit step come back to back (a PCG
+  // Waits at most kSpinRounds pauses for `ready` before the caller falls
+  // back to sleeping: the passes of an implicit step come back to back (a PCG
   // iteration is seven passes of microseconds each), and a worker put to
   // sleep between them joins each pass a wake-up late, when the caller has
   // done most of its blocks. Bounded, unlike libgomp's spinning (see the
