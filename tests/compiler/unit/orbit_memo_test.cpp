@@ -5,6 +5,7 @@
 // walk's choice of dart changes) or that no other cell reaches must be
 // computed where it is written.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -68,7 +69,10 @@ criterion inside_the_cell on <0,1,2>(x) (threshold : real > 0 = 1.0) {
 )";
 
 std::string generated(const std::string& file) {
-  const fs::path dir = fs::temp_directory_path() / "riftc_orbit_memo_test";
+  // Per process: ctest runs this binary's tests as processes of their own,
+  // side by side, and a shared folder was removed under a neighbour's feet.
+  const fs::path dir =
+      fs::temp_directory_path() / ("riftc_orbit_memo_test_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   rift::driver::Options options;
   options.out_dir = dir.string();
@@ -78,6 +82,8 @@ std::string generated(const std::string& file) {
   std::ifstream in(dir / file);
   std::ostringstream s;
   s << in.rdbuf();
+  in.close();
+  fs::remove_all(dir);
   return s.str();
 }
 

@@ -4,6 +4,7 @@
 // before the fold. Checked on the IR (equal expressions are one node) and on
 // the generated C++ (how many times a computation is written, and where).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -55,7 +56,10 @@ criterion heavy on <1,2>(v) (threshold : real > 0 = 1.0) {
 )";
 
 std::string generated_source() {
-  const fs::path dir = fs::temp_directory_path() / "riftc_sharing_test";
+  // Per process: ctest runs this binary's tests as processes of their own,
+  // side by side, and a shared folder was removed under a neighbour's feet.
+  const fs::path dir =
+      fs::temp_directory_path() / ("riftc_sharing_test_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   rift::driver::Options options;
   options.out_dir = dir.string();
@@ -65,6 +69,8 @@ std::string generated_source() {
   std::ifstream in(dir / "sharing.cpp");
   std::ostringstream s;
   s << in.rdbuf();
+  in.close();
+  fs::remove_all(dir);
   return s.str();
 }
 

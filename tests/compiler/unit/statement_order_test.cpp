@@ -3,6 +3,7 @@
 // before the guarded let's definition) and on name visibility (a `when` does
 // not see a later let).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -42,7 +43,10 @@ interaction guarded_spring on <0,2> {
 )";
 
 std::string generated_source(const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "riftc_statement_order_test";
+  // Per process: ctest runs this binary's tests as processes of their own,
+  // side by side, and a shared folder was removed under a neighbour's feet.
+  const fs::path dir =
+      fs::temp_directory_path() / ("riftc_statement_order_test_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   rift::driver::Options options;
   options.out_dir = dir.string();
@@ -51,6 +55,8 @@ std::string generated_source(const std::string& text) {
   std::ifstream in(dir / "order.cpp");
   std::ostringstream s;
   s << in.rdbuf();
+  in.close();
+  fs::remove_all(dir);
   return s.str();
 }
 
