@@ -324,12 +324,7 @@ TEST(Grouping, TearsOfAMapPastThePrefetchSizeKeepGroupsAndForces) {
   std::vector<Dart> touched;
   // Spread over the cloth, as the tear benchmark does.
   for (std::size_t k = 0; k < 60; ++k) {
-    const TearCandidate& c = candidates[(k * 7919) % candidates.size()];
-    if (!sim->map().is_alive(c.at)) continue;
-    touched.clear();
-    if (!sim->criteria()[0]->apply(sim->map(), c, touched)) continue;
-    sim->on_topology_changed(touched);
-    ++tears;
+    if (tear_at(*sim, candidates[(k * 7919) % candidates.size()], touched)) ++tears;
   }
   ASSERT_GT(tears, 30u);
   // Cuts along random interior edges too: their matches are dropped, which

@@ -96,11 +96,7 @@ long allocations_of_warm_tears(GMap map, const std::vector<Use>& interactions, i
   // tears it (Simulation::on_topology_changed: masses, re-match).
   auto tear = [&] {
     for (; next < candidates.size(); ++next) {
-      const TearCandidate& c = candidates[(next * 7919) % candidates.size()];
-      if (!sim->map().is_alive(c.at)) continue;
-      touched.clear();
-      if (!sim->criteria()[0]->apply(sim->map(), c, touched)) continue;
-      sim->on_topology_changed(touched);
+      if (!tear_at(*sim, candidates[(next * 7919) % candidates.size()], touched)) continue;
       ++next;
       return true;
     }

@@ -164,6 +164,17 @@ inline void deform(Simulation& sim, unsigned seed, Real amplitude) {
 }
 
 /// Sum over vertices of m v, and of the vertex masses.
+/// Tears at candidate c as the loop does: the first criterion's rewrite, then
+/// Simulation::on_topology_changed with the darts it touched (into
+/// `touched`, cleared first). False when c's dart is gone or nothing applied.
+inline bool tear_at(Simulation& sim, const TearCandidate& c, std::vector<Dart>& touched) {
+  if (!sim.map().is_alive(c.at)) return false;
+  touched.clear();
+  if (!sim.criteria()[0]->apply(sim.map(), c, touched)) return false;
+  sim.on_topology_changed(touched);
+  return true;
+}
+
 inline Real sum_of_vertex_masses(const Simulation& sim) {
   Real m = 0;
   sim.map().for_each_cell(Orbit::cell(0, sim.map().dimension()),
