@@ -9,6 +9,7 @@
 #include "physics_setup.hpp"
 #include "rift/core/parallel.hpp"
 #include "rift/core/prefetch.hpp"
+#include "rift/sim/distinct_keys.hpp"
 #include "rift/sim/match_groups.hpp"
 #include "same_bits.hpp"
 
@@ -146,6 +147,52 @@ TEST(Grouping, HexahedraGiveTheUngroupedForces) {
                       {"shear", {{"stiffness", 43.0}, {"damping", 0.1}}},
                       {"volume_shear", {{"stiffness", 43.0}, {"damping", 0.1}}}},
                      {"f_stretch", "f_shear", "f_volume_shear"});
+}
+
+// A hexahedral block's face shear springs (tagged: each volume lists its
+// face from its own dart) and body diagonals have keys of their own, and are
+// told so without building their groups (rift/sim/distinct_keys.hpp): the
+// plain pass, as a build of their groups would decide. The block's shear has
+// more matches than the prefix the check reads first.
+TEST(Grouping, MatchesWithKeysOfTheirOwnAreNotGrouped) {
+  using Shear3d = packs::mass_spring3d::ShearInteraction;
+  using VolumeShear3d = packs::mass_spring3d::VolumeShearInteraction;
+  using Stretch3d = packs::mass_spring3d::StretchInteraction;
+  auto sim = make(assemble_gmap(make_block(BlockKind::Hex, 16, 16, 12)),
+                  {{"stretch", {{"stiffness", 60.0}, {"damping", 0.1}}},
+                   {"shear", {{"stiffness", 43.0}, {"damping", 0.1}}},
+                   {"volume_shear", {{"stiffness", 43.0}, {"damping", 0.1}}}},
+                  true);
+  // Groups built from the same matches and keys.
+  auto built_groups = [](auto& model) {
+    using Match = std::decay_t<decltype(model.cache().matches()[0])>;
+    MatchGroups<Match> groups;
+    typename MatchGroups<Match>::NoObserver none;
+    auto& kernel = model.kernel();
+    groups.build(
+        model.cache().matches(), std::decay_t<decltype(kernel)>::kGroupKey,
+        [&](const Match& m, std::uint64_t* out) { kernel.group_key(m, out); }, none);
+    return groups.size();
+  };
+  int seen = 0;
+  for (auto& model : sim->force_models()) {
+    if (auto* q = dynamic_cast<Shear3d*>(model.get())) {
+      ASSERT_GT(q->cache().size(), kDistinctKeysPrefix);
+      EXPECT_FALSE(q->grouped());
+      EXPECT_EQ(q->evaluated_matches(), q->active_matches());
+      EXPECT_EQ(built_groups(*q), q->cache().size());
+      ++seen;
+    } else if (auto* v = dynamic_cast<VolumeShear3d*>(model.get())) {
+      EXPECT_FALSE(v->grouped());
+      EXPECT_EQ(built_groups(*v), v->cache().size());
+      ++seen;
+    } else if (auto* s = dynamic_cast<Stretch3d*>(model.get())) {
+      EXPECT_TRUE(s->grouped());
+      EXPECT_LT(s->evaluated_matches(), s->active_matches());
+      ++seen;
+    }
+  }
+  EXPECT_EQ(seen, 3);
 }
 
 // The paper's 10 × 10 quad cloth: 960 atomic springs (400 stretch, 360

@@ -106,6 +106,7 @@
 #include "rift/core/interrupt.hpp"
 #include "rift/core/parallel.hpp"
 #include "rift/core/state_embeddings.hpp"
+#include "rift/sim/distinct_keys.hpp"
 #include "rift/sim/force_model.hpp"
 #include "rift/sim/match_cache.hpp"
 #include "rift/sim/match_groups.hpp"
@@ -182,12 +183,19 @@ class CachedInteraction final : public ForceModel {
             rewrites_ ? Keep::kEverything : (store_forces_ ? Keep::kMembers : Keep::kCounts);
         // A generated key's first word is a vertex slot (match_groups.hpp).
         const OrbitAttachment* vertices = map.attachment_of(state::kPosition);
-        groups_.build(cache_.matches(), Kernel::kGroupKey, key_fn(), none, keep,
-                      vertices && !vertices->dormant() ? vertices->slot_capacity() : 0);
+        const std::size_t first_words =
+            vertices && !vertices->dormant() ? vertices->slot_capacity() : 0;
         // Nothing to share (each element once, e.g. finite elements): the
-        // plain pass, without the groups' upkeep.
-        grouped_ = groups_.size() < cache_.size();
-        if (!grouped_) groups_ = {};
+        // plain pass, without the groups' upkeep. Told apart before building
+        // the groups where the keys show it (distinct_keys.hpp), else by the
+        // groups built.
+        if (keys_all_distinct<Match>(cache_.matches(), Kernel::kGroupKey, key_fn(), first_words)) {
+          grouped_ = false;
+        } else {
+          groups_.build(cache_.matches(), Kernel::kGroupKey, key_fn(), none, keep, first_words);
+          grouped_ = groups_.size() < cache_.size();
+          if (!grouped_) groups_ = {};
+        }
       }
       if (grouped_) {
         const auto reps = groups_.representatives();
