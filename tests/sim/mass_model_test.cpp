@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
+#include <vector>
+
 #include "rift/mesh/assemble.hpp"
 #include "rift/mesh/generators.hpp"
 
@@ -56,6 +60,53 @@ TEST(MassModel, TotalMassEqualsSumOfVertexMassesBeforeAndAfterSplits) {
     for (Dart d : touched)
       update_vertex_mass(map, d, corner, vertex);
     EXPECT_NEAR(sum_vertex_masses(map, vertex), 0.1, 1e-12) << spec;
+  }
+}
+
+// The whole-map pass (one pass over the darts) gives every vertex the sum of
+// its corners' masses, as the walk of update_vertex_mass does, on meshes
+// whose elements all differ (jittered points) and after vertices were split.
+TEST(MassModel, AllVertexMassesAreEachVertexsCornerSums) {
+  for (const char* spec : {"grid:mix:7x5", "block:tet:3x2x2", "block:hex:3x3x2"}) {
+    for (bool split : {false, true}) {
+      GMap map = assemble_gmap(make_generated_mesh(spec));
+      const int n = map.dimension();
+      auto pos = map.embedding<Vec3>("position");
+      std::mt19937 rng(5);
+      std::uniform_real_distribution<Real> jitter(-0.1, 0.1);
+      map.for_each_cell(Orbit::cell(0, n), [&](Dart v) {
+        pos[v] += Vec3(jitter(rng), jitter(rng), n == 3 ? jitter(rng) : 0.0);
+      });
+      if (split) {
+        // Unsew the first element from its neighbours: its vertices split.
+        std::vector<Dart> inner;
+        map.for_each_in_orbit(0, element_orbit(n), [&](Dart d) { inner.push_back(d); });
+        for (Dart d : inner) {
+          if (!map.is_free(d, n)) map.unsew(d, n);
+        }
+        ASSERT_TRUE(map.is_valid());
+      }
+      auto corner = map.add_embedding<Real>("corner_mass", corner_orbit(n));
+      auto all = map.add_embedding<Real>("vertex_mass", Orbit::cell(0, n), MergePolicy::kSum);
+      auto each = map.add_embedding<Real>("walked_mass", Orbit::cell(0, n), MergePolicy::kSum);
+      assign_corner_masses_by_total(map, 2.0, corner, pos);
+      update_all_vertex_masses(map, corner, all);
+      std::size_t vertices = 0;
+      std::vector<Real> masses;
+      map.for_each_cell(Orbit::cell(0, n), [&](Dart v) {
+        update_vertex_mass(map, v, corner, each);
+        EXPECT_NEAR(all[v], each[v], 1e-15 * each[v]) << spec << " vertex dart " << v;
+        EXPECT_GT(all[v], 0.0);
+        masses.push_back(all[v]);
+        ++vertices;
+      });
+      EXPECT_NEAR(sum_vertex_masses(map, all), 2.0, 1e-12) << spec;
+      // The masses differ from vertex to vertex (a pass writing one value
+      // everywhere would not).
+      EXPECT_GT(*std::max_element(masses.begin(), masses.end()),
+                1.01 * *std::min_element(masses.begin(), masses.end()));
+      EXPECT_GT(vertices, 10u);
+    }
   }
 }
 
