@@ -21,6 +21,7 @@ namespace rift::cli {
 int run(int argc, char** argv, const PackRegistry& packs) {
   // Links the huge-page operator new into the executable (large_allocations.cpp).
   [[maybe_unused]] const bool huge_pages = large_allocations_in_huge_pages();
+  give_large_blocks_back_when_freed();
   CLI::App app{"rift: simulate deformable bodies that tear and fracture, with G-maps and rules"};
   app.set_version_flag("--version", std::string("rift ") + RIFT_VERSION);
   app.require_subcommand(1);

@@ -9,4 +9,8 @@ namespace rift::cli {
 /// replacement into every executable that uses the command line.
 bool large_allocations_in_huge_pages();
 
+/// Makes malloc give every block of kHugePageAdviceBytes or more back to the
+/// kernel when it is freed (see large_allocations.cpp). run() calls it first.
+void give_large_blocks_back_when_freed();
+
 }  // namespace rift::cli

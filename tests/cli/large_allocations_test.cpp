@@ -11,6 +11,10 @@
 #include <string>
 #include <vector>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #include "cli/large_allocations.hpp"
 
 namespace {
@@ -66,6 +70,31 @@ TEST(LargeAllocations, SmallAllocationsAreMallocsOwn) {
   const auto pa = reinterpret_cast<std::uintptr_t>(a.get());
   const auto pb = reinterpret_cast<std::uintptr_t>(b.get());
   EXPECT_FALSE(pa % kHugePage == 0 && pb % kHugePage == 0);
+}
+
+// Once a large block was mapped and freed, glibc's heap would serve the next
+// blocks below the freed one's size and keep their pages when they are
+// freed; with the threshold fixed (give_large_blocks_back_when_freed), a
+// block of 4 MiB or more is still a mapping of its own (mallinfo2's hblkhd
+// counts the bytes of such mappings).
+TEST(LargeAllocations, LargeBlocksAreMappingsOfTheirOwnAfterALargerOneWasFreed) {
+  if (!rift::cli::large_allocations_in_huge_pages()) GTEST_SKIP() << "a sanitizer's allocator";
+#if defined(__GLIBC__)
+  rift::cli::give_large_blocks_back_when_freed();
+  // The heap's free top serves any block that fits in it, mapped or not:
+  // given back first, as at the start of a process.
+  malloc_trim(0);
+  {
+    std::vector<char> larger(std::size_t{40} << 20, 1);
+    EXPECT_EQ(larger.back(), 1);
+  }
+  const std::size_t before = mallinfo2().hblkhd;
+  std::vector<char> block(std::size_t{6} << 20, 2);
+  EXPECT_EQ(block.back(), 2);
+  EXPECT_GE(mallinfo2().hblkhd, before + block.size());
+#else
+  GTEST_SKIP() << "not glibc";
+#endif
 }
 
 }  // namespace
