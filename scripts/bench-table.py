@@ -113,6 +113,14 @@ def rows(out):
                 big["touched_darts"], small["touched_darts"])
         return text
     row("one tear at 1000×1000 vs 10×10 (rewrite + masses + re-match)", "≤ 2×", one_tear)
+    def inner_tear():
+        big = find(tear, "BM_OneTear/quads_inner/1000/")
+        small = find(tear, "BM_OneTear/quads_inner/10/")
+        return "%.1f× (%.1f µs / %.1f µs, %.0f / %.0f darts a tear)" % (
+            real_ns(big) / real_ns(small), real_ns(big) / 1e3, real_ns(small) / 1e3,
+            big["touched_darts"], small["touched_darts"])
+    row("the same tear at both sizes (a spring between inner vertices of an untorn part)",
+        "≤ 2×", inner_tear)
 
     # The 10×10 scenes' steps take 15-45 µs: a process now and then runs
     # about 1.6× slower throughout (on an idle machine too, whatever the

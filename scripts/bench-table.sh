@@ -61,8 +61,8 @@ with_source() {
   sed "s|^source = .*|source = \"$3\"|" "$1" > "$out/$2.toml"
 }
 
-# One tear at 1000×1000 against 10×10.
-gbench tear "$bench/rift_bench_tear" --benchmark_filter='BM_OneTear/quads/(10|1000)/'
+# One tear at 1000×1000 against 10×10: any spring, then the same inner tear at both sizes.
+gbench tear "$bench/rift_bench_tear" --benchmark_filter='BM_OneTear/quads(_inner)?/(10|1000)/'
 
 # Table 2: the paper's 10×10 cloths, basic step and both edge criteria.
 table2=()
