@@ -580,6 +580,28 @@ void write_evaluate(Writer& w, const Kernel& k) {
 // out of order, read in place), else over consecutive matches. Two functions
 // rather than one testing `at`: the test in the loop, or a lambda over both
 // whose captures the stores may alias, cost the consecutive pass 3-15 %.
+// The passes over matches read the force input and each match's target
+// slots through locals. Eigen stores a force as packets, which the compiler
+// must assume may alias anything: without the locals it reads in.x, in.v
+// and every slot after the first force again, for each match (3 to 6 of a
+// spring's 85 instructions, issue 12's generated / reference row).
+constexpr const char* kLocalInput =
+    "const rift::ForceInput in = in_arg;  // a local: see the targets below";
+
+// `const rift::Slot to_<slot> = m.<slot>;` for each slot a force is added at,
+// once, before the first force is added; returns the target of each force.
+std::vector<std::string> write_force_targets(Writer& w, const Kernel& k, const ir::Body& b) {
+  std::vector<std::string> targets;
+  std::set<int> declared;
+  for (const ir::Force& f : b.forces) {
+    const std::string& slot = k.slots[static_cast<std::size_t>(f.vertex_slot)];
+    if (declared.insert(f.vertex_slot).second)
+      w.line("const rift::Slot to_" + slot + " = m." + slot + ";");
+    targets.push_back("f[to_" + slot + "]");
+  }
+  return targets;
+}
+
 void write_add_forces_all(Writer& w, const Kernel& k, bool indexed) {
   const ir::Body& b = k.plan->body;
   const bool forces = !b.forces.empty();
@@ -590,11 +612,12 @@ void write_add_forces_all(Writer& w, const Kernel& k, bool indexed) {
                     "std::size_t n, "
                   : "::add_forces_all(std::span<const Match> ms, ") +
          (has_stored_slots(k) ? "const Stored* ss" : "const Stored* /*ss*/") +
-         ", const rift::ForceInput& in, " +
+         ", const rift::ForceInput& in_arg, " +
          (forces          ? "rift::Vec3* f, bool store"
           : stores_values ? "rift::Vec3* /*f*/, bool store"
                           : "rift::Vec3* /*f*/, bool /*store*/") +
          ") {");
+  w.line(kLocalInput);
   w.line("const Columns c = columns();");
   const std::set<std::string> stores = force_embeddings(b);
   // Not asked for unless storing: a column nothing reads has no storage
@@ -642,10 +665,11 @@ void write_add_forces_all(Writer& w, const Kernel& k, bool indexed) {
     w.close();
     w.line("continue;");
     w.close();
+    const std::vector<std::string> targets = write_force_targets(w, k, b);
     for (std::size_t i = 0; i < b.forces.size(); ++i) {
       const ir::Force& f = b.forces[i];
       const std::string field = std::string("r.") + force_field(b, f);
-      const std::string target = "f[m." + k.slots[static_cast<std::size_t>(f.vertex_slot)] + "]";
+      const std::string& target = targets[i];
       if (const int j = negated_force(b, i); j >= 0) {
         w.line(target + " -= r." + force_field(b, b.forces[static_cast<std::size_t>(j)]) + ";");
       } else {
@@ -999,7 +1023,8 @@ void write_add_forces_grouped(Writer& w, const Kernel& k, bool indexed) {
                     "counts, const std::uint32_t* at, std::size_t n, const "
                   : "::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* "
                     "counts, const ") +
-         "rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {");
+         "rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {");
+  w.line(kLocalInput);
   w.line("const Columns c = columns();");
   if (indexed) {
     w.open("for (std::size_t i = 0; i < n; ++i) {");
@@ -1015,6 +1040,7 @@ void write_add_forces_grouped(Writer& w, const Kernel& k, bool indexed) {
   w.line("continue;");
   w.close();
   w.line(indexed ? "const rift::Real count = counts[e];" : "const rift::Real count = counts[i];");
+  const std::vector<std::string> targets = write_force_targets(w, k, b);
   // count times each force; a force a later one negates is kept (cf<i>),
   // even when it negates an earlier one itself (`-(-fa)`).
   std::vector<bool> negated_later(b.forces.size(), false);
@@ -1024,7 +1050,7 @@ void write_add_forces_grouped(Writer& w, const Kernel& k, bool indexed) {
   }
   for (std::size_t i = 0; i < b.forces.size(); ++i) {
     const ir::Force& f = b.forces[i];
-    const std::string target = "f[m." + k.slots[static_cast<std::size_t>(f.vertex_slot)] + "]";
+    const std::string& target = targets[i];
     if (negated_later[i]) {
       w.line("const rift::Vec3 cf" + std::to_string(i) + " = count * r." + force_field(b, f) + ";");
       w.line(target + " += cf" + std::to_string(i) + ";");

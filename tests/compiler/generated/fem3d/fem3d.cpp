@@ -417,7 +417,8 @@ inline bool CorotationalKernel::evaluate(const Match& m, const rift::ForceInput&
   return true;
 }
 
-void CorotationalKernel::add_forces_all(std::span<const Match> ms, const Stored* /*ss*/, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+void CorotationalKernel::add_forces_all(std::span<const Match> ms, const Stored* /*ss*/, const rift::ForceInput& in_arg, rift::Vec3* f, bool store) {
+  const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   rift::Vec3* const stored_f_fem = store ? e_f_fem.values().data() : nullptr;
   auto* const stored_stress_mass = store ? e_stress_mass.values().data() : nullptr;
@@ -435,13 +436,17 @@ void CorotationalKernel::add_forces_all(std::span<const Match> ms, const Stored*
         }
         continue;
       }
-      f[m.vertex_c0] += r.f_fem_c0;
+      const rift::Slot to_vertex_c0 = m.vertex_c0;
+      const rift::Slot to_vertex_c1 = m.vertex_c1;
+      const rift::Slot to_vertex_c2 = m.vertex_c2;
+      const rift::Slot to_vertex_c3 = m.vertex_c3;
+      f[to_vertex_c0] += r.f_fem_c0;
       if constexpr (kStore) stored_f_fem[m.orbit12_c0] = r.f_fem_c0;
-      f[m.vertex_c1] += r.f_fem_c1;
+      f[to_vertex_c1] += r.f_fem_c1;
       if constexpr (kStore) stored_f_fem[m.orbit12_c1] = r.f_fem_c1;
-      f[m.vertex_c2] += r.f_fem_c2;
+      f[to_vertex_c2] += r.f_fem_c2;
       if constexpr (kStore) stored_f_fem[m.orbit12_c2] = r.f_fem_c2;
-      f[m.vertex_c3] += r.f_fem_c3;
+      f[to_vertex_c3] += r.f_fem_c3;
       if constexpr (kStore) stored_f_fem[m.orbit12_c3] = r.f_fem_c3;
       if constexpr (kStore) {
         stored_stress_weighted[m.vertex_c0] += r.stored_stress_weighted_c0;
@@ -462,7 +467,8 @@ void CorotationalKernel::add_forces_all(std::span<const Match> ms, const Stored*
   }
 }
 
-void CorotationalKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* /*ss*/, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+void CorotationalKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* /*ss*/, const rift::ForceInput& in_arg, rift::Vec3* f, bool store) {
+  const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   rift::Vec3* const stored_f_fem = store ? e_f_fem.values().data() : nullptr;
   auto* const stored_stress_mass = store ? e_stress_mass.values().data() : nullptr;
@@ -480,13 +486,17 @@ void CorotationalKernel::add_forces_at(std::span<const Match> ms, const std::uin
         }
         continue;
       }
-      f[m.vertex_c0] += r.f_fem_c0;
+      const rift::Slot to_vertex_c0 = m.vertex_c0;
+      const rift::Slot to_vertex_c1 = m.vertex_c1;
+      const rift::Slot to_vertex_c2 = m.vertex_c2;
+      const rift::Slot to_vertex_c3 = m.vertex_c3;
+      f[to_vertex_c0] += r.f_fem_c0;
       if constexpr (kStore) stored_f_fem[m.orbit12_c0] = r.f_fem_c0;
-      f[m.vertex_c1] += r.f_fem_c1;
+      f[to_vertex_c1] += r.f_fem_c1;
       if constexpr (kStore) stored_f_fem[m.orbit12_c1] = r.f_fem_c1;
-      f[m.vertex_c2] += r.f_fem_c2;
+      f[to_vertex_c2] += r.f_fem_c2;
       if constexpr (kStore) stored_f_fem[m.orbit12_c2] = r.f_fem_c2;
-      f[m.vertex_c3] += r.f_fem_c3;
+      f[to_vertex_c3] += r.f_fem_c3;
       if constexpr (kStore) stored_f_fem[m.orbit12_c3] = r.f_fem_c3;
       if constexpr (kStore) {
         stored_stress_weighted[m.vertex_c0] += r.stored_stress_weighted_c0;

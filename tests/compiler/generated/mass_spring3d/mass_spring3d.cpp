@@ -240,7 +240,8 @@ inline bool StretchKernel::evaluate(const Match& m, const rift::ForceInput& in, 
   return true;
 }
 
-void StretchKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+void StretchKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in_arg, rift::Vec3* f, bool store) {
+  const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   rift::Vec3* const stored_f_stretch = store ? e_f_stretch.values().data() : nullptr;
   for (std::size_t i = 0; i < ms.size(); ++i) {
@@ -253,14 +254,17 @@ void StretchKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, 
       }
       continue;
     }
-    f[m.vertex_a] += r.f_stretch_a;
+    const rift::Slot to_vertex_a = m.vertex_a;
+    const rift::Slot to_vertex_b = m.vertex_b;
+    f[to_vertex_a] += r.f_stretch_a;
     if (store) stored_f_stretch[ss[i].dart_a] = r.f_stretch_a;
-    f[m.vertex_b] -= r.f_stretch_a;
+    f[to_vertex_b] -= r.f_stretch_a;
     if (store) stored_f_stretch[ss[i].dart_b] = r.f_stretch_b;
   }
 }
 
-void StretchKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+void StretchKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput& in_arg, rift::Vec3* f, bool store) {
+  const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   rift::Vec3* const stored_f_stretch = store ? e_f_stretch.values().data() : nullptr;
   for (std::size_t i = 0; i < n; ++i) {
@@ -273,9 +277,11 @@ void StretchKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t
       }
       continue;
     }
-    f[m.vertex_a] += r.f_stretch_a;
+    const rift::Slot to_vertex_a = m.vertex_a;
+    const rift::Slot to_vertex_b = m.vertex_b;
+    f[to_vertex_a] += r.f_stretch_a;
     if (store) stored_f_stretch[ss[at[i]].dart_a] = r.f_stretch_a;
-    f[m.vertex_b] -= r.f_stretch_a;
+    f[to_vertex_b] -= r.f_stretch_a;
     if (store) stored_f_stretch[ss[at[i]].dart_b] = r.f_stretch_b;
   }
 }
@@ -321,7 +327,8 @@ void StretchKernel::store_terms_of(std::span<const Match> ms, const Stored* ss, 
   }
 }
 
-void StretchKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {
+void StretchKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
+  const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   for (std::size_t i = 0; i < reps.size(); ++i) {
     const Match& m = reps[i];
@@ -331,9 +338,11 @@ void StretchKernel::add_forces_grouped(std::span<const Match> reps, const std::u
       continue;
     }
     const rift::Real count = counts[i];
+    const rift::Slot to_vertex_a = m.vertex_a;
+    const rift::Slot to_vertex_b = m.vertex_b;
     const rift::Vec3 cf0 = count * r.f_stretch_a;
-    f[m.vertex_a] += cf0;
-    f[m.vertex_b] -= cf0;
+    f[to_vertex_a] += cf0;
+    f[to_vertex_b] -= cf0;
     if (terms) {
       terms[i * 2 + 0] = r.f_stretch_a;
       terms[i * 2 + 1] = r.f_stretch_b;
@@ -341,7 +350,8 @@ void StretchKernel::add_forces_grouped(std::span<const Match> reps, const std::u
   }
 }
 
-void StretchKernel::add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {
+void StretchKernel::add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
+  const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint32_t e = at[i];
@@ -352,9 +362,11 @@ void StretchKernel::add_forces_grouped_at(std::span<const Match> reps, const std
       continue;
     }
     const rift::Real count = counts[e];
+    const rift::Slot to_vertex_a = m.vertex_a;
+    const rift::Slot to_vertex_b = m.vertex_b;
     const rift::Vec3 cf0 = count * r.f_stretch_a;
-    f[m.vertex_a] += cf0;
-    f[m.vertex_b] -= cf0;
+    f[to_vertex_a] += cf0;
+    f[to_vertex_b] -= cf0;
     if (terms) {
       terms[i * 2 + 0] = r.f_stretch_a;
       terms[i * 2 + 1] = r.f_stretch_b;
@@ -575,7 +587,8 @@ inline bool ShearKernel::evaluate(const Match& m, const rift::ForceInput& in, co
   return true;
 }
 
-void ShearKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+void ShearKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in_arg, rift::Vec3* f, bool store) {
+  const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   rift::Vec3* const stored_f_shear = store ? e_f_shear.values().data() : nullptr;
   for (std::size_t i = 0; i < ms.size(); ++i) {
@@ -590,18 +603,23 @@ void ShearKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, co
       }
       continue;
     }
-    f[m.vertex_c0] += r.f_shear_c0;
+    const rift::Slot to_vertex_c0 = m.vertex_c0;
+    const rift::Slot to_vertex_c2 = m.vertex_c2;
+    const rift::Slot to_vertex_c1 = m.vertex_c1;
+    const rift::Slot to_vertex_c3 = m.vertex_c3;
+    f[to_vertex_c0] += r.f_shear_c0;
     if (store) stored_f_shear[ss[i].orbit1_c0] = r.f_shear_c0;
-    f[m.vertex_c2] -= r.f_shear_c0;
+    f[to_vertex_c2] -= r.f_shear_c0;
     if (store) stored_f_shear[ss[i].orbit1_c2] = r.f_shear_c2;
-    f[m.vertex_c1] += r.f_shear_c1;
+    f[to_vertex_c1] += r.f_shear_c1;
     if (store) stored_f_shear[ss[i].orbit1_c1] = r.f_shear_c1;
-    f[m.vertex_c3] -= r.f_shear_c1;
+    f[to_vertex_c3] -= r.f_shear_c1;
     if (store) stored_f_shear[ss[i].orbit1_c3] = r.f_shear_c3;
   }
 }
 
-void ShearKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+void ShearKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput& in_arg, rift::Vec3* f, bool store) {
+  const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   rift::Vec3* const stored_f_shear = store ? e_f_shear.values().data() : nullptr;
   for (std::size_t i = 0; i < n; ++i) {
@@ -616,13 +634,17 @@ void ShearKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* 
       }
       continue;
     }
-    f[m.vertex_c0] += r.f_shear_c0;
+    const rift::Slot to_vertex_c0 = m.vertex_c0;
+    const rift::Slot to_vertex_c2 = m.vertex_c2;
+    const rift::Slot to_vertex_c1 = m.vertex_c1;
+    const rift::Slot to_vertex_c3 = m.vertex_c3;
+    f[to_vertex_c0] += r.f_shear_c0;
     if (store) stored_f_shear[ss[at[i]].orbit1_c0] = r.f_shear_c0;
-    f[m.vertex_c2] -= r.f_shear_c0;
+    f[to_vertex_c2] -= r.f_shear_c0;
     if (store) stored_f_shear[ss[at[i]].orbit1_c2] = r.f_shear_c2;
-    f[m.vertex_c1] += r.f_shear_c1;
+    f[to_vertex_c1] += r.f_shear_c1;
     if (store) stored_f_shear[ss[at[i]].orbit1_c1] = r.f_shear_c1;
-    f[m.vertex_c3] -= r.f_shear_c1;
+    f[to_vertex_c3] -= r.f_shear_c1;
     if (store) stored_f_shear[ss[at[i]].orbit1_c3] = r.f_shear_c3;
   }
 }
@@ -679,7 +701,8 @@ void ShearKernel::store_terms_of(std::span<const Match> ms, const Stored* ss, co
   }
 }
 
-void ShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {
+void ShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
+  const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   for (std::size_t i = 0; i < reps.size(); ++i) {
     const Match& m = reps[i];
@@ -689,12 +712,16 @@ void ShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uin
       continue;
     }
     const rift::Real count = counts[i];
+    const rift::Slot to_vertex_c0 = m.vertex_c0;
+    const rift::Slot to_vertex_c2 = m.vertex_c2;
+    const rift::Slot to_vertex_c1 = m.vertex_c1;
+    const rift::Slot to_vertex_c3 = m.vertex_c3;
     const rift::Vec3 cf0 = count * r.f_shear_c0;
-    f[m.vertex_c0] += cf0;
-    f[m.vertex_c2] -= cf0;
+    f[to_vertex_c0] += cf0;
+    f[to_vertex_c2] -= cf0;
     const rift::Vec3 cf2 = count * r.f_shear_c1;
-    f[m.vertex_c1] += cf2;
-    f[m.vertex_c3] -= cf2;
+    f[to_vertex_c1] += cf2;
+    f[to_vertex_c3] -= cf2;
     if (terms) {
       terms[i * 4 + 0] = r.f_shear_c0;
       terms[i * 4 + 1] = r.f_shear_c2;
@@ -704,7 +731,8 @@ void ShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uin
   }
 }
 
-void ShearKernel::add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {
+void ShearKernel::add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
+  const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint32_t e = at[i];
@@ -715,12 +743,16 @@ void ShearKernel::add_forces_grouped_at(std::span<const Match> reps, const std::
       continue;
     }
     const rift::Real count = counts[e];
+    const rift::Slot to_vertex_c0 = m.vertex_c0;
+    const rift::Slot to_vertex_c2 = m.vertex_c2;
+    const rift::Slot to_vertex_c1 = m.vertex_c1;
+    const rift::Slot to_vertex_c3 = m.vertex_c3;
     const rift::Vec3 cf0 = count * r.f_shear_c0;
-    f[m.vertex_c0] += cf0;
-    f[m.vertex_c2] -= cf0;
+    f[to_vertex_c0] += cf0;
+    f[to_vertex_c2] -= cf0;
     const rift::Vec3 cf2 = count * r.f_shear_c1;
-    f[m.vertex_c1] += cf2;
-    f[m.vertex_c3] -= cf2;
+    f[to_vertex_c1] += cf2;
+    f[to_vertex_c3] -= cf2;
     if (terms) {
       terms[i * 4 + 0] = r.f_shear_c0;
       terms[i * 4 + 1] = r.f_shear_c2;
@@ -2221,7 +2253,8 @@ inline bool VolumeShearKernel::evaluate(const Match& m, const rift::ForceInput& 
   return true;
 }
 
-void VolumeShearKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+void VolumeShearKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in_arg, rift::Vec3* f, bool store) {
+  const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   rift::Vec3* const stored_f_volume_shear = store ? e_f_volume_shear.values().data() : nullptr;
   for (std::size_t i = 0; i < ms.size(); ++i) {
@@ -2240,26 +2273,35 @@ void VolumeShearKernel::add_forces_all(std::span<const Match> ms, const Stored* 
       }
       continue;
     }
-    f[m.vertex_b0] += r.f_volume_shear_b0;
+    const rift::Slot to_vertex_b0 = m.vertex_b0;
+    const rift::Slot to_vertex_s22 = m.vertex_s22;
+    const rift::Slot to_vertex_b2 = m.vertex_b2;
+    const rift::Slot to_vertex_s32 = m.vertex_s32;
+    const rift::Slot to_vertex_b4 = m.vertex_b4;
+    const rift::Slot to_vertex_s02 = m.vertex_s02;
+    const rift::Slot to_vertex_b6 = m.vertex_b6;
+    const rift::Slot to_vertex_s12 = m.vertex_s12;
+    f[to_vertex_b0] += r.f_volume_shear_b0;
     if (store) stored_f_volume_shear[ss[i].orbit12_b0] = r.f_volume_shear_b0;
-    f[m.vertex_s22] -= r.f_volume_shear_b0;
+    f[to_vertex_s22] -= r.f_volume_shear_b0;
     if (store) stored_f_volume_shear[ss[i].orbit12_s22] = r.f_volume_shear_s22;
-    f[m.vertex_b2] += r.f_volume_shear_b2;
+    f[to_vertex_b2] += r.f_volume_shear_b2;
     if (store) stored_f_volume_shear[ss[i].orbit12_b2] = r.f_volume_shear_b2;
-    f[m.vertex_s32] -= r.f_volume_shear_b2;
+    f[to_vertex_s32] -= r.f_volume_shear_b2;
     if (store) stored_f_volume_shear[ss[i].orbit12_s32] = r.f_volume_shear_s32;
-    f[m.vertex_b4] += r.f_volume_shear_b4;
+    f[to_vertex_b4] += r.f_volume_shear_b4;
     if (store) stored_f_volume_shear[ss[i].orbit12_b4] = r.f_volume_shear_b4;
-    f[m.vertex_s02] -= r.f_volume_shear_b4;
+    f[to_vertex_s02] -= r.f_volume_shear_b4;
     if (store) stored_f_volume_shear[ss[i].orbit12_s02] = r.f_volume_shear_s02;
-    f[m.vertex_b6] += r.f_volume_shear_b6;
+    f[to_vertex_b6] += r.f_volume_shear_b6;
     if (store) stored_f_volume_shear[ss[i].orbit12_b6] = r.f_volume_shear_b6;
-    f[m.vertex_s12] -= r.f_volume_shear_b6;
+    f[to_vertex_s12] -= r.f_volume_shear_b6;
     if (store) stored_f_volume_shear[ss[i].orbit12_s12] = r.f_volume_shear_s12;
   }
 }
 
-void VolumeShearKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store) {
+void VolumeShearKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput& in_arg, rift::Vec3* f, bool store) {
+  const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   rift::Vec3* const stored_f_volume_shear = store ? e_f_volume_shear.values().data() : nullptr;
   for (std::size_t i = 0; i < n; ++i) {
@@ -2278,21 +2320,29 @@ void VolumeShearKernel::add_forces_at(std::span<const Match> ms, const std::uint
       }
       continue;
     }
-    f[m.vertex_b0] += r.f_volume_shear_b0;
+    const rift::Slot to_vertex_b0 = m.vertex_b0;
+    const rift::Slot to_vertex_s22 = m.vertex_s22;
+    const rift::Slot to_vertex_b2 = m.vertex_b2;
+    const rift::Slot to_vertex_s32 = m.vertex_s32;
+    const rift::Slot to_vertex_b4 = m.vertex_b4;
+    const rift::Slot to_vertex_s02 = m.vertex_s02;
+    const rift::Slot to_vertex_b6 = m.vertex_b6;
+    const rift::Slot to_vertex_s12 = m.vertex_s12;
+    f[to_vertex_b0] += r.f_volume_shear_b0;
     if (store) stored_f_volume_shear[ss[at[i]].orbit12_b0] = r.f_volume_shear_b0;
-    f[m.vertex_s22] -= r.f_volume_shear_b0;
+    f[to_vertex_s22] -= r.f_volume_shear_b0;
     if (store) stored_f_volume_shear[ss[at[i]].orbit12_s22] = r.f_volume_shear_s22;
-    f[m.vertex_b2] += r.f_volume_shear_b2;
+    f[to_vertex_b2] += r.f_volume_shear_b2;
     if (store) stored_f_volume_shear[ss[at[i]].orbit12_b2] = r.f_volume_shear_b2;
-    f[m.vertex_s32] -= r.f_volume_shear_b2;
+    f[to_vertex_s32] -= r.f_volume_shear_b2;
     if (store) stored_f_volume_shear[ss[at[i]].orbit12_s32] = r.f_volume_shear_s32;
-    f[m.vertex_b4] += r.f_volume_shear_b4;
+    f[to_vertex_b4] += r.f_volume_shear_b4;
     if (store) stored_f_volume_shear[ss[at[i]].orbit12_b4] = r.f_volume_shear_b4;
-    f[m.vertex_s02] -= r.f_volume_shear_b4;
+    f[to_vertex_s02] -= r.f_volume_shear_b4;
     if (store) stored_f_volume_shear[ss[at[i]].orbit12_s02] = r.f_volume_shear_s02;
-    f[m.vertex_b6] += r.f_volume_shear_b6;
+    f[to_vertex_b6] += r.f_volume_shear_b6;
     if (store) stored_f_volume_shear[ss[at[i]].orbit12_b6] = r.f_volume_shear_b6;
-    f[m.vertex_s12] -= r.f_volume_shear_b6;
+    f[to_vertex_s12] -= r.f_volume_shear_b6;
     if (store) stored_f_volume_shear[ss[at[i]].orbit12_s12] = r.f_volume_shear_s12;
   }
 }
@@ -2371,7 +2421,8 @@ void VolumeShearKernel::store_terms_of(std::span<const Match> ms, const Stored* 
   }
 }
 
-void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {
+void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
+  const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   for (std::size_t i = 0; i < reps.size(); ++i) {
     const Match& m = reps[i];
@@ -2381,18 +2432,26 @@ void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const st
       continue;
     }
     const rift::Real count = counts[i];
+    const rift::Slot to_vertex_b0 = m.vertex_b0;
+    const rift::Slot to_vertex_s22 = m.vertex_s22;
+    const rift::Slot to_vertex_b2 = m.vertex_b2;
+    const rift::Slot to_vertex_s32 = m.vertex_s32;
+    const rift::Slot to_vertex_b4 = m.vertex_b4;
+    const rift::Slot to_vertex_s02 = m.vertex_s02;
+    const rift::Slot to_vertex_b6 = m.vertex_b6;
+    const rift::Slot to_vertex_s12 = m.vertex_s12;
     const rift::Vec3 cf0 = count * r.f_volume_shear_b0;
-    f[m.vertex_b0] += cf0;
-    f[m.vertex_s22] -= cf0;
+    f[to_vertex_b0] += cf0;
+    f[to_vertex_s22] -= cf0;
     const rift::Vec3 cf2 = count * r.f_volume_shear_b2;
-    f[m.vertex_b2] += cf2;
-    f[m.vertex_s32] -= cf2;
+    f[to_vertex_b2] += cf2;
+    f[to_vertex_s32] -= cf2;
     const rift::Vec3 cf4 = count * r.f_volume_shear_b4;
-    f[m.vertex_b4] += cf4;
-    f[m.vertex_s02] -= cf4;
+    f[to_vertex_b4] += cf4;
+    f[to_vertex_s02] -= cf4;
     const rift::Vec3 cf6 = count * r.f_volume_shear_b6;
-    f[m.vertex_b6] += cf6;
-    f[m.vertex_s12] -= cf6;
+    f[to_vertex_b6] += cf6;
+    f[to_vertex_s12] -= cf6;
     if (terms) {
       terms[i * 8 + 0] = r.f_volume_shear_b0;
       terms[i * 8 + 1] = r.f_volume_shear_s22;
@@ -2406,7 +2465,8 @@ void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const st
   }
 }
 
-void VolumeShearKernel::add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms) {
+void VolumeShearKernel::add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
+  const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint32_t e = at[i];
@@ -2417,18 +2477,26 @@ void VolumeShearKernel::add_forces_grouped_at(std::span<const Match> reps, const
       continue;
     }
     const rift::Real count = counts[e];
+    const rift::Slot to_vertex_b0 = m.vertex_b0;
+    const rift::Slot to_vertex_s22 = m.vertex_s22;
+    const rift::Slot to_vertex_b2 = m.vertex_b2;
+    const rift::Slot to_vertex_s32 = m.vertex_s32;
+    const rift::Slot to_vertex_b4 = m.vertex_b4;
+    const rift::Slot to_vertex_s02 = m.vertex_s02;
+    const rift::Slot to_vertex_b6 = m.vertex_b6;
+    const rift::Slot to_vertex_s12 = m.vertex_s12;
     const rift::Vec3 cf0 = count * r.f_volume_shear_b0;
-    f[m.vertex_b0] += cf0;
-    f[m.vertex_s22] -= cf0;
+    f[to_vertex_b0] += cf0;
+    f[to_vertex_s22] -= cf0;
     const rift::Vec3 cf2 = count * r.f_volume_shear_b2;
-    f[m.vertex_b2] += cf2;
-    f[m.vertex_s32] -= cf2;
+    f[to_vertex_b2] += cf2;
+    f[to_vertex_s32] -= cf2;
     const rift::Vec3 cf4 = count * r.f_volume_shear_b4;
-    f[m.vertex_b4] += cf4;
-    f[m.vertex_s02] -= cf4;
+    f[to_vertex_b4] += cf4;
+    f[to_vertex_s02] -= cf4;
     const rift::Vec3 cf6 = count * r.f_volume_shear_b6;
-    f[m.vertex_b6] += cf6;
-    f[m.vertex_s12] -= cf6;
+    f[to_vertex_b6] += cf6;
+    f[to_vertex_s12] -= cf6;
     if (terms) {
       terms[i * 8 + 0] = r.f_volume_shear_b0;
       terms[i * 8 + 1] = r.f_volume_shear_s22;
