@@ -344,6 +344,26 @@ TEST_F(Cli, BenchJson) {
   EXPECT_GT(j["setup_ms"].get<double>(), 0);
   EXPECT_GT(j["peak_rss_mb"].get<double>(), 1);
   EXPECT_LT(j["peak_rss_mb"].get<double>(), 1e5);
+  // The set-up's phases, in order, within the set-up's time, each with the
+  // resident memory when it ended.
+  std::vector<std::string> names;
+  double sum = 0;
+  for (const auto& p : j["setup_phases"]) {
+    names.push_back(p["name"].get<std::string>());
+    EXPECT_GE(p["ms"].get<double>(), 0) << names.back();
+    EXPECT_GT(p["rss_mb"].get<double>(), 1) << names.back();
+    sum += p["ms"].get<double>();
+  }
+  // The test pack's interaction is named by its kernel.
+  ASSERT_EQ(names.size(), 9u);
+  EXPECT_EQ(names[6].rfind("interaction test_", 0), 0u) << names[6];
+  names[6] = "interaction";
+  const std::vector<std::string> expected = {
+      "mesh",          "assembly",    "pack inits", "masses",    "notches, handles, loads",
+      "vertex masses", "interaction", "criteria",   "integrator"};
+  EXPECT_EQ(names, expected);
+  EXPECT_LE(sum, j["setup_ms"].get<double>() + 0.01);
+  EXPECT_GT(sum, 0.5 * j["setup_ms"].get<double>());
 }
 
 TEST_F(Cli, BadScenesExitWithFileLineAndReason) {

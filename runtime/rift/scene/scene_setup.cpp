@@ -273,13 +273,17 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
                                              const SetupOptions& options, SetupReport* report) {
   SetupReport local;
   SetupReport& rep = report ? *report : local;
+  rep.phases = SetupPhases{};
   // The mesh's points and elements are given back once assembled (tens of
   // MB at 10^6 vertices, which would otherwise stay through the set-up).
   GMap map = [&] {
     MeshData mesh = is_generator_spec(scene.mesh.source) ? make_generated_mesh(scene.mesh.source)
                                                          : read_mesh_file(scene.mesh.source);
     place_mesh(mesh, scene.mesh);
-    return assemble_gmap(mesh, &rep.assembly);
+    rep.phases.end("mesh");
+    GMap assembled = assemble_gmap(mesh, &rep.assembly);
+    rep.phases.end("assembly");
+    return assembled;
   }();
   const int n = map.dimension();
 
@@ -333,6 +337,7 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
     declare_embeddings(m, p->embeddings());
     p->initialise(m);
   }
+  rep.phases.end("pack inits");
   const Catalog catalog = packs.catalog(n);
   std::vector<std::string> interaction_names, criterion_names;
   for (const ComponentUse& u : scene.interactions)
@@ -353,6 +358,7 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
     throw InputError(scene.path, 0, std::string("cannot set the masses: ") + e.what());
   }
 
+  rep.phases.end("masses");
   // Notches first: handles and loads select among the cut mesh's vertices.
   cut_notches(scene, packs, used, *sim, rep);
   add_handles(scene, *sim, rep);
@@ -372,7 +378,8 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
   for (const ComponentUse& u : scene.criteria) {
     sim->add_criterion(packs.pack_of_criterion(u.name, n)->make_criterion(u));
   }
-  sim->initialise();
+  rep.phases.end("notches, handles, loads");
+  sim->initialise(&rep.phases);
   rep.total_mass = sim->total_mass();
   rep.warnings = inert_component_warnings(scene, packs, *sim);
   if (is_implicit(scene.integrator) && scene.implicit.newton_iterations > 1 &&

@@ -10,6 +10,7 @@
 #include "rift/mesh/assemble.hpp"
 #include "rift/pack/pack.hpp"
 #include "rift/scene/scene.hpp"
+#include "rift/sim/setup_phases.hpp"
 #include "rift/sim/simulation.hpp"
 
 namespace rift {
@@ -25,6 +26,10 @@ struct SetupReport {
   /// tetrahedron, on hexahedra, and criteria that read only forces no
   /// interaction of the scene stores here.
   std::vector<std::string> warnings;
+  /// The set-up's phases in order, timed from build_simulation's start
+  /// (mesh, assembly, pack inits, masses, notches / handles / loads, then
+  /// Simulation::initialise's).
+  SetupPhases phases;
 };
 
 struct SetupOptions {

@@ -68,7 +68,7 @@ void Simulation::set_density(Real density) {
   }
 }
 
-void Simulation::initialise() {
+void Simulation::initialise(SetupPhases* phases) {
   if (keeps_corner_masses()) {
     update_all_vertex_masses(map_, corner_mass_, vertex_mass_);
   } else {
@@ -77,11 +77,13 @@ void Simulation::initialise() {
   }
   if (!settings_.rewrites && !criteria_.empty())
     throw std::invalid_argument("a simulation with criteria rewrites its map (settings.rewrites)");
+  if (phases) phases->end("vertex masses");
   for (auto& model : models_) {
     model->set_grouping(settings_.group_interactions);
     model->set_rewrites(settings_.rewrites);
     model->set_jacobians_used(is_implicit(settings_.integrator));
     model->initialise(map_);
+    if (phases) phases->end("interaction " + model->name());
     if (!keeps_corner_masses()) {
       const ColumnBase* c = map_.find_column(state::kCornerMass);
       if (c && c->allocated()) {
@@ -93,6 +95,7 @@ void Simulation::initialise() {
   }
   for (auto& criterion : criteria_)
     criterion->initialise(map_);
+  if (phases) phases->end("criteria");
   if (Embedding<Vec3> f = map_.embedding<Vec3>(state::kVertexForce)) {
     if (f.orbit() == Orbit::cell(0, map_.dimension())) vertex_force_ = f;
   }
@@ -119,6 +122,7 @@ void Simulation::initialise() {
       });
     }
   }
+  if (phases) phases->end("integrator");
   initialised_ = true;
 }
 

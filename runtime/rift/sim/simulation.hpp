@@ -21,6 +21,7 @@
 #include "rift/sim/integrator.hpp"
 #include "rift/sim/mass_model.hpp"
 #include "rift/sim/obstacles.hpp"
+#include "rift/sim/setup_phases.hpp"
 
 namespace rift {
 
@@ -98,7 +99,9 @@ class Simulation {
 
   /// Computes vertex masses and initialises every interaction. Call once,
   /// after masses and pins are set and models added.
-  void initialise();
+  /// With `phases`, ends a phase after the vertex masses, after each
+  /// interaction ("interaction NAME") and after the criteria.
+  void initialise(SetupPhases* phases = nullptr);
 
   /// One step (§3.3, Fig. 3, starting from the forces):
   ///  1. every interaction computes its forces at the current state and
