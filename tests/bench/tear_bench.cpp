@@ -187,24 +187,15 @@ void BM_OneTear(benchmark::State& state, rift::GridKind kind, bool inner) {
 // whose tear counts followed the machine's speed), so with a count of its
 // own each binary and each run of a binary tears the same candidates, in the
 // same order, and two binaries compare at equal work.
-BENCHMARK_CAPTURE(BM_OneTear, quads, rift::GridKind::Quad, false)
-    ->Arg(10)
-    ->Arg(100)
-    ->Arg(1000)
-    ->Iterations(4000)
-    ->UseManualTime()
-    ->Unit(benchmark::kMicrosecond);
+static void tear_runs(benchmark::internal::Benchmark* b) {
+  b->Arg(10)->Arg(100)->Arg(1000)->Iterations(4000)->UseManualTime()->Unit(benchmark::kMicrosecond);
+}
+BENCHMARK_CAPTURE(BM_OneTear, quads, rift::GridKind::Quad, false)->Apply(tear_runs);
 // The same tear at every size: a spring between two inner vertices of an
 // untorn part of the cloth (inner_tears). The tears above draw any spring, and
 // the small cloth's are mostly at its border or next to earlier tears (46
 // darts a tear at 10x10 against 72 at 1000x1000): this one compares the
 // sizes at equal work, tear for tear.
-BENCHMARK_CAPTURE(BM_OneTear, quads_inner, rift::GridKind::Quad, true)
-    ->Arg(10)
-    ->Arg(100)
-    ->Arg(1000)
-    ->Iterations(4000)
-    ->UseManualTime()
-    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_OneTear, quads_inner, rift::GridKind::Quad, true)->Apply(tear_runs);
 
 BENCHMARK_MAIN();
