@@ -80,7 +80,7 @@ int run_bench(const BenchOptions& options, const PackRegistry& packs) {
         "{{\"scene\": \"{}\", \"ns_per_step\": {:.0f}, \"mean_ns_per_step\": {:.0f}, "
         "\"min_ns_per_step\": {:.0f}, \"ns_per_vertex\": {:.2f}, \"steps\": {}, "
         "\"tears\": {}, \"vertices\": {}, "
-        "\"elements\": {}, \"threads\": {}, \"setup_ms\": {:.1f}, \"peak_rss_mb\": {:.1f}, "
+        "\"elements\": {}, \"threads\": {}, \"setup_ms\": {:.3f}, \"peak_rss_mb\": {:.1f}, "
         "\"setup_phases\": [{}]}}\n",
         scene.name, median, mean, sorted.front(), ns_per_vertex, steps, sim->tears(), vertices,
         elements, thread_count(), setup_ms, peak_rss_mb, phases);

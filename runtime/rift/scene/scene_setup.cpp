@@ -392,6 +392,7 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
           why);
     }
   }
+  rep.phases.end("checks");
   return sim;
 }
 

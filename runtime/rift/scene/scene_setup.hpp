@@ -28,7 +28,8 @@ struct SetupReport {
   std::vector<std::string> warnings;
   /// The set-up's phases in order, timed from build_simulation's start
   /// (mesh, assembly, pack inits, masses, notches / handles / loads, then
-  /// Simulation::initialise's).
+  /// Simulation::initialise's, then the checks that give warnings): they
+  /// cover the whole set-up.
   SetupPhases phases;
 };
 
