@@ -4,6 +4,7 @@
 // touched the map.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -22,7 +23,11 @@ inline Orbit element_orbit(int dimension) {
 
 /// Area of a polygon (2D map) or volume of a solid (3D map) of the element
 /// containing dart `element`, from the vertex positions. Solids are measured
-/// as a fan of tetrahedra from their centroid (exact for star-shaped elements).
+/// as a fan of tetrahedra from the mean of their corners (exact for
+/// star-shaped elements with planar faces): each face a fan from the vertex
+/// of its smallest dart, the faces added in the order of their smallest
+/// darts, so that the whole map's measures (one pass over its darts) and
+/// this function's give the same bits.
 Real element_measure(const GMap& map, Dart element, const Embedding<Vec3>& position);
 
 /// Sets corner_mass so that each element gets `density * measure`, split
@@ -34,11 +39,13 @@ Real assign_corner_masses_by_density(GMap& map, Real density, Embedding<Real>& c
 Real assign_corner_masses_by_total(GMap& map, Real total_mass, Embedding<Real>& corner_mass,
                                    const Embedding<Vec3>& position);
 
-/// One dart of each element, in for_each_cell's order, and the element's
-/// mass (density times its measure): what the corner masses are shared from.
+/// One dart of each element, in for_each_cell's order, the element's mass
+/// (density times its measure) and its corners' count: what the corner
+/// masses are shared from.
 struct ElementMasses {
   std::vector<Dart> darts;
   std::vector<Real> masses;
+  std::vector<std::uint32_t> corners;
 };
 
 /// The elements' masses that assign_corner_masses_by_density shares (the
