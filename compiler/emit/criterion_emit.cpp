@@ -111,6 +111,10 @@ void declare_criterion(Writer& w, const lower::CriterionPlan& plan, const PackMo
       "void collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const override;");
   w.line("bool apply(rift::GMap& g, const rift::TearCandidate& candidate,");
   w.line("           std::vector<rift::Dart>& touched) override;");
+  w.line("void topology_changed(const rift::GMap& g, std::span<const rift::Dart> touched,");
+  w.line("                      std::uint64_t from) override {");
+  w.line("  cells_.note_changed(g, touched, from);");
+  w.line("}");
   w.line();
   w.middle(" private:");
   w.line("std::string name_ = " + quote(crit.name.text) + ";");

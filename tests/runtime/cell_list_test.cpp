@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <random>
 #include <set>
 #include <string>
@@ -74,6 +75,108 @@ TEST(CellList, KeptWhileOnlyValuesChangeAndRebuiltForAnotherMapOrOrbit) {
   GMap h = assemble_gmap(make_grid(GridKind::Tri, 6, 5));
   EXPECT_EQ(list.of(h, Orbit{0, 1}), cells_by_marks(h, Orbit{0, 1}));
   EXPECT_EQ(list.rebuilds(), 3u);
+}
+
+/// Every dart's links and liveness, to tell which darts a change touched.
+struct LinkSnapshot {
+  std::vector<std::array<Dart, kMaxDimension + 1>> links;
+  std::vector<bool> alive;
+
+  explicit LinkSnapshot(const GMap& g) {
+    for (Dart d = 0; d < g.capacity(); ++d) {
+      std::array<Dart, kMaxDimension + 1> l{};
+      for (int i = 0; i <= g.dimension(); ++i)
+        l[static_cast<std::size_t>(i)] = g.is_alive(d) ? g.alpha(d, i) : kNoDart;
+      links.push_back(l);
+      alive.push_back(g.is_alive(d));
+    }
+  }
+  /// The darts created, deleted or relinked since `before` was taken.
+  static std::vector<Dart> touched(const LinkSnapshot& before, const LinkSnapshot& after) {
+    std::vector<Dart> out;
+    for (std::size_t d = 0; d < after.links.size(); ++d) {
+      if (d >= before.links.size() || before.alive[d] != after.alive[d] ||
+          before.links[d] != after.links[d])
+        out.push_back(static_cast<Dart>(d));
+    }
+    return out;
+  }
+};
+
+// Told which darts each change touched, the lists follow cuts, new and
+// deleted darts by walking those darts' orbits only: never built anew, and
+// always what a fresh marking walk gives, on surfaces and on a solid, for
+// orbits of one, two and three links.
+TEST(CellList, FollowsTheChangesItIsToldOfWithoutBuildingAnew) {
+  std::mt19937 rng(17);
+  std::vector<GMap> maps;
+  for (GridKind kind : {GridKind::Quad, GridKind::Tri, GridKind::Mix})
+    maps.push_back(assemble_gmap(make_grid(kind, 14, 11)));
+  maps.push_back(assemble_gmap(make_block(BlockKind::Hex, 4, 3, 3)));
+  maps.push_back(assemble_gmap(make_block(BlockKind::Tet, 3, 3, 2)));
+  for (GMap& g : maps) {
+    const int n = g.dimension();
+    std::vector<Orbit> orbits = {Orbit{0}, Orbit::cell(0, n), Orbit::cell(1, n),
+                                 Orbit::cell(n - 1, n), Orbit::all(n - 1)};
+    if (n == 3) orbits.push_back(Orbit{0, 1, 3});
+    std::vector<CellList> lists(orbits.size());
+    for (std::size_t k = 0; k < orbits.size(); ++k)
+      lists[k].of(g, orbits[k]);
+    for (int round = 0; round < 6; ++round) {
+      const LinkSnapshot before(g);
+      const std::uint64_t from = g.topology_version();
+      cut_randomly(g, 4, rng);
+      if (round % 2 == 1) {
+        // A dart made and one deleted (its place reused by the next round's
+        // new dart): cells that appear and disappear.
+        g.create_dart();
+        Dart element = static_cast<Dart>(rng() % g.capacity());
+        while (!g.is_alive(element))
+          element = static_cast<Dart>((element + 1) % g.capacity());
+        std::vector<Dart> cut;
+        g.for_each_in_orbit(element, Orbit::all(n - 1), [&](Dart d) { cut.push_back(d); });
+        for (Dart d : cut) {
+          if (!g.is_free(d, n)) g.unsew(d, n);
+        }
+        for (Dart d : cut)
+          g.delete_dart(d);
+      }
+      const std::vector<Dart> touched = LinkSnapshot::touched(before, LinkSnapshot(g));
+      for (std::size_t k = 0; k < orbits.size(); ++k) {
+        lists[k].note_changed(g, touched, from);
+        ASSERT_EQ(lists[k].of(g, orbits[k]), cells_by_marks(g, orbits[k]))
+            << "dimension " << n << ", orbit " << orbits[k].str() << ", round " << round;
+      }
+    }
+    for (std::size_t k = 0; k < orbits.size(); ++k) {
+      EXPECT_EQ(lists[k].rebuilds(), 1u) << orbits[k].str();
+      EXPECT_EQ(lists[k].updates(), 6u) << orbits[k].str();
+    }
+  }
+}
+
+// A change the list was not told of, or told of from another version, makes
+// it build the list anew rather than follow half of what happened.
+TEST(CellList, BuildsAnewAfterAChangeItWasNotToldOf) {
+  std::mt19937 rng(5);
+  GMap g = assemble_gmap(make_grid(GridKind::Quad, 10, 8));
+  CellList list;
+  list.of(g, Orbit{1, 2});
+  // Not told at all.
+  cut_randomly(g, 3, rng);
+  EXPECT_EQ(list.of(g, Orbit{1, 2}), cells_by_marks(g, Orbit{1, 2}));
+  EXPECT_EQ(list.rebuilds(), 2u);
+  // Told of the second of two changes only.
+  const std::uint64_t first = g.topology_version();
+  cut_randomly(g, 3, rng);
+  LinkSnapshot before(g);
+  const std::uint64_t second = g.topology_version();
+  cut_randomly(g, 3, rng);
+  list.note_changed(g, LinkSnapshot::touched(before, LinkSnapshot(g)), second);
+  EXPECT_EQ(list.of(g, Orbit{1, 2}), cells_by_marks(g, Orbit{1, 2}));
+  EXPECT_EQ(list.rebuilds(), 3u);
+  EXPECT_EQ(list.updates(), 0u);
+  EXPECT_NE(first, second);
 }
 
 /// A stand-in for a generated criterion: candidates at the edges whose first

@@ -8,6 +8,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "rift/core/parallel.hpp"
@@ -46,6 +48,11 @@ class CellCollection {
     parallel_blocks(cells.size(), kParallelBlock, run);
     for (std::size_t b = 0; b < blocks; ++b)
       out.insert(out.end(), found_[b].begin(), found_[b].end());
+  }
+
+  /// Rewrites touched these darts since topology version `from` (CellList::note_changed).
+  void note_changed(const GMap& g, std::span<const Dart> touched, std::uint64_t from) {
+    cells_.note_changed(g, touched, from);
   }
 
   /// The cell list, for tests.

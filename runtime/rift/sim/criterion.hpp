@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -43,6 +44,16 @@ class Criterion {
   /// have changed since collect(): the rule is matched again, and the call
   /// returns false when it no longer applies. Appends touched darts.
   virtual bool apply(GMap& map, const TearCandidate& candidate, std::vector<Dart>& touched) = 0;
+  /// After rewrites took the map from topology version `from` to its
+  /// current one, touching exactly the darts of `touched`: a criterion that
+  /// keeps anything derived from the links (its cells, CellList) follows
+  /// them here instead of building it anew from the whole map.
+  virtual void topology_changed(const GMap& map, std::span<const Dart> touched,
+                                std::uint64_t from) {
+    (void)map;
+    (void)touched;
+    (void)from;
+  }
 };
 
 }  // namespace rift

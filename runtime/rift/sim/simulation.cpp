@@ -123,6 +123,7 @@ void Simulation::initialise(SetupPhases* phases) {
     }
   }
   if (phases) phases->end("integrator");
+  synced_version_ = map_.topology_version();
   initialised_ = true;
 }
 
@@ -385,6 +386,9 @@ void Simulation::on_topology_changed(std::span<const Dart> touched) {
   map_.free_mark(m);
   for (auto& model : models_)
     model->rematch(map_, region_);
+  for (auto& criterion : criteria_)
+    criterion->topology_changed(map_, touched, synced_version_);
+  synced_version_ = map_.topology_version();
   if (handles_) handles_->topology_changed();
   if (implicit_) implicit_->topology_changed();
   bdf2_.restart();  // the slots' history no longer matches the map

@@ -214,6 +214,10 @@ class Simulation {
   Real external_work_ = 0;
   std::vector<Dart> region_;
   std::vector<std::unique_ptr<Criterion>> criteria_;
+  // The map's topology version when on_topology_changed (or initialise) last
+  // brought everything derived from the links up to date: the rewrites the
+  // next call reports started there (Criterion::topology_changed).
+  std::uint64_t synced_version_ = 0;
   std::vector<TearCandidate> candidates_;
   std::vector<Dart> touched_;
   std::size_t tears_ = 0, tears_last_step_ = 0;

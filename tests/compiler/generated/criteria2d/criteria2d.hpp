@@ -50,6 +50,10 @@ class StretchStrainCriterion final : public rift::Criterion {
   void collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const override;
   bool apply(rift::GMap& g, const rift::TearCandidate& candidate,
              std::vector<rift::Dart>& touched) override;
+  void topology_changed(const rift::GMap& g, std::span<const rift::Dart> touched,
+                        std::uint64_t from) override {
+    cells_.note_changed(g, touched, from);
+  }
 
  private:
   std::string name_ = "stretch_strain";
@@ -76,6 +80,10 @@ class StretchForceCriterion final : public rift::Criterion {
   void collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const override;
   bool apply(rift::GMap& g, const rift::TearCandidate& candidate,
              std::vector<rift::Dart>& touched) override;
+  void topology_changed(const rift::GMap& g, std::span<const rift::Dart> touched,
+                        std::uint64_t from) override {
+    cells_.note_changed(g, touched, from);
+  }
 
  private:
   std::string name_ = "stretch_force";
@@ -102,6 +110,10 @@ class SpringSplitCriterion final : public rift::Criterion {
   void collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const override;
   bool apply(rift::GMap& g, const rift::TearCandidate& candidate,
              std::vector<rift::Dart>& touched) override;
+  void topology_changed(const rift::GMap& g, std::span<const rift::Dart> touched,
+                        std::uint64_t from) override {
+    cells_.note_changed(g, touched, from);
+  }
 
  private:
   std::string name_ = "spring_split";
@@ -127,6 +139,10 @@ class ShearForceCriterion final : public rift::Criterion {
   void collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const override;
   bool apply(rift::GMap& g, const rift::TearCandidate& candidate,
              std::vector<rift::Dart>& touched) override;
+  void topology_changed(const rift::GMap& g, std::span<const rift::Dart> touched,
+                        std::uint64_t from) override {
+    cells_.note_changed(g, touched, from);
+  }
 
  private:
   std::string name_ = "shear_force";
@@ -152,6 +168,10 @@ class BendForceCriterion final : public rift::Criterion {
   void collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const override;
   bool apply(rift::GMap& g, const rift::TearCandidate& candidate,
              std::vector<rift::Dart>& touched) override;
+  void topology_changed(const rift::GMap& g, std::span<const rift::Dart> touched,
+                        std::uint64_t from) override {
+    cells_.note_changed(g, touched, from);
+  }
 
  private:
   std::string name_ = "bend_force";
@@ -178,6 +198,10 @@ class ElementStressCriterion final : public rift::Criterion {
   void collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const override;
   bool apply(rift::GMap& g, const rift::TearCandidate& candidate,
              std::vector<rift::Dart>& touched) override;
+  void topology_changed(const rift::GMap& g, std::span<const rift::Dart> touched,
+                        std::uint64_t from) override {
+    cells_.note_changed(g, touched, from);
+  }
 
  private:
   std::string name_ = "element_stress";
@@ -204,6 +228,10 @@ class InteractionForceCriterion final : public rift::Criterion {
   void collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const override;
   bool apply(rift::GMap& g, const rift::TearCandidate& candidate,
              std::vector<rift::Dart>& touched) override;
+  void topology_changed(const rift::GMap& g, std::span<const rift::Dart> touched,
+                        std::uint64_t from) override {
+    cells_.note_changed(g, touched, from);
+  }
 
  private:
   std::string name_ = "interaction_force";
@@ -231,6 +259,10 @@ class VertexStressCriterion final : public rift::Criterion {
   void collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const override;
   bool apply(rift::GMap& g, const rift::TearCandidate& candidate,
              std::vector<rift::Dart>& touched) override;
+  void topology_changed(const rift::GMap& g, std::span<const rift::Dart> touched,
+                        std::uint64_t from) override {
+    cells_.note_changed(g, touched, from);
+  }
 
  private:
   std::string name_ = "vertex_stress";
@@ -258,6 +290,10 @@ class VertexEnergyCriterion final : public rift::Criterion {
   void collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const override;
   bool apply(rift::GMap& g, const rift::TearCandidate& candidate,
              std::vector<rift::Dart>& touched) override;
+  void topology_changed(const rift::GMap& g, std::span<const rift::Dart> touched,
+                        std::uint64_t from) override {
+    cells_.note_changed(g, touched, from);
+  }
 
  private:
   std::string name_ = "vertex_energy";
@@ -291,6 +327,10 @@ class VertexSumCriterion final : public rift::Criterion {
   void collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const override;
   bool apply(rift::GMap& g, const rift::TearCandidate& candidate,
              std::vector<rift::Dart>& touched) override;
+  void topology_changed(const rift::GMap& g, std::span<const rift::Dart> touched,
+                        std::uint64_t from) override {
+    cells_.note_changed(g, touched, from);
+  }
 
  private:
   std::string name_ = "vertex_sum";
@@ -317,6 +357,10 @@ class AtomicEdgeCriterion final : public rift::Criterion {
   void collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const override;
   bool apply(rift::GMap& g, const rift::TearCandidate& candidate,
              std::vector<rift::Dart>& touched) override;
+  void topology_changed(const rift::GMap& g, std::span<const rift::Dart> touched,
+                        std::uint64_t from) override {
+    cells_.note_changed(g, touched, from);
+  }
 
  private:
   std::string name_ = "atomic_edge";
@@ -345,6 +389,10 @@ class GlobalEdgeCriterion final : public rift::Criterion {
   void collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const override;
   bool apply(rift::GMap& g, const rift::TearCandidate& candidate,
              std::vector<rift::Dart>& touched) override;
+  void topology_changed(const rift::GMap& g, std::span<const rift::Dart> touched,
+                        std::uint64_t from) override {
+    cells_.note_changed(g, touched, from);
+  }
 
  private:
   std::string name_ = "global_edge";
