@@ -16,6 +16,7 @@
 
 #include "../physics/physics_setup.hpp"
 #include "../reference/paper_cloth.hpp"
+#include "rift/gmap/cell_list.hpp"
 
 namespace {
 
@@ -199,3 +200,54 @@ BENCHMARK_CAPTURE(BM_OneTear, quads, rift::GridKind::Quad, false)->Apply(tear_ru
 BENCHMARK_CAPTURE(BM_OneTear, quads_inner, rift::GridKind::Quad, true)->Apply(tear_runs);
 
 BENCHMARK_MAIN();
+
+// What a criterion's cells cost after a tear (issue 12, "a tear costs what it
+// touches"): the cells of one orbit type as CellList keeps them, brought up
+// to date after each tear of the cloth, either by following the touched darts
+// (note_changed, what Simulation::on_topology_changed now does) or by
+// listing them anew from the whole map (what every tearing step did before).
+// <0> has a slotted attachment (for_each_cell's fast path); <0,2> (the edge
+// criteria's orbit) and <1,2> (the vertices') are walked with marks.
+void BM_CellsAfterTear(benchmark::State& state, rift::Orbit orbit, bool follow) {
+  const int n = static_cast<int>(state.range(0));
+  static std::map<int, TearingCloth> cloths;
+  if (!cloths.count(n)) cloths.emplace(n, inner_tears(rift::GridKind::Quad, n));
+  TearingCloth& c = cloths.at(n);
+  rift::CellList cells;
+  cells.of(c.sim->map(), orbit);
+  std::vector<rift::Dart> touched;
+  std::uint64_t from = 0;
+  for (auto _ : state) {
+    for (;;) {
+      if (c.next == c.candidates.size()) {
+        c = inner_tears(rift::GridKind::Quad, n);
+        cells.of(c.sim->map(), orbit);
+      }
+      const rift::TearCandidate& cand = c.candidates[c.next++];
+      if (!c.sim->map().is_alive(cand.at)) continue;
+      touched.clear();
+      from = c.sim->map().topology_version();
+      if (!c.sim->criteria()[0]->apply(c.sim->map(), cand, touched)) continue;
+      c.sim->on_topology_changed(touched);
+      break;
+    }
+    const double t0 = thread_seconds();
+    if (follow) cells.note_changed(c.sim->map(), touched, from);
+    benchmark::DoNotOptimize(cells.of(c.sim->map(), orbit).size());
+    state.SetIterationTime(thread_seconds() - t0);
+  }
+  state.counters["cells"] = static_cast<double>(cells.of(c.sim->map(), orbit).size());
+  state.counters["rebuilds"] = static_cast<double>(cells.rebuilds());
+}
+
+static void cells_runs(benchmark::internal::Benchmark* b) {
+  b->Arg(100)->Arg(1000)->Iterations(400)->UseManualTime()->Unit(benchmark::kMicrosecond);
+}
+BENCHMARK_CAPTURE(BM_CellsAfterTear, edges_followed, rift::Orbit{0}, true)->Apply(cells_runs);
+BENCHMARK_CAPTURE(BM_CellsAfterTear, edges_rebuilt, rift::Orbit{0}, false)->Apply(cells_runs);
+BENCHMARK_CAPTURE(BM_CellsAfterTear, edge_pairs_followed, rift::Orbit{0, 2}, true)
+    ->Apply(cells_runs);
+BENCHMARK_CAPTURE(BM_CellsAfterTear, edge_pairs_rebuilt, rift::Orbit{0, 2}, false)
+    ->Apply(cells_runs);
+BENCHMARK_CAPTURE(BM_CellsAfterTear, vertices_followed, rift::Orbit{1, 2}, true)->Apply(cells_runs);
+BENCHMARK_CAPTURE(BM_CellsAfterTear, vertices_rebuilt, rift::Orbit{1, 2}, false)->Apply(cells_runs);

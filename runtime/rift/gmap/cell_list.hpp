@@ -59,6 +59,7 @@ class CellList {
   std::vector<Dart> pending_;  // darts touched since cells_ was last brought up to date
   // apply_pending's scratch, kept so that an update allocates nothing once warm.
   std::vector<Dart> walked_, smallest_, merged_;
+  std::vector<std::size_t> dropped_;
 };
 
 }  // namespace rift
