@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <random>
 #include <vector>
 
+#include "jittered_mesh.hpp"
 #include "rift/mesh/assemble.hpp"
 #include "rift/mesh/generators.hpp"
 
@@ -71,12 +71,8 @@ TEST(MassModel, AllVertexMassesAreEachVertexsCornerSums) {
     for (bool split : {false, true}) {
       GMap map = assemble_gmap(make_generated_mesh(spec));
       const int n = map.dimension();
+      test::jitter_vertices(map, 5, 0.1);
       auto pos = map.embedding<Vec3>("position");
-      std::mt19937 rng(5);
-      std::uniform_real_distribution<Real> jitter(-0.1, 0.1);
-      map.for_each_cell(Orbit::cell(0, n), [&](Dart v) {
-        pos[v] += Vec3(jitter(rng), jitter(rng), n == 3 ? jitter(rng) : 0.0);
-      });
       if (split) {
         // Unsew the first element from its neighbours: its vertices split.
         std::vector<Dart> inner;

@@ -8,10 +8,10 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <random>
 #include <string>
 #include <vector>
 
+#include "jittered_mesh.hpp"
 #include "rift/io/read_mesh.hpp"
 #include "rift/mesh/assemble.hpp"
 #include "rift/mesh/generators.hpp"
@@ -137,12 +137,7 @@ TEST(SetupFastPath, JitteredMeshesWithADeletedElement) {
   for (const char* spec : {"grid:mix:7x6", "block:hex:4x3x3", "block:tet:3x3x2"}) {
     GMap map = assemble_gmap(make_generated_mesh(spec));
     const int n = map.dimension();
-    auto position = map.embedding<Vec3>("position");
-    std::mt19937 rng(11);
-    std::uniform_real_distribution<Real> jitter(-0.08, 0.08);
-    map.for_each_cell(Orbit::cell(0, n), [&](Dart v) {
-      position[v] += Vec3(jitter(rng), jitter(rng), n == 3 ? jitter(rng) : 0.0);
-    });
+    test::jitter_vertices(map, 11, 0.08);
     std::vector<Dart> first;
     map.for_each_in_orbit(0, element_orbit(n), [&](Dart d) { first.push_back(d); });
     for (Dart d : first) {
