@@ -3,7 +3,8 @@
 // of being listed anew from the whole map. What it collects must stay what
 // the same criterion made afresh on the torn map collects (its cells listed
 // from the whole map): the same candidates, in the same order, bit for bit,
-// tear after tear, for criteria on every kind of orbit, in 2D and 3D.
+// tear after tear, for criteria on every kind of orbit, in 2D and 3D. The
+// same for a handle's held slots, which follow the split vertices.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -123,6 +124,55 @@ TEST(CriterionCells, FollowTearsOfAHexahedralBlock) {
                    {"global_face", "spring_split", "shear_force", "interaction_force", "vertex_sum",
                     "atomic_face"},
                    shear_and_stretch, 18);
+}
+
+}  // namespace
+}  // namespace rift::tearing_test
+
+namespace rift::tearing_test {
+namespace {
+
+// The held slots of a handle follow tears that split its vertices (each half
+// stays on the handle) without a sweep of every slot: after each tear they
+// are the slots alive with a handle, as a sweep finds them.
+TEST(HandlesAfterTears, FollowTheSplitVerticesWithoutASweep) {
+  const std::string components =
+      "[[handle]]\nname = \"grip\"\nselect = { box = { min = [-1, 0.4, -1], max = [2, 2, 1] } }\n"
+      "velocity = [0, 0.5, 0]\n" +
+      interaction_table("stretch", "stiffness = 60.0") +
+      interaction_table("shear", "stiffness = 43.0") + criterion_table("spring_split", 1e-6);
+  auto sim = simulate("handles_tears",
+                      static_scene("grid:quad:10x10", "[1.0, 1.0, 1.0]", 1.0, components));
+  deform(*sim, shear_and_stretch);
+  store_forces(*sim);
+  const Handles& handles = *sim->handles();
+  const OrbitAttachment& vertices = sim->position().attachment();
+  const std::size_t held_before = handles.held_slots(vertices).size();
+  ASSERT_GT(held_before, 40u);
+  const auto handle = sim->map().embedding<std::int64_t>("handle");
+  std::size_t tears = 0;
+  for (int round = 0; round < 25; ++round) {
+    // The first spring that splits among the held vertices.
+    std::vector<TearCandidate> candidates = collected(*sim->criteria()[0], sim->map());
+    std::vector<Dart> touched;
+    for (const TearCandidate& c : candidates) {
+      if (sim->position()[c.at].y() < 0.6) continue;
+      touched.clear();
+      if (!sim->criteria()[0]->apply(sim->map(), c, touched)) continue;
+      sim->on_topology_changed(touched);
+      ++tears;
+      break;
+    }
+    store_forces(*sim);
+    std::vector<Slot> swept;
+    for (Slot s = 0; s < vertices.slot_capacity(); ++s) {
+      if (vertices.slot_alive(s) && handle.values()[s] >= 0) swept.push_back(s);
+    }
+    ASSERT_EQ(handles.held_slots(vertices), swept) << "after round " << round;
+  }
+  EXPECT_GT(tears, 20u);
+  EXPECT_GT(handles.held_slots(vertices).size(), held_before + 10);  // the split vertices' halves
+  EXPECT_EQ(handles.held_sweeps(), 1u);
 }
 
 }  // namespace

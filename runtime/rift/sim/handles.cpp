@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <iterator>
 #include <numbers>
 #include <stdexcept>
 
@@ -89,8 +90,32 @@ const std::vector<Slot>& Handles::held_slots(const OrbitAttachment& alive) const
       if (handle[s] >= 0 && alive.slot_alive(s)) held_.push_back(s);
     }
     held_stale_ = false;
+    ++held_sweeps_;
   }
   return held_;
+}
+
+void Handles::topology_changed(const GMap& map, std::span<const Dart> region) {
+  if (held_stale_) return;  // swept at the next use anyway
+  const OrbitAttachment& att = handle_.attachment();
+  const std::vector<std::int64_t>& handle = handle_.values();
+  std::erase_if(held_,
+                [&](Slot s) { return s >= handle.size() || !att.slot_alive(s) || handle[s] < 0; });
+  const std::size_t kept = held_.size();
+  for (const Dart d : region) {
+    if (d >= map.capacity() || !map.is_alive(d)) continue;
+    const Slot s = att.slot(d);
+    if (s != kNoSlot && s < handle.size() && handle[s] >= 0) held_.push_back(s);
+  }
+  if (held_.size() == kept) return;
+  // The region's held slots, sorted, merged into the kept ones (without
+  // std::inplace_merge's buffer: a warm tear allocates nothing).
+  const auto middle = held_.begin() + static_cast<std::ptrdiff_t>(kept);
+  std::sort(middle, held_.end());
+  merged_.clear();
+  std::merge(held_.begin(), middle, middle, held_.end(), std::back_inserter(merged_));
+  merged_.erase(std::unique(merged_.begin(), merged_.end()), merged_.end());
+  held_.swap(merged_);
 }
 
 void Handles::impose(const OrbitAttachment& alive, Real t, Real dt, std::vector<Vec3>& x,

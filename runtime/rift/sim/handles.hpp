@@ -9,7 +9,9 @@
 // a vertex split by a tear keeps both halves on the handle.
 #pragma once
 
+#include <cstdint>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -68,12 +70,20 @@ class Handles {
   /// The slots alive in `alive` whose vertex is on a handle (released or
   /// not), ascending: what the per-step passes below visit, so that a scene
   /// pinning two corners of a 10⁶-vertex cloth pays for two vertices, not
-  /// for a sweep of every slot. Kept between calls; rebuilt (one sweep)
-  /// after hold() and topology_changed().
+  /// for a sweep of every slot. Kept between calls; rebuilt (one sweep of
+  /// every slot) after hold() and topology_changed(), followed after
+  /// topology_changed(map, region).
   const std::vector<Slot>& held_slots(const OrbitAttachment& alive) const;
-  /// After a rewrite or values written in place: slots may have been added,
-  /// freed or given a handle.
+  /// After values written in place: slots may have been given a handle.
   void topology_changed() { held_stale_ = true; }
+  /// After rewrites whose touched vertices are the vertex orbits of the live
+  /// darts of `region` (Simulation::on_topology_changed's region): a slot
+  /// that appeared or took a handle is one of theirs, and a slot freed is
+  /// dropped, so the held slots follow without a sweep of every slot (a tear
+  /// costs what it touches, issue 12).
+  void topology_changed(const GMap& map, std::span<const Dart> region);
+  /// How many times held_slots() swept every slot (tests).
+  std::uint64_t held_sweeps() const { return held_sweeps_; }
 
   /// Sets every held slot alive in `alive` to its target at t (position)
   /// and the velocity toward its target at t + dt.
@@ -92,7 +102,9 @@ class Handles {
   Embedding<Vec3> rest_;
   std::vector<HandleMotion> motions_;
   mutable std::vector<Slot> held_;  // held_slots(), valid unless held_stale_
+  std::vector<Slot> merged_;        // topology_changed's scratch
   mutable bool held_stale_ = true;
+  mutable std::uint64_t held_sweeps_ = 0;
 };
 
 }  // namespace rift

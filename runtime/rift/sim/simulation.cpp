@@ -389,7 +389,7 @@ void Simulation::on_topology_changed(std::span<const Dart> touched) {
   for (auto& criterion : criteria_)
     criterion->topology_changed(map_, touched, synced_version_);
   synced_version_ = map_.topology_version();
-  if (handles_) handles_->topology_changed();
+  if (handles_) handles_->topology_changed(map_, region_);
   if (implicit_) implicit_->topology_changed();
   bdf2_.restart();  // the slots' history no longer matches the map
   refresh_inverse_masses(region_);
