@@ -76,15 +76,17 @@ void CellList::apply_pending(const GMap& g) {
   }
   g.free_mark(m);
   std::sort(smallest_.begin(), smallest_.end());
-  std::sort(walked_.begin(), walked_.end());
-  walked_.erase(std::unique(walked_.begin(), walked_.end()), walked_.end());
-  // The positions of the dropped cells, in increasing order (walked_ is sorted).
+  // The positions of the dropped cells, in increasing order. Each walked
+  // orbit holds at most one old cell, so few of the walked darts are found:
+  // only those positions are sorted (a dead dart noted twice gives one twice).
   dropped_.clear();
   for (const Dart x : walked_) {
     const auto it = std::lower_bound(cells_.begin(), cells_.end(), x);
     if (it != cells_.end() && *it == x)
       dropped_.push_back(static_cast<std::size_t>(it - cells_.begin()));
   }
+  std::sort(dropped_.begin(), dropped_.end());
+  dropped_.erase(std::unique(dropped_.begin(), dropped_.end()), dropped_.end());
   merged_.clear();
   merged_.reserve(cells_.size() - dropped_.size() + smallest_.size());
   auto fresh = smallest_.begin();

@@ -301,11 +301,11 @@ void sum_corners_into_vertices(const GMap& map, MassOf&& mass_of, Embedding<Real
   for (std::size_t i = 0; i < darts; ++i) {
     if (map.is_alive(static_cast<Dart>(i))) vertex_mass[static_cast<Dart>(i)] = 0;
   }
-  std::vector<std::uint64_t> seen((darts + 63) / 64, 0);  // one bit per dart
+  DartBits seen(darts);
   for (std::size_t i = 0; i < darts; ++i) {
     const auto d = static_cast<Dart>(i);
-    if (!map.is_alive(d) || (seen[i / 64] >> (i % 64) & 1)) continue;
-    map.for_each_in_orbit(d, corner, [&](Dart x) { seen[x / 64] |= std::uint64_t{1} << (x % 64); });
+    if (!map.is_alive(d) || seen.test(d)) continue;
+    map.for_each_in_orbit(d, corner, [&](Dart x) { seen.set(x); });
     vertex_mass[d] += mass_of(d);
   }
 }
