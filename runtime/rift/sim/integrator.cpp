@@ -39,17 +39,19 @@ template <class A>
 bool first_order_step(IntegratorKind kind, std::vector<Vec3>& x, std::vector<Vec3>& v, Real dt,
                       const A& a) {
   const std::size_t n = x.size();
+  Vec3* const xp = x.data();
+  Vec3* const vp = v.data();
   switch (kind) {
     case IntegratorKind::kExplicitEuler:
-      parallel_for(n, [&](std::size_t i) {
-        x[i] += dt * v[i];
-        v[i] += dt * a(i);
+      parallel_sweep(n, [=](std::size_t i) {
+        xp[i] += dt * vp[i];
+        vp[i] += dt * a(i);
       });
       return true;
     case IntegratorKind::kSymplecticEuler:
-      parallel_for(n, [&](std::size_t i) {
-        v[i] += dt * a(i);
-        x[i] += dt * v[i];
+      parallel_sweep(n, [=](std::size_t i) {
+        vp[i] += dt * a(i);
+        xp[i] += dt * vp[i];
       });
       return true;
     case IntegratorKind::kRK4:
@@ -84,39 +86,52 @@ void Integrator::rk4(const StageFn& stage, const A1& a1, const ToA& to_a, std::v
   // mass) rather than a first sweep writing them and the second reading them
   // back (48 bytes a vertex each way). Every sweep is per vertex, hence
   // parallel with the same result on any number of threads.
+  // The sweeps take the arrays as raw pointers, by copy (parallel_sweep).
   const std::size_t n = x.size();
   xs_.resize(n), vs_.resize(n), x_sum_.resize(n), v_sum_.resize(n), f.resize(n);
+  Vec3* const xp = x.data();
+  Vec3* const vp = v.data();
+  Vec3* const xs = xs_.data();
+  Vec3* const vs = vs_.data();
+  Vec3* const x_sum = x_sum_.data();
+  Vec3* const v_sum = v_sum_.data();
+  // The stage may resize f (an AccelerationFn assigns its output): its
+  // address is taken again after each stage.
+  Vec3* fp = f.data();
   const Real h = dt / 2;
   const Real w1 = dt / 6, w2 = dt / 3;
-  parallel_for(n, [&](std::size_t i) {
-    xs_[i] = x[i] + h * v[i];
-    vs_[i] = v[i] + h * a1(i);
-    f[i].setZero();
+  parallel_sweep(n, [=](std::size_t i) {
+    xs[i] = xp[i] + h * vp[i];
+    vs[i] = vp[i] + h * a1(i);
+    fp[i].setZero();
   });
   stage(xs_, vs_, f);  // a2 at stage 2; vs_ holds v2
-  parallel_for(n, [&](std::size_t i) {
-    const Vec3 ai = to_a(i, f[i]);
-    f[i].setZero();
-    x_sum_[i] = w1 * v[i] + w2 * vs_[i];  // running dt/6 (k1x + 2 k2x + 2 k3x + k4x)
-    v_sum_[i] = w1 * a1(i) + w2 * ai;
-    xs_[i] = x[i] + h * vs_[i];
-    vs_[i] = v[i] + h * ai;
+  fp = f.data();
+  parallel_sweep(n, [=](std::size_t i) {
+    const Vec3 ai = to_a(i, fp[i]);
+    fp[i].setZero();
+    x_sum[i] = w1 * vp[i] + w2 * vs[i];  // running dt/6 (k1x + 2 k2x + 2 k3x + k4x)
+    v_sum[i] = w1 * a1(i) + w2 * ai;
+    xs[i] = xp[i] + h * vs[i];
+    vs[i] = vp[i] + h * ai;
   });
   stage(xs_, vs_, f);  // a3; vs_ holds v3
-  parallel_for(n, [&](std::size_t i) {
-    const Vec3 ai = to_a(i, f[i]);
-    f[i].setZero();
-    x_sum_[i] += w2 * vs_[i];
-    v_sum_[i] += w2 * ai;
-    xs_[i] = x[i] + dt * vs_[i];
-    vs_[i] = v[i] + dt * ai;
+  fp = f.data();
+  parallel_sweep(n, [=](std::size_t i) {
+    const Vec3 ai = to_a(i, fp[i]);
+    fp[i].setZero();
+    x_sum[i] += w2 * vs[i];
+    v_sum[i] += w2 * ai;
+    xs[i] = xp[i] + dt * vs[i];
+    vs[i] = vp[i] + dt * ai;
   });
   stage(xs_, vs_, f);  // a4; vs_ holds v4
-  parallel_for(n, [&](std::size_t i) {
-    const Vec3 ai = to_a(i, f[i]);
-    f[i].setZero();
-    x[i] += x_sum_[i] + w1 * vs_[i];
-    v[i] += v_sum_[i] + w1 * ai;
+  fp = f.data();
+  parallel_sweep(n, [=](std::size_t i) {
+    const Vec3 ai = to_a(i, fp[i]);
+    fp[i].setZero();
+    xp[i] += x_sum[i] + w1 * vs[i];
+    vp[i] += v_sum[i] + w1 * ai;
   });
 }
 
@@ -125,7 +140,7 @@ void Integrator::step(const AccelerationFn& accel, std::vector<Vec3>& x, std::ve
   if (!a0) a_.resize(x.size());
   const std::vector<Vec3>& a = a0 ? *a0 : a_;
   if (!a0) accel(x, v, a_);
-  const auto a1 = [&a](std::size_t i) -> const Vec3& { return a[i]; };
+  const auto a1 = [ap = a.data()](std::size_t i) -> const Vec3& { return ap[i]; };
   if (first_order_step(kind_, x, v, dt, a1)) return;
   // The stage function writes accelerations: they are used as they are.
   rk4(
@@ -142,7 +157,7 @@ void Integrator::step(const ForceFn& forces, const ForceToAcceleration& to_a, st
   const auto accel = [w, g](std::size_t i, const Vec3& fi) {
     return w[i] > 0 ? Vec3(fi * w[i] + g) : Vec3::Zero();
   };
-  const auto a1 = [&](std::size_t i) { return accel(i, f0[i]); };
+  const auto a1 = [accel, f0p = f0.data()](std::size_t i) { return accel(i, f0p[i]); };
   if (first_order_step(kind_, x, v, dt, a1)) {
     f.assign(x.size(), Vec3::Zero());
     return;
