@@ -235,11 +235,12 @@ bool chooses_support_dart(const Kernel& k) {
   return !k.inter->tagged && !k.plan->body.forces.empty() && !vertex_fields(k).empty();
 }
 
-/// A kernel whose inits choose each orbit's support dart hands each choice to
-/// a rift::SupportSink (rift/sim/support_sink.hpp): the simulator's match
-/// cache then matches the orbit from it without choosing again.
+/// A kernel with inits and forces hands each orbit its inits found to a
+/// rift::SupportSink (rift/sim/support_sink.hpp), with the darts found: the
+/// simulator's match cache then takes the match from them, without choosing
+/// the support dart or finding the pattern again.
 bool hands_out_supports(const Kernel& k) {
-  return chooses_support_dart(k) && !k.plan->inits.empty();
+  return !k.plan->body.forces.empty() && !k.plan->inits.empty();
 }
 
 /// Render context of the force loop: stage arrays and column pointers, by slot.
@@ -409,15 +410,15 @@ void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
     if (chooses_support_dart(k)) {
       w.open("g.for_each_cell(kSupport, [&](rift::Dart cell) {");
       w.line("const rift::Dart support = support_dart(g, cell);");
-      if (hands_out_supports(k) && first_pass) w.line("if (sink) sink(support);");
     } else {
       w.open("g.for_each_cell(kSupport, [&](rift::Dart support) {");
     }
     if (k.inter->tagged && first_pass)
       w.line("if (rewrites_) tag_[support] = true;  // the orbit's first dart");
-    first_pass = false;
     w.line("rift::Dart darts[" + n + "];");
     w.line("if (!find(g, support, darts)) return;");
+    if (hands_out_supports(k) && first_pass) w.line("if (sink) sink(support, darts);");
+    first_pass = false;
     for (std::size_t v = 0; v < used.size(); ++v) {
       if (!used[v]) continue;
       w.line("const rift::Dart " + dart_name(plan.kernel.nodes[v]) + " = darts[" +
@@ -441,10 +442,17 @@ void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
 
 void write_match(Writer& w, const Kernel& k) {
   const lower::KernelPlan& plan = k.plan->kernel;
-  w.open("bool " + k.cls + "::match(const rift::GMap& g, rift::Dart support, Match& m, " +
-         (has_stored_slots(k) ? "Stored* s" : "Stored* /*s*/") + ") const {");
+  w.open("bool " + k.cls +
+         "::match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s) const {");
   w.line("rift::Dart darts[" + std::to_string(plan.nodes.size()) + "];");
   w.line("if (!find(g, support, darts)) return false;");
+  w.line("return match_found(g, darts, m, s);");
+  w.close();
+  w.line();
+  // The slots of a match whose darts were found (by find, or by the inits).
+  w.open("bool " + k.cls +
+         "::match_found([[maybe_unused]] const rift::GMap& g, const rift::Dart* darts, Match& m, " +
+         (has_stored_slots(k) ? "Stored* s" : "Stored* /*s*/") + ") const {");
   for (int pass = 0; pass < 2; ++pass) {
     // The match's slots, then (only when asked) those stores alone write.
     if (pass == 1 && has_stored_slots(k)) w.open("if (s) {");
@@ -1182,7 +1190,8 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
          std::string(inter.tagged ? ", tags the first dart of every support orbit" : "") +
          " and runs the interaction's inits.");
   if (hands_out_supports(k)) {
-    w.line("/// sink(d), when given, with each orbit's support dart as the inits choose it.");
+    w.line("/// sink(d, darts), when given, with each orbit's support dart as the inits choose it");
+    w.line("/// and the darts they found from it (match_found takes the match from them).");
     w.line("void initialise(rift::GMap& g, rift::SupportSink sink = {});");
   } else {
     w.line("void initialise(rift::GMap& g);");
@@ -1201,6 +1210,10 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
   w.line(
       "bool match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s = nullptr) "
       "const;");
+  w.line("/// The same from the pattern's darts as find gave them.");
+  w.line(
+      "bool match_found(const rift::GMap& g, const rift::Dart* darts, Match& m, Stored* s = "
+      "nullptr) const;");
   if (chooses_support_dart(k)) {
     w.line("/// The dart of d's support orbit to match from: the one binding the smallest vertex");
     w.line("/// slots first (the inits use it, and so does the simulator for a new orbit).");

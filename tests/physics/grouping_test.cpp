@@ -4,6 +4,7 @@
 // keeps apart matches whose parameters differ, and follows tears.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <random>
 
 #include "physics_setup.hpp"
@@ -452,6 +453,60 @@ TEST(Grouping, OrbitsAreMatchedFromTheDartsTheInitsChose) {
       }
     }
     EXPECT_EQ(checked, 2);
+  }
+}
+
+// The inits of a tagged kernel (the corners' order fixed by the dart an
+// element is first matched from, §3.2) hand the darts they found to the
+// match cache too: the cache must hold, in order, the match of each support
+// orbit from its first dart, as a walk of the cells finds it, owned by that
+// dart when the map is rewritten. Whole matches are compared, every slot.
+template <class Interaction>
+void expect_matches_of_each_first_dart(const Simulation& sim, const ForceModel& model) {
+  const auto* it = dynamic_cast<const Interaction*>(&model);
+  ASSERT_NE(it, nullptr) << model.name();
+  using Kernel = std::decay_t<decltype(const_cast<Interaction*>(it)->kernel())>;
+  using Match = typename Kernel::Match;
+  static_assert(std::has_unique_object_representations_v<Match>);
+  const GMap& map = sim.map();
+  std::vector<Dart> owners;
+  std::vector<Match> matches;
+  map.for_each_cell(Kernel::kSupport, [&](Dart cell) {
+    Match m{};
+    if (!const_cast<Interaction*>(it)->kernel().match(map, cell, m)) return;
+    owners.push_back(cell);
+    matches.push_back(m);
+  });
+  ASSERT_FALSE(matches.empty()) << model.name();
+  const auto built = it->cache().matches();
+  ASSERT_EQ(built.size(), matches.size()) << model.name();
+  for (std::size_t e = 0; e < matches.size(); ++e)
+    ASSERT_EQ(std::memcmp(&built[e], &matches[e], sizeof(Match)), 0) << model.name() << " " << e;
+  if (it->cache().keeps_owners()) {
+    const auto got = it->cache().owners();
+    ASSERT_EQ(std::vector<Dart>(got.begin(), got.end()), owners) << model.name();
+  }
+}
+
+TEST(Grouping, TaggedOrbitsAreMatchedFromTheDartsTheInitsFound) {
+  using Shear3d = packs::mass_spring3d::ShearInteraction;
+  using VolumeShear3d = packs::mass_spring3d::VolumeShearInteraction;
+  using Corotational3d = packs::fem3d::CorotationalInteraction;
+  for (const bool rewritten : {false, true}) {
+    SimSetup hex;
+    hex.interactions = {{"shear", {}}, {"volume_shear", {}}};
+    hex.settings.rewrites = rewritten;
+    auto block = simulate(assemble_gmap(make_block(BlockKind::Hex, 3, 2, 2)), hex);
+    ASSERT_EQ(block->force_models().size(), 2u);
+    expect_matches_of_each_first_dart<Shear3d>(*block, *block->force_models()[0]);
+    expect_matches_of_each_first_dart<VolumeShear3d>(*block, *block->force_models()[1]);
+
+    SimSetup tet;
+    tet.interactions = {{"corotational", {}}};
+    tet.settings.rewrites = rewritten;
+    auto beam = simulate(assemble_gmap(make_block(BlockKind::Tet, 3, 2, 2)), tet);
+    ASSERT_EQ(beam->force_models().size(), 1u);
+    expect_matches_of_each_first_dart<Corotational3d>(*beam, *beam->force_models()[0]);
   }
 }
 

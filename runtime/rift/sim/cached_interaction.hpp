@@ -158,11 +158,18 @@ class CachedInteraction final : public ForceModel {
       return true;
     };
     if constexpr (requires(GMap & g) { kernel_.initialise(g, SupportSink{}); }) {
-      // The inits choose every orbit's support dart (support_sink.hpp): the
-      // cache matches each orbit from it as they go. A match reads slots,
-      // which the inits do not change, never the values they write.
+      // The inits find every orbit's pattern (support_sink.hpp): the cache
+      // takes each match from the darts they found, as they go. A match
+      // reads slots, which the inits do not change, never the values they
+      // write.
       cache_.start_build(map);
-      auto build_from = [&](Dart support) { cache_.build_from(map, support, match); };
+      auto build_from = [&](Dart support, const Dart* darts) {
+        cache_.build_from(map, support, [&](const GMap& m, Dart, typename Kernel::Match& out) {
+          if (!match_found_one(m, darts, out)) return false;
+          if (keeps_stored()) stored_.push_back(pending_);
+          return true;
+        });
+      };
       kernel_.initialise(map, SupportSink::to(build_from));
     } else {
       kernel_.initialise(map);
@@ -449,6 +456,13 @@ class CachedInteraction final : public ForceModel {
       return kernel_.match(map, d, out, keeps_stored() ? &pending_ : nullptr);
     } else {
       return kernel_.match(map, d, out);
+    }
+  }
+  bool match_found_one(const GMap& map, const Dart* darts, Match& out) {
+    if constexpr (kSplitsStored) {
+      return kernel_.match_found(map, darts, out, keeps_stored() ? &pending_ : nullptr);
+    } else {
+      return kernel_.match_found(map, darts, out);
     }
   }
   void reset_one(const Match& m, const Stored& s) {

@@ -314,7 +314,7 @@ bool CorotationalKernel::find(const rift::GMap& g, rift::Dart support, rift::Dar
   return true;
 }
 
-void CorotationalKernel::initialise(rift::GMap& g) {
+void CorotationalKernel::initialise(rift::GMap& g, rift::SupportSink sink) {
   rift::packs::fem3d::declare_embeddings(g);
   e_corner_mass = require_embedding<rift::Real>(g, "corner_mass", "interaction 'corotational'");
   if (store_) e_f_fem = require_embedding<rift::Vec3>(g, "f_fem", "interaction 'corotational'");
@@ -336,6 +336,7 @@ void CorotationalKernel::initialise(rift::GMap& g) {
     if (rewrites_) tag_[support] = true;  // the orbit's first dart
     rift::Dart darts[18];
     if (!find(g, support, darts)) return;
+    if (sink) sink(support, darts);
     const rift::Dart d_c0 = darts[0];
     const rift::Dart d_c1 = darts[1];
     const rift::Dart d_c2 = darts[3];
@@ -355,9 +356,13 @@ void CorotationalKernel::initialise(rift::GMap& g) {
   });
 }
 
-bool CorotationalKernel::match(const rift::GMap& g, rift::Dart support, Match& m, Stored* /*s*/) const {
+bool CorotationalKernel::match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s) const {
   rift::Dart darts[18];
   if (!find(g, support, darts)) return false;
+  return match_found(g, darts, m, s);
+}
+
+bool CorotationalKernel::match_found([[maybe_unused]] const rift::GMap& g, const rift::Dart* darts, Match& m, Stored* /*s*/) const {
   m.orbit012_c0 = e_fem_b.slot(darts[0]);
   m.vertex_c1 = e_position.slot(darts[1]);
   m.vertex_c0 = e_position.slot(darts[0]);

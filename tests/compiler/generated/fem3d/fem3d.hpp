@@ -66,7 +66,9 @@ class CorotationalKernel {
   const std::string& name() const { return name_; }
   const CorotationalParams& params() const { return p_; }
   /// Declares the pack's embeddings the map lacks, binds them, tags the first dart of every support orbit and runs the interaction's inits.
-  void initialise(rift::GMap& g);
+  /// sink(d, darts), when given, with each orbit's support dart as the inits choose it
+  /// and the darts they found from it (match_found takes the match from them).
+  void initialise(rift::GMap& g, rift::SupportSink sink = {});
   /// Before initialise: false when nothing reads the stored forces, whose
   /// embeddings are then left unbound.
   void set_store_forces(bool on) { store_ = on; }
@@ -75,6 +77,8 @@ class CorotationalKernel {
   void set_rewrites(bool on) { rewrites_ = on; }
   /// Fills s too unless it is null.
   bool match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s = nullptr) const;
+  /// The same from the pattern's darts as find gave them.
+  bool match_found(const rift::GMap& g, const rift::Dart* darts, Match& m, Stored* s = nullptr) const;
   /// The force pass over every match: adds each force to f (and stores it when `store`,
   /// at the slots of ss[i], parallel to ms).
   void add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store);

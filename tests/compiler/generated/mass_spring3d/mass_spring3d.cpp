@@ -183,9 +183,9 @@ void StretchKernel::initialise(rift::GMap& g, rift::SupportSink sink) {
   // init stretch_k(a), stretch_rest(a), once per match
   g.for_each_cell(kSupport, [&](rift::Dart cell) {
     const rift::Dart support = support_dart(g, cell);
-    if (sink) sink(support);
     rift::Dart darts[2];
     if (!find(g, support, darts)) return;
+    if (sink) sink(support, darts);
     const rift::Dart d_a = darts[0];
     const rift::Dart d_b = darts[1];
     {
@@ -200,6 +200,10 @@ void StretchKernel::initialise(rift::GMap& g, rift::SupportSink sink) {
 bool StretchKernel::match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s) const {
   rift::Dart darts[2];
   if (!find(g, support, darts)) return false;
+  return match_found(g, darts, m, s);
+}
+
+bool StretchKernel::match_found([[maybe_unused]] const rift::GMap& g, const rift::Dart* darts, Match& m, Stored* s) const {
   m.vertex_a = e_position.slot(darts[0]);
   m.vertex_b = e_position.slot(darts[1]);
   m.orbit0_a = e_stretch_k.slot(darts[0]);
@@ -508,7 +512,7 @@ bool ShearKernel::find(const rift::GMap& g, rift::Dart support, rift::Dart* dart
   return true;
 }
 
-void ShearKernel::initialise(rift::GMap& g) {
+void ShearKernel::initialise(rift::GMap& g, rift::SupportSink sink) {
   rift::packs::mass_spring3d::declare_embeddings(g);
   if (store_) e_f_shear = require_embedding<rift::Vec3>(g, "f_shear", "interaction 'shear'");
   e_position = require_embedding<rift::Vec3>(g, "position", "interaction 'shear'");
@@ -526,6 +530,7 @@ void ShearKernel::initialise(rift::GMap& g) {
     if (rewrites_) tag_[support] = true;  // the orbit's first dart
     rift::Dart darts[8];
     if (!find(g, support, darts)) return;
+    if (sink) sink(support, darts);
     const rift::Dart d_c0 = darts[0];
     const rift::Dart d_c1 = darts[2];
     const rift::Dart d_c2 = darts[4];
@@ -545,6 +550,10 @@ void ShearKernel::initialise(rift::GMap& g) {
 bool ShearKernel::match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s) const {
   rift::Dart darts[8];
   if (!find(g, support, darts)) return false;
+  return match_found(g, darts, m, s);
+}
+
+bool ShearKernel::match_found([[maybe_unused]] const rift::GMap& g, const rift::Dart* darts, Match& m, Stored* s) const {
   m.vertex_c0 = e_position.slot(darts[0]);
   m.vertex_c2 = e_position.slot(darts[4]);
   m.orbit01_c0 = e_shear_k.slot(darts[0]);
@@ -2139,7 +2148,7 @@ bool VolumeShearKernel::find(const rift::GMap& g, rift::Dart support, rift::Dart
   return true;
 }
 
-void VolumeShearKernel::initialise(rift::GMap& g) {
+void VolumeShearKernel::initialise(rift::GMap& g, rift::SupportSink sink) {
   rift::packs::mass_spring3d::declare_embeddings(g);
   if (store_) e_f_volume_shear = require_embedding<rift::Vec3>(g, "f_volume_shear", "interaction 'volume_shear'");
   e_position = require_embedding<rift::Vec3>(g, "position", "interaction 'volume_shear'");
@@ -2159,6 +2168,7 @@ void VolumeShearKernel::initialise(rift::GMap& g) {
     if (rewrites_) tag_[support] = true;  // the orbit's first dart
     rift::Dart darts[48];
     if (!find(g, support, darts)) return;
+    if (sink) sink(support, darts);
     const rift::Dart d_b0 = darts[0];
     const rift::Dart d_b2 = darts[2];
     const rift::Dart d_b4 = darts[4];
@@ -2188,6 +2198,10 @@ void VolumeShearKernel::initialise(rift::GMap& g) {
 bool VolumeShearKernel::match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s) const {
   rift::Dart darts[48];
   if (!find(g, support, darts)) return false;
+  return match_found(g, darts, m, s);
+}
+
+bool VolumeShearKernel::match_found([[maybe_unused]] const rift::GMap& g, const rift::Dart* darts, Match& m, Stored* s) const {
   m.orbit012_b0 = e_vshear_k.slot(darts[0]);
   m.vertex_b0 = e_position.slot(darts[0]);
   m.vertex_s22 = e_position.slot(darts[26]);

@@ -61,13 +61,16 @@ class StretchKernel {
   const std::string& name() const { return name_; }
   const StretchParams& params() const { return p_; }
   /// Declares the pack's embeddings the map lacks, binds them and runs the interaction's inits.
-  /// sink(d), when given, with each orbit's support dart as the inits choose it.
+  /// sink(d, darts), when given, with each orbit's support dart as the inits choose it
+  /// and the darts they found from it (match_found takes the match from them).
   void initialise(rift::GMap& g, rift::SupportSink sink = {});
   /// Before initialise: false when nothing reads the stored forces, whose
   /// embeddings are then left unbound.
   void set_store_forces(bool on) { store_ = on; }
   /// Fills s too unless it is null.
   bool match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s = nullptr) const;
+  /// The same from the pattern's darts as find gave them.
+  bool match_found(const rift::GMap& g, const rift::Dart* darts, Match& m, Stored* s = nullptr) const;
   /// The dart of d's support orbit to match from: the one binding the smallest vertex
   /// slots first (the inits use it, and so does the simulator for a new orbit).
   rift::Dart support_dart(const rift::GMap& g, rift::Dart d) const;
@@ -171,7 +174,9 @@ class ShearKernel {
   const std::string& name() const { return name_; }
   const ShearParams& params() const { return p_; }
   /// Declares the pack's embeddings the map lacks, binds them, tags the first dart of every support orbit and runs the interaction's inits.
-  void initialise(rift::GMap& g);
+  /// sink(d, darts), when given, with each orbit's support dart as the inits choose it
+  /// and the darts they found from it (match_found takes the match from them).
+  void initialise(rift::GMap& g, rift::SupportSink sink = {});
   /// Before initialise: false when nothing reads the stored forces, whose
   /// embeddings are then left unbound.
   void set_store_forces(bool on) { store_ = on; }
@@ -180,6 +185,8 @@ class ShearKernel {
   void set_rewrites(bool on) { rewrites_ = on; }
   /// Fills s too unless it is null.
   bool match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s = nullptr) const;
+  /// The same from the pattern's darts as find gave them.
+  bool match_found(const rift::GMap& g, const rift::Dart* darts, Match& m, Stored* s = nullptr) const;
   /// The force pass over every match: adds each force to f (and stores it when `store`,
   /// at the slots of ss[i], parallel to ms).
   void add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store);
@@ -294,7 +301,9 @@ class VolumeShearKernel {
   const std::string& name() const { return name_; }
   const VolumeShearParams& params() const { return p_; }
   /// Declares the pack's embeddings the map lacks, binds them, tags the first dart of every support orbit and runs the interaction's inits.
-  void initialise(rift::GMap& g);
+  /// sink(d, darts), when given, with each orbit's support dart as the inits choose it
+  /// and the darts they found from it (match_found takes the match from them).
+  void initialise(rift::GMap& g, rift::SupportSink sink = {});
   /// Before initialise: false when nothing reads the stored forces, whose
   /// embeddings are then left unbound.
   void set_store_forces(bool on) { store_ = on; }
@@ -303,6 +312,8 @@ class VolumeShearKernel {
   void set_rewrites(bool on) { rewrites_ = on; }
   /// Fills s too unless it is null.
   bool match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s = nullptr) const;
+  /// The same from the pattern's darts as find gave them.
+  bool match_found(const rift::GMap& g, const rift::Dart* darts, Match& m, Stored* s = nullptr) const;
   /// The force pass over every match: adds each force to f (and stores it when `store`,
   /// at the slots of ss[i], parallel to ms).
   void add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store);
