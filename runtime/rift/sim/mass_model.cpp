@@ -298,15 +298,38 @@ void sum_corners_into_vertices(const GMap& map, MassOf&& mass_of, Embedding<Real
     return;
   }
   const std::size_t darts = map.capacity();
-  for (std::size_t i = 0; i < darts; ++i) {
-    if (map.is_alive(static_cast<Dart>(i))) vertex_mass[static_cast<Dart>(i)] = 0;
-  }
-  DartBits seen(darts);
-  for (std::size_t i = 0; i < darts; ++i) {
-    const auto d = static_cast<Dart>(i);
-    if (!map.is_alive(d) || seen.test(d)) continue;
-    map.for_each_in_orbit(d, corner, [&](Dart x) { seen.set(x); });
-    vertex_mass[d] += mass_of(d);
+  // Every vertex slot starts at zero (free slots too: a slot taken again
+  // gets its value then), without a write per dart through its slot.
+  std::vector<Real>& vm = vertex_mass.values();
+  std::fill(vm.begin(), vm.end(), Real(0));
+  const Slot* vertex_slot = vertex_mass.attachment().slot_data();
+  // A corner's first dart is its smallest. How it is told, fastest first:
+  if (corner.size() == 1) {
+    // <1> (2D): the smaller of a dart and its 1-neighbour.
+    const int i = corner.first();
+    for (std::size_t k = 0; k < darts; ++k) {
+      const auto d = static_cast<Dart>(k);
+      if (map.is_alive(d) && d <= map.alpha(d, i)) vm[vertex_slot[d]] += mass_of(d);
+    }
+  } else if (const OrbitAttachment* corners = map.slotted_attachment(corner)) {
+    // Corners hold slots: the first dart met of each slot, one bit per slot
+    // (a sixth of the darts' bits in 3D) and no walk.
+    const Slot* corner_slot = corners->slot_data();
+    DartBits seen(corners->slot_capacity());
+    for (std::size_t k = 0; k < darts; ++k) {
+      const auto d = static_cast<Dart>(k);
+      if (!map.is_alive(d) || seen.test(corner_slot[d])) continue;
+      seen.set(corner_slot[d]);
+      vm[vertex_slot[d]] += mass_of(d);
+    }
+  } else {
+    DartBits seen(darts);
+    for (std::size_t k = 0; k < darts; ++k) {
+      const auto d = static_cast<Dart>(k);
+      if (!map.is_alive(d) || seen.test(d)) continue;
+      map.for_each_in_orbit(d, corner, [&](Dart x) { seen.set(x); });
+      vm[vertex_slot[d]] += mass_of(d);
+    }
   }
 }
 
