@@ -235,10 +235,10 @@ bool chooses_support_dart(const Kernel& k) {
   return !k.inter->tagged && !k.plan->body.forces.empty() && !vertex_fields(k).empty();
 }
 
-/// A kernel with inits and forces hands each orbit its inits found to a
-/// rift::SupportSink (rift/sim/support_sink.hpp), with the darts found: the
-/// simulator's match cache then takes the match from them, without choosing
-/// the support dart or finding the pattern again.
+/// A kernel with inits and forces hands each match its inits find to a
+/// rift::SupportSink (rift/sim/support_sink.hpp): the support dart and the
+/// pattern's darts. The simulator's match cache then takes the match from
+/// them, without choosing the support dart or finding the pattern again.
 bool hands_out_supports(const Kernel& k) {
   return !k.plan->body.forces.empty() && !k.plan->inits.empty();
 }

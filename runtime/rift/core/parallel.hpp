@@ -78,7 +78,7 @@ void parallel_for(std::size_t n, F&& f, std::size_t block = kParallelBlock) {
 }
 
 /// f(i) for every i in [0, n), in parallel blocks of `block` items, for the
-/// flat sweeps over vertices (the integrators', the solvers'): f should
+/// flat sweeps over vertices (the integrators'): f should
 /// capture raw pointers and values by copy. Each block runs on its own
 /// copy of f, inlined into the loop. Why: Eigen stores its vectors through
 /// SIMD types that may alias anything, so a loop reading its arrays'
