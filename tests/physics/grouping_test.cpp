@@ -462,10 +462,10 @@ TEST(Grouping, OrbitsAreMatchedFromTheDartsTheInitsChose) {
 // orbit from its first dart, as a walk of the cells finds it, owned by that
 // dart when the map is rewritten. Whole matches are compared, every slot.
 template <class Interaction>
-void expect_matches_of_each_first_dart(const Simulation& sim, const ForceModel& model) {
-  const auto* it = dynamic_cast<const Interaction*>(&model);
+void expect_matches_of_each_first_dart(const Simulation& sim, ForceModel& model) {
+  auto* it = dynamic_cast<Interaction*>(&model);
   ASSERT_NE(it, nullptr) << model.name();
-  using Kernel = std::decay_t<decltype(const_cast<Interaction*>(it)->kernel())>;
+  using Kernel = std::decay_t<decltype(it->kernel())>;
   using Match = typename Kernel::Match;
   static_assert(std::has_unique_object_representations_v<Match>);
   const GMap& map = sim.map();
@@ -473,7 +473,7 @@ void expect_matches_of_each_first_dart(const Simulation& sim, const ForceModel& 
   std::vector<Match> matches;
   map.for_each_cell(Kernel::kSupport, [&](Dart cell) {
     Match m{};
-    if (!const_cast<Interaction*>(it)->kernel().match(map, cell, m)) return;
+    if (!it->kernel().match(map, cell, m)) return;
     owners.push_back(cell);
     matches.push_back(m);
   });

@@ -44,12 +44,13 @@ Real polygon_area(const GMap& map, Dart face, const Embedding<Vec3>& position) {
 
 constexpr std::uint32_t kNoElement = 0xffffffffu;
 
-// A set of darts, one bit per dart of the map.
-class DartBits {
+// A set of indices below a bound, one bit each: darts of the map, or the
+// slots of an attachment.
+class IndexBits {
  public:
-  explicit DartBits(std::size_t darts) : words_((darts + 63) / 64, 0) {}
-  bool test(Dart d) const { return (words_[d / 64] >> (d % 64) & 1) != 0; }
-  void set(Dart d) { words_[d / 64] |= std::uint64_t{1} << (d % 64); }
+  explicit IndexBits(std::size_t bound) : words_((bound + 63) / 64, 0) {}
+  bool test(std::uint32_t i) const { return (words_[i / 64] >> (i % 64) & 1) != 0; }
+  void set(std::uint32_t i) { words_[i / 64] |= std::uint64_t{1} << (i % 64); }
 
  private:
   std::vector<std::uint64_t> words_;
@@ -115,7 +116,7 @@ struct ElementSums {
 
 // for_each_dart(f) calls f with every dart of the elements measured, in
 // increasing order; element_of(d) is the index of d's element; firsts[k] is
-// element k's smallest dart; Bits is DartBits or ElementDartBits.
+// element k's smallest dart; Bits is IndexBits or ElementDartBits.
 template <class ForEachDart, class ElementOf, class Bits>
 void sum_elements(const GMap& map, const std::vector<Dart>& firsts, ForEachDart&& for_each_dart,
                   ElementOf&& element_of, Bits corner_seen, Bits face_seen,
@@ -228,7 +229,7 @@ MeasuredElements measure_elements(const GMap& map, const Embedding<Vec3>& positi
           if (element_of[i] != kNoElement) f(static_cast<Dart>(i));
         }
       },
-      [&](Dart d) { return element_of[d]; }, DartBits(n), DartBits(n), position, sums);
+      [&](Dart d) { return element_of[d]; }, IndexBits(n), IndexBits(n), position, sums);
   out.measures = std::move(sums.measures);
   out.corners = std::move(sums.corners);
   return out;
@@ -315,7 +316,7 @@ void sum_corners_into_vertices(const GMap& map, MassOf&& mass_of, Embedding<Real
     // Corners hold slots: the first dart met of each slot, one bit per slot
     // (a sixth of the darts' bits in 3D) and no walk.
     const Slot* corner_slot = corners->slot_data();
-    DartBits seen(corners->slot_capacity());
+    IndexBits seen(corners->slot_capacity());
     for (std::size_t k = 0; k < darts; ++k) {
       const auto d = static_cast<Dart>(k);
       if (!map.is_alive(d) || seen.test(corner_slot[d])) continue;
@@ -323,7 +324,7 @@ void sum_corners_into_vertices(const GMap& map, MassOf&& mass_of, Embedding<Real
       vm[vertex_slot[d]] += mass_of(d);
     }
   } else {
-    DartBits seen(darts);
+    IndexBits seen(darts);
     for (std::size_t k = 0; k < darts; ++k) {
       const auto d = static_cast<Dart>(k);
       if (!map.is_alive(d) || seen.test(d)) continue;
@@ -353,7 +354,7 @@ void vertex_masses_from_elements(const GMap& map, const ElementMasses& elements,
   // each corner's slot would: a corner lies in one element.
   std::vector<Real> share;
   grow_huge(share, map.capacity(), Real{0});
-  DartBits met(map.capacity());
+  IndexBits met(map.capacity());
   std::vector<Dart> stack;
   for (std::size_t k = 0; k < elements.darts.size(); ++k) {
     const Dart e = elements.darts[k];
