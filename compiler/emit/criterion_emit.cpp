@@ -45,6 +45,33 @@ std::vector<std::string> criterion_embeddings(const lower::CriterionPlan& plan) 
   return used;
 }
 
+/// Whether an orbit may hold any number of darts: it has two consecutive
+/// dimensions (<0,1>: a face's edges, <1,2>: a vertex's star in 2D). Of
+/// dimensions two apart or more the involutions commute, and the orbit has
+/// at most 2^k darts.
+bool unbounded_orbit(const std::vector<int>& dims) {
+  for (const int i : dims) {
+    for (const int j : dims) {
+      if (j == i + 1) return true;
+    }
+  }
+  return false;
+}
+
+/// Whether a cell's body walks an orbit of unbounded size (in a fold, or
+/// through an orbit memo).
+bool walks_unbounded_orbits(const lower::CriterionPlan& plan) {
+  const ir::Graph& g = plan.body.graph;
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    const ir::Node& n = g[static_cast<ir::ExprId>(i)];
+    if (n.op == ir::Op::Fold && unbounded_orbit(n.outer)) return true;
+  }
+  for (const ir::OrbitMemo& memo : plan.memos) {
+    if (unbounded_orbit(memo.orbit)) return true;
+  }
+  return false;
+}
+
 /// Which of the body's nodes the code rendering `roots` reads (hooks aside).
 std::vector<bool> nodes_read(const ir::Body& body, const std::vector<ir::ExprId>& roots) {
   std::vector<bool> read(body.nodes.size(), false);
@@ -168,22 +195,29 @@ void emit_criterion(Writer& w, const lower::CriterionPlan& plan, const PackModel
          "::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {");
   for (std::size_t m = 0; m < plan.memos.size(); ++m)
     w.line(memo_var(m) + ".begin(g, " + orbit_code(plan.memos[m].orbit) + ");");
-  // The map does not change during collect: each embedding's arrays are
-  // taken once (EmbeddingReader), not checked again at every read.
-  for (const std::string& name : criterion_embeddings(plan)) {
-    w.line("[[maybe_unused]] const rift::EmbeddingReader<" + embedding_storage(model, name) + "> " +
-           reader_var(name) + " = " + embedding_var(name) + ".reader();");
-  }
   // A criterion riftc proves free of shared scratch (CriterionPlan::parallel_collect)
   // evaluates blocks of cells on every core; the candidates come out in the
   // cells' order whatever the number of threads.
   w.open("cells_.collect(g, " + orbit_code(crit.orbit.dims) + ", " +
          (plan.parallel_collect ? "rift::generated::CollectOn::kEveryCore"
                                 : "rift::generated::CollectOn::kOneThread") +
-         ", out, [&](rift::Dart " + d + ", std::vector<rift::TearCandidate>& found) {");
-  // One relaxed load per cell: Ctrl-C is seen inside a long pass (a cell's
-  // measure may traverse a large face).
-  w.line("rift::throw_if_interrupted();");
+         ", out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) "
+         "{");
+  // The map does not change during collect: each embedding's arrays are
+  // taken once per block (EmbeddingReader), locals of the block that the
+  // cells' loop keeps in registers, not checked again at every read.
+  for (const std::string& name : criterion_embeddings(plan)) {
+    w.line("[[maybe_unused]] const rift::EmbeddingReader<" + embedding_storage(model, name) + "> " +
+           reader_var(name) + " = " + embedding_var(name) + ".reader();");
+  }
+  // The cell's body is a lambda (it leaves a cell by `return`), inlined into
+  // the loop.
+  w.open("for (const rift::Dart " + d + " : cells) {");
+  w.open("[&]() RIFT_CELL_BODY {");
+  // The block polls the interrupt before it starts. A body that walks an
+  // orbit of unbounded size (a face's edges, a vertex's star) also polls
+  // per cell, one relaxed load, so that Ctrl-C is seen within a long pass.
+  if (walks_unbounded_orbits(plan)) w.line("rift::throw_if_interrupted();");
   {
     std::vector<bool> written(b.lets.size(), false), wanted(b.lets.size(), false);
     std::vector<bool> for_payload(b.lets.size(), false);
@@ -231,6 +265,8 @@ void emit_criterion(Writer& w, const lower::CriterionPlan& plan, const PackModel
     }
   }
   w.line("found.push_back(c);");
+  w.close("}();");
+  w.close();
   w.close("});");
   w.close();
   w.line();

@@ -8,6 +8,7 @@
 #include <array>
 #include <random>
 #include <set>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -201,7 +202,12 @@ TEST(CellCollection, CandidatesInTheOrderOfTheCellsWhateverTheThreads) {
     set_thread_count(threads);
     for (auto on : {generated::CollectOn::kOneThread, generated::CollectOn::kEveryCore}) {
       std::vector<TearCandidate> got(1);  // what is already there stays first
-      collection.collect(g, Orbit{0, 2}, on, got, visit_edge);
+      collection.collect(g, Orbit{0, 2}, on, got,
+                         [&](std::span<const Dart> cells, std::vector<TearCandidate>& found) {
+                           EXPECT_LE(cells.size(), kParallelBlock);
+                           for (const Dart d : cells)
+                             visit_edge(d, found);
+                         });
       ASSERT_EQ(got.size(), expected.size() + 1) << threads << " threads";
       for (std::size_t i = 0; i < expected.size(); ++i) {
         EXPECT_EQ(got[i + 1].at, expected[i].at) << i;

@@ -265,18 +265,21 @@ void StretchStrainCriterion::initialise(rift::GMap& g) {
 }
 
 void StretchStrainCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Real> r_stretch_rest = e_stretch_rest.reader();
-  cells_.collect(g, rift::Orbit{0}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_a, std::vector<rift::TearCandidate>& found) {
-    rift::throw_if_interrupted();
-    const rift::Real l_l = ((r_position[g.alpha(d_a, 0)] - r_position[d_a])).norm();
-    const rift::Real measure = ((r_stretch_rest[d_a] > 0.0) ? ((l_l - r_stretch_rest[d_a]) / r_stretch_rest[d_a]) : 0.0);
-    const rift::Real threshold = p_.threshold;
-    if (!(measure > threshold)) return;
-    rift::TearCandidate c;
-    c.at = d_a;
-    c.measure = measure - threshold;
-    found.push_back(c);
+  cells_.collect(g, rift::Orbit{0}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Real> r_stretch_rest = e_stretch_rest.reader();
+    for (const rift::Dart d_a : cells) {
+      [&]() RIFT_CELL_BODY {
+        const rift::Real l_l = ((r_position[g.alpha(d_a, 0)] - r_position[d_a])).norm();
+        const rift::Real measure = ((r_stretch_rest[d_a] > 0.0) ? ((l_l - r_stretch_rest[d_a]) / r_stretch_rest[d_a]) : 0.0);
+        const rift::Real threshold = p_.threshold;
+        if (!(measure > threshold)) return;
+        rift::TearCandidate c;
+        c.at = d_a;
+        c.measure = measure - threshold;
+        found.push_back(c);
+      }();
+    }
   });
 }
 
@@ -296,16 +299,19 @@ void StretchForceCriterion::initialise(rift::GMap& g) {
 }
 
 void StretchForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_stretch = e_f_stretch.reader();
-  cells_.collect(g, rift::Orbit{0}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_a, std::vector<rift::TearCandidate>& found) {
-    rift::throw_if_interrupted();
-    const rift::Real measure = (r_f_stretch[d_a]).norm();
-    const rift::Real threshold = p_.threshold;
-    if (!(measure > threshold)) return;
-    rift::TearCandidate c;
-    c.at = d_a;
-    c.measure = measure - threshold;
-    found.push_back(c);
+  cells_.collect(g, rift::Orbit{0}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_stretch = e_f_stretch.reader();
+    for (const rift::Dart d_a : cells) {
+      [&]() RIFT_CELL_BODY {
+        const rift::Real measure = (r_f_stretch[d_a]).norm();
+        const rift::Real threshold = p_.threshold;
+        if (!(measure > threshold)) return;
+        rift::TearCandidate c;
+        c.at = d_a;
+        c.measure = measure - threshold;
+        found.push_back(c);
+      }();
+    }
   });
 }
 
@@ -325,18 +331,21 @@ void SpringSplitCriterion::initialise(rift::GMap& g) {
 }
 
 void SpringSplitCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_stretch = e_f_stretch.reader();
-  cells_.collect(g, rift::Orbit{0}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_a, std::vector<rift::TearCandidate>& found) {
-    rift::throw_if_interrupted();
-    const rift::Real measure = (r_f_stretch[d_a]).norm();
-    const rift::Real threshold = p_.threshold;
-    if (!(measure > threshold)) return;
-    rift::TearCandidate c;
-    c.at = d_a;
-    c.measure = measure - threshold;
-    rift::generated::put_payload<rift::Vec3>(c, 0, (r_f_stretch[d_a]).normalized());  // normal
-    rift::generated::put_payload<bool>(c, 3, p_.both_ends);  // both
-    found.push_back(c);
+  cells_.collect(g, rift::Orbit{0}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_stretch = e_f_stretch.reader();
+    for (const rift::Dart d_a : cells) {
+      [&]() RIFT_CELL_BODY {
+        const rift::Real measure = (r_f_stretch[d_a]).norm();
+        const rift::Real threshold = p_.threshold;
+        if (!(measure > threshold)) return;
+        rift::TearCandidate c;
+        c.at = d_a;
+        c.measure = measure - threshold;
+        rift::generated::put_payload<rift::Vec3>(c, 0, (r_f_stretch[d_a]).normalized());  // normal
+        rift::generated::put_payload<bool>(c, 3, p_.both_ends);  // both
+        found.push_back(c);
+      }();
+    }
   });
 }
 
@@ -358,16 +367,20 @@ void ShearForceCriterion::initialise(rift::GMap& g) {
 }
 
 void ShearForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_shear = e_f_shear.reader();
-  cells_.collect(g, rift::Orbit{0, 1}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_f, std::vector<rift::TearCandidate>& found) {
-    rift::throw_if_interrupted();
-    const rift::Real measure = [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, (r_f_shear[d_c]).norm()); }); return acc0; }();
-    const rift::Real threshold = p_.threshold;
-    if (!(measure > threshold)) return;
-    rift::TearCandidate c;
-    c.at = d_f;
-    c.measure = measure - threshold;
-    found.push_back(c);
+  cells_.collect(g, rift::Orbit{0, 1}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_shear = e_f_shear.reader();
+    for (const rift::Dart d_f : cells) {
+      [&]() RIFT_CELL_BODY {
+        rift::throw_if_interrupted();
+        const rift::Real measure = [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, (r_f_shear[d_c]).norm()); }); return acc0; }();
+        const rift::Real threshold = p_.threshold;
+        if (!(measure > threshold)) return;
+        rift::TearCandidate c;
+        c.at = d_f;
+        c.measure = measure - threshold;
+        found.push_back(c);
+      }();
+    }
   });
 }
 
@@ -388,19 +401,22 @@ void BendForceCriterion::initialise(rift::GMap& g) {
 }
 
 void BendForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_abend = e_f_abend.reader();
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_bend = e_f_bend.reader();
-  cells_.collect(g, rift::Orbit{2}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_d, std::vector<rift::TearCandidate>& found) {
-    rift::throw_if_interrupted();
-    if (g.is_free(d_d, 2)) return;
-    const rift::Dart d_e = g.alpha(d_d, 2);
-    const rift::Real measure = std::max<rift::Real>(std::max<rift::Real>((r_f_bend[g.alpha(g.alpha(d_d, 1), 0)]).norm(), (r_f_bend[g.alpha(g.alpha(d_e, 1), 0)]).norm()), (2.0 * (r_f_abend[d_d]).norm()));
-    const rift::Real threshold = p_.threshold;
-    if (!(measure > threshold)) return;
-    rift::TearCandidate c;
-    c.at = d_d;
-    c.measure = measure - threshold;
-    found.push_back(c);
+  cells_.collect(g, rift::Orbit{2}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_abend = e_f_abend.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_bend = e_f_bend.reader();
+    for (const rift::Dart d_d : cells) {
+      [&]() RIFT_CELL_BODY {
+        if (g.is_free(d_d, 2)) return;
+        const rift::Dart d_e = g.alpha(d_d, 2);
+        const rift::Real measure = std::max<rift::Real>(std::max<rift::Real>((r_f_bend[g.alpha(g.alpha(d_d, 1), 0)]).norm(), (r_f_bend[g.alpha(g.alpha(d_e, 1), 0)]).norm()), (2.0 * (r_f_abend[d_d]).norm()));
+        const rift::Real threshold = p_.threshold;
+        if (!(measure > threshold)) return;
+        rift::TearCandidate c;
+        c.at = d_d;
+        c.measure = measure - threshold;
+        found.push_back(c);
+      }();
+    }
   });
 }
 
@@ -422,19 +438,23 @@ void ElementStressCriterion::initialise(rift::GMap& g) {
 }
 
 void ElementStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_membrane = e_f_membrane.reader();
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
-  cells_.collect(g, rift::Orbit{0, 1}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_f, std::vector<rift::TearCandidate>& found) {
-    rift::throw_if_interrupted();
-    const rift::Real l_area = (0.5 * (((r_position[g.alpha(d_f, 0)] - r_position[d_f])).cross((r_position[g.alpha(g.alpha(d_f, 1), 0)] - r_position[d_f]))).norm());
-    const rift::Mat3 l_m = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 += (r_f_membrane[d_c]) * (r_position[d_c]).transpose(); }); return acc0; }();
-    const rift::Real measure = symmetric_max_eigenvalue(((l_area > 0.0) ? rift::Mat3((((-0.5) / l_area) * (l_m + (l_m).transpose()))) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished())));
-    const rift::Real threshold = p_.threshold;
-    if (!(measure > threshold)) return;
-    rift::TearCandidate c;
-    c.at = d_f;
-    c.measure = measure - threshold;
-    found.push_back(c);
+  cells_.collect(g, rift::Orbit{0, 1}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_membrane = e_f_membrane.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
+    for (const rift::Dart d_f : cells) {
+      [&]() RIFT_CELL_BODY {
+        rift::throw_if_interrupted();
+        const rift::Real l_area = (0.5 * (((r_position[g.alpha(d_f, 0)] - r_position[d_f])).cross((r_position[g.alpha(g.alpha(d_f, 1), 0)] - r_position[d_f]))).norm());
+        const rift::Mat3 l_m = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 += (r_f_membrane[d_c]) * (r_position[d_c]).transpose(); }); return acc0; }();
+        const rift::Real measure = symmetric_max_eigenvalue(((l_area > 0.0) ? rift::Mat3((((-0.5) / l_area) * (l_m + (l_m).transpose()))) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished())));
+        const rift::Real threshold = p_.threshold;
+        if (!(measure > threshold)) return;
+        rift::TearCandidate c;
+        c.at = d_f;
+        c.measure = measure - threshold;
+        found.push_back(c);
+      }();
+    }
   });
 }
 
@@ -456,18 +476,22 @@ void InteractionForceCriterion::initialise(rift::GMap& g) {
 }
 
 void InteractionForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_membrane = e_f_membrane.reader();
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_shear = e_f_shear.reader();
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_stretch = e_f_stretch.reader();
-  cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_v, std::vector<rift::TearCandidate>& found) {
-    rift::throw_if_interrupted();
-    const rift::Real measure = std::max<rift::Real>([&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, std::max<rift::Real>((r_f_membrane[d_c]).norm(), (r_f_shear[d_c]).norm())); }); return acc0; }(), [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&](rift::Dart d_x) { acc0 = std::max<rift::Real>(acc0, (r_f_stretch[d_x]).norm()); }); return acc0; }());
-    const rift::Real threshold = p_.threshold;
-    if (!(measure > threshold)) return;
-    rift::TearCandidate c;
-    c.at = d_v;
-    c.measure = measure - threshold;
-    found.push_back(c);
+  cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_membrane = e_f_membrane.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_shear = e_f_shear.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_stretch = e_f_stretch.reader();
+    for (const rift::Dart d_v : cells) {
+      [&]() RIFT_CELL_BODY {
+        rift::throw_if_interrupted();
+        const rift::Real measure = std::max<rift::Real>([&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{1}, [&](rift::Dart d_c) { acc0 = std::max<rift::Real>(acc0, std::max<rift::Real>((r_f_membrane[d_c]).norm(), (r_f_shear[d_c]).norm())); }); return acc0; }(), [&]() { rift::Real acc0 = std::numeric_limits<rift::Real>::lowest(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{}, [&](rift::Dart d_x) { acc0 = std::max<rift::Real>(acc0, (r_f_stretch[d_x]).norm()); }); return acc0; }());
+        const rift::Real threshold = p_.threshold;
+        if (!(measure > threshold)) return;
+        rift::TearCandidate c;
+        c.at = d_v;
+        c.measure = measure - threshold;
+        found.push_back(c);
+      }();
+    }
   });
 }
 
@@ -489,22 +513,25 @@ void VertexStressCriterion::initialise(rift::GMap& g) {
 }
 
 void VertexStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Real> r_stress_mass = e_stress_mass.reader();
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Mat3> r_stress_weighted = e_stress_weighted.reader();
-  cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_v, std::vector<rift::TearCandidate>& found) {
-    rift::throw_if_interrupted();
-    const rift::Real l_mass = r_stress_mass[d_v];
-    const rift::Mat3 l_s = ((l_mass > 0.0) ? rift::Mat3((r_stress_weighted[d_v] / l_mass)) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
-    const rift::Real measure = symmetric_max_eigenvalue(l_s);
-    const rift::Real threshold = p_.threshold;
-    if (!(measure > threshold)) return;
-    rift::TearCandidate c;
-    c.at = d_v;
-    c.measure = measure - threshold;
-    rift::generated::put_payload<rift::Vec3>(c, 0, symmetric_max_eigenvector(l_s));  // normal
-    rift::generated::put_payload<rift::Vec3>(c, 3, r_position[d_v]);  // point
-    found.push_back(c);
+  cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Real> r_stress_mass = e_stress_mass.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Mat3> r_stress_weighted = e_stress_weighted.reader();
+    for (const rift::Dart d_v : cells) {
+      [&]() RIFT_CELL_BODY {
+        const rift::Real l_mass = r_stress_mass[d_v];
+        const rift::Mat3 l_s = ((l_mass > 0.0) ? rift::Mat3((r_stress_weighted[d_v] / l_mass)) : rift::Mat3((rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished()));
+        const rift::Real measure = symmetric_max_eigenvalue(l_s);
+        const rift::Real threshold = p_.threshold;
+        if (!(measure > threshold)) return;
+        rift::TearCandidate c;
+        c.at = d_v;
+        c.measure = measure - threshold;
+        rift::generated::put_payload<rift::Vec3>(c, 0, symmetric_max_eigenvector(l_s));  // normal
+        rift::generated::put_payload<rift::Vec3>(c, 3, r_position[d_v]);  // point
+        found.push_back(c);
+      }();
+    }
   });
 }
 
@@ -531,29 +558,33 @@ void VertexEnergyCriterion::initialise(rift::GMap& g) {
 
 void VertexEnergyCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   memo0_.begin(g, rift::Orbit{0, 1});
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Real> r_corner_mass = e_corner_mass.reader();
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_membrane = e_f_membrane.reader();
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Real> r_membrane_lambda = e_membrane_lambda.reader();
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Real> r_membrane_mu = e_membrane_mu.reader();
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
-  cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kOneThread, out, [&](rift::Dart d_v, std::vector<rift::TearCandidate>& found) {
-    rift::throw_if_interrupted();
-    rift::Real s0 = rift::Real(0);
-    rift::Real s1 = rift::Real(0);
-    for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s2 = (((r_position[g.alpha(d_f, 0)] - r_position[d_f])).cross((r_position[g.alpha(g.alpha(d_f, 1), 0)] - r_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Mat3 s3 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (r_f_membrane[d_c]) * (r_position[d_c]).transpose(); }); return acc1; }(); }); const rift::Mat3 s4 = (s3 + (s3).transpose()); s0 += (((r_membrane_mu[d_f] > 0.0) && (s2 > 0.0)) ? (((((s4 * s4)).trace() / (16.0 * r_membrane_mu[d_f])) - ((r_membrane_lambda[d_f] * std::pow((2.0 * (s3).trace()), 2.0)) / ((32.0 * r_membrane_mu[d_f]) * (r_membrane_lambda[d_f] + r_membrane_mu[d_f])))) / (1.5 * s2)) : 0.0); s1 += (s2 / 6.0); });
-    const rift::Real l_stored = s0;
-    const rift::Real l_share = s1;
-    const rift::Real measure = ((l_share > 0.0) ? (l_stored / std::sqrt(l_share)) : 0.0);
-    const rift::Real threshold = p_.toughness;
-    if (!(measure > threshold)) return;
-    rift::TearCandidate c;
-    c.at = d_v;
-    c.measure = measure - threshold;
-    const rift::Mat3 s8 = (rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished();
-    const rift::Mat3 l_weighted = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s5 = (((r_position[g.alpha(d_f, 0)] - r_position[d_f])).cross((r_position[g.alpha(g.alpha(d_f, 1), 0)] - r_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s6 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Real { return fold_sum(g, r_corner_mass, d_f, rift::Orbit{0, 1}, rift::Orbit{1}); }); const rift::Mat3 s7 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (r_f_membrane[d_c]) * (r_position[d_c]).transpose(); }); return acc1; }(); }); acc0 += ((s5 > 0.0) ? rift::Mat3((((s6 * 2.0) / s5) * s7)) : rift::Mat3(s8)); }); return acc0; }();
-    rift::generated::put_payload<rift::Vec3>(c, 0, symmetric_max_eigenvector(((-0.5) * (l_weighted + (l_weighted).transpose()))));  // normal
-    rift::generated::put_payload<rift::Vec3>(c, 3, r_position[d_v]);  // point
-    found.push_back(c);
+  cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kOneThread, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Real> r_corner_mass = e_corner_mass.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_membrane = e_f_membrane.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Real> r_membrane_lambda = e_membrane_lambda.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Real> r_membrane_mu = e_membrane_mu.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
+    for (const rift::Dart d_v : cells) {
+      [&]() RIFT_CELL_BODY {
+        rift::throw_if_interrupted();
+        rift::Real s0 = rift::Real(0);
+        rift::Real s1 = rift::Real(0);
+        for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s2 = (((r_position[g.alpha(d_f, 0)] - r_position[d_f])).cross((r_position[g.alpha(g.alpha(d_f, 1), 0)] - r_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Mat3 s3 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (r_f_membrane[d_c]) * (r_position[d_c]).transpose(); }); return acc1; }(); }); const rift::Mat3 s4 = (s3 + (s3).transpose()); s0 += (((r_membrane_mu[d_f] > 0.0) && (s2 > 0.0)) ? (((((s4 * s4)).trace() / (16.0 * r_membrane_mu[d_f])) - ((r_membrane_lambda[d_f] * std::pow((2.0 * (s3).trace()), 2.0)) / ((32.0 * r_membrane_mu[d_f]) * (r_membrane_lambda[d_f] + r_membrane_mu[d_f])))) / (1.5 * s2)) : 0.0); s1 += (s2 / 6.0); });
+        const rift::Real l_stored = s0;
+        const rift::Real l_share = s1;
+        const rift::Real measure = ((l_share > 0.0) ? (l_stored / std::sqrt(l_share)) : 0.0);
+        const rift::Real threshold = p_.toughness;
+        if (!(measure > threshold)) return;
+        rift::TearCandidate c;
+        c.at = d_v;
+        c.measure = measure - threshold;
+        const rift::Mat3 s8 = (rift::Mat3() << 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0).finished();
+        const rift::Mat3 l_weighted = [&]() { rift::Mat3 acc0 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s5 = (((r_position[g.alpha(d_f, 0)] - r_position[d_f])).cross((r_position[g.alpha(g.alpha(d_f, 1), 0)] - r_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Real s6 = memo0_1_.get(memo0_, memo0_entry, 1, [&]() -> rift::Real { return fold_sum(g, r_corner_mass, d_f, rift::Orbit{0, 1}, rift::Orbit{1}); }); const rift::Mat3 s7 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (r_f_membrane[d_c]) * (r_position[d_c]).transpose(); }); return acc1; }(); }); acc0 += ((s5 > 0.0) ? rift::Mat3((((s6 * 2.0) / s5) * s7)) : rift::Mat3(s8)); }); return acc0; }();
+        rift::generated::put_payload<rift::Vec3>(c, 0, symmetric_max_eigenvector(((-0.5) * (l_weighted + (l_weighted).transpose()))));  // normal
+        rift::generated::put_payload<rift::Vec3>(c, 3, r_position[d_v]);  // point
+        found.push_back(c);
+      }();
+    }
   });
 }
 
@@ -576,19 +607,22 @@ void VertexSumCriterion::initialise(rift::GMap& g) {
 }
 
 void VertexSumCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_vertex_force = e_vertex_force.reader();
-  cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_v, std::vector<rift::TearCandidate>& found) {
-    rift::throw_if_interrupted();
-    const rift::Real measure = (r_vertex_force[d_v]).norm();
-    const rift::Real threshold = p_.threshold;
-    if (!(measure > threshold)) return;
-    rift::TearCandidate c;
-    c.at = d_v;
-    c.measure = measure - threshold;
-    rift::generated::put_payload<rift::Vec3>(c, 0, (r_vertex_force[d_v]).normalized());  // normal
-    rift::generated::put_payload<rift::Vec3>(c, 3, r_position[d_v]);  // point
-    found.push_back(c);
+  cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_vertex_force = e_vertex_force.reader();
+    for (const rift::Dart d_v : cells) {
+      [&]() RIFT_CELL_BODY {
+        const rift::Real measure = (r_vertex_force[d_v]).norm();
+        const rift::Real threshold = p_.threshold;
+        if (!(measure > threshold)) return;
+        rift::TearCandidate c;
+        c.at = d_v;
+        c.measure = measure - threshold;
+        rift::generated::put_payload<rift::Vec3>(c, 0, (r_vertex_force[d_v]).normalized());  // normal
+        rift::generated::put_payload<rift::Vec3>(c, 3, r_position[d_v]);  // point
+        found.push_back(c);
+      }();
+    }
   });
 }
 
@@ -613,31 +647,34 @@ void AtomicEdgeCriterion::initialise(rift::GMap& g) {
 }
 
 void AtomicEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_membrane = e_f_membrane.reader();
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_shear = e_f_shear.reader();
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_stretch = e_f_stretch.reader();
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
-  cells_.collect(g, rift::Orbit{0, 2}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_a, std::vector<rift::TearCandidate>& found) {
-    rift::throw_if_interrupted();
-    if (g.is_free(d_a, 2)) return;
-    const rift::Dart d_b = g.alpha(d_a, 2);
-    const rift::Vec3 s0 = r_position[g.alpha(d_a, 0)];
-    const rift::Vec3 l_ab = (s0 - r_position[d_a]);
-    const rift::Vec3 l_p1 = r_position[g.alpha(g.alpha(d_a, 1), 0)];
-    const rift::Vec3 l_p2 = r_position[g.alpha(g.alpha(d_b, 1), 0)];
-    const rift::Vec3 l_f1 = (((((fold_sum(g, r_f_stretch, d_a, rift::Orbit{1}, rift::Orbit{}) + fold_sum(g, r_f_stretch, g.alpha(d_a, 0), rift::Orbit{1}, rift::Orbit{})) + r_f_shear[d_a]) + r_f_shear[g.alpha(d_a, 0)]) + r_f_membrane[d_a]) + r_f_membrane[g.alpha(d_a, 0)]);
-    const rift::Vec3 l_f2 = (((((fold_sum(g, r_f_stretch, d_b, rift::Orbit{1}, rift::Orbit{}) + fold_sum(g, r_f_stretch, g.alpha(d_b, 0), rift::Orbit{1}, rift::Orbit{})) + r_f_shear[d_b]) + r_f_shear[g.alpha(d_b, 0)]) + r_f_membrane[d_b]) + r_f_membrane[g.alpha(d_b, 0)]);
-    const rift::Vec3 l_mid = (0.5 * (r_position[d_a] + s0));
-    const bool l_contract = (((l_f1).dot((l_p1 - l_mid)) > 0.0) && ((l_f2).dot((l_p2 - l_mid)) > 0.0));
-    const rift::Vec3 l_across = (l_ab).cross(((l_ab).cross((l_p1 - r_position[d_a])) + ((l_p2 - r_position[d_a])).cross(l_ab)));
-    const rift::Real s1 = (l_across).norm();
-    const rift::Real measure = (((s1 > 0.0) && l_contract) ? (std::abs(((l_f1 - l_f2)).dot(l_across)) / s1) : 0.0);
-    const rift::Real threshold = p_.threshold;
-    if (!(measure > threshold)) return;
-    rift::TearCandidate c;
-    c.at = d_a;
-    c.measure = measure - threshold;
-    found.push_back(c);
+  cells_.collect(g, rift::Orbit{0, 2}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_membrane = e_f_membrane.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_shear = e_f_shear.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_stretch = e_f_stretch.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
+    for (const rift::Dart d_a : cells) {
+      [&]() RIFT_CELL_BODY {
+        if (g.is_free(d_a, 2)) return;
+        const rift::Dart d_b = g.alpha(d_a, 2);
+        const rift::Vec3 s0 = r_position[g.alpha(d_a, 0)];
+        const rift::Vec3 l_ab = (s0 - r_position[d_a]);
+        const rift::Vec3 l_p1 = r_position[g.alpha(g.alpha(d_a, 1), 0)];
+        const rift::Vec3 l_p2 = r_position[g.alpha(g.alpha(d_b, 1), 0)];
+        const rift::Vec3 l_f1 = (((((fold_sum(g, r_f_stretch, d_a, rift::Orbit{1}, rift::Orbit{}) + fold_sum(g, r_f_stretch, g.alpha(d_a, 0), rift::Orbit{1}, rift::Orbit{})) + r_f_shear[d_a]) + r_f_shear[g.alpha(d_a, 0)]) + r_f_membrane[d_a]) + r_f_membrane[g.alpha(d_a, 0)]);
+        const rift::Vec3 l_f2 = (((((fold_sum(g, r_f_stretch, d_b, rift::Orbit{1}, rift::Orbit{}) + fold_sum(g, r_f_stretch, g.alpha(d_b, 0), rift::Orbit{1}, rift::Orbit{})) + r_f_shear[d_b]) + r_f_shear[g.alpha(d_b, 0)]) + r_f_membrane[d_b]) + r_f_membrane[g.alpha(d_b, 0)]);
+        const rift::Vec3 l_mid = (0.5 * (r_position[d_a] + s0));
+        const bool l_contract = (((l_f1).dot((l_p1 - l_mid)) > 0.0) && ((l_f2).dot((l_p2 - l_mid)) > 0.0));
+        const rift::Vec3 l_across = (l_ab).cross(((l_ab).cross((l_p1 - r_position[d_a])) + ((l_p2 - r_position[d_a])).cross(l_ab)));
+        const rift::Real s1 = (l_across).norm();
+        const rift::Real measure = (((s1 > 0.0) && l_contract) ? (std::abs(((l_f1 - l_f2)).dot(l_across)) / s1) : 0.0);
+        const rift::Real threshold = p_.threshold;
+        if (!(measure > threshold)) return;
+        rift::TearCandidate c;
+        c.at = d_a;
+        c.measure = measure - threshold;
+        found.push_back(c);
+      }();
+    }
   });
 }
 
@@ -659,22 +696,25 @@ void GlobalEdgeCriterion::initialise(rift::GMap& g) {
 }
 
 void GlobalEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
-  [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_vertex_force = e_vertex_force.reader();
-  cells_.collect(g, rift::Orbit{0, 2}, rift::generated::CollectOn::kEveryCore, out, [&](rift::Dart d_a, std::vector<rift::TearCandidate>& found) {
-    rift::throw_if_interrupted();
-    if (g.is_free(d_a, 2)) return;
-    const rift::Dart d_b = g.alpha(d_a, 2);
-    const rift::Vec3 l_ab = (r_position[g.alpha(d_a, 0)] - r_position[d_a]);
-    const rift::Vec3 l_n = (l_ab).cross(((l_ab).cross((r_position[g.alpha(g.alpha(d_a, 1), 0)] - r_position[d_a])) + ((r_position[g.alpha(g.alpha(d_b, 1), 0)] - r_position[d_a])).cross(l_ab)));
-    const rift::Real l_l = (l_n).norm();
-    const rift::Real measure = ((l_l > 0.0) ? (std::abs(((r_vertex_force[d_a] + r_vertex_force[g.alpha(d_a, 0)])).dot(l_n)) / l_l) : 0.0);
-    const rift::Real threshold = p_.threshold;
-    if (!(measure > threshold)) return;
-    rift::TearCandidate c;
-    c.at = d_a;
-    c.measure = measure - threshold;
-    found.push_back(c);
+  cells_.collect(g, rift::Orbit{0, 2}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_vertex_force = e_vertex_force.reader();
+    for (const rift::Dart d_a : cells) {
+      [&]() RIFT_CELL_BODY {
+        if (g.is_free(d_a, 2)) return;
+        const rift::Dart d_b = g.alpha(d_a, 2);
+        const rift::Vec3 l_ab = (r_position[g.alpha(d_a, 0)] - r_position[d_a]);
+        const rift::Vec3 l_n = (l_ab).cross(((l_ab).cross((r_position[g.alpha(g.alpha(d_a, 1), 0)] - r_position[d_a])) + ((r_position[g.alpha(g.alpha(d_b, 1), 0)] - r_position[d_a])).cross(l_ab)));
+        const rift::Real l_l = (l_n).norm();
+        const rift::Real measure = ((l_l > 0.0) ? (std::abs(((r_vertex_force[d_a] + r_vertex_force[g.alpha(d_a, 0)])).dot(l_n)) / l_l) : 0.0);
+        const rift::Real threshold = p_.threshold;
+        if (!(measure > threshold)) return;
+        rift::TearCandidate c;
+        c.at = d_a;
+        c.measure = measure - threshold;
+        found.push_back(c);
+      }();
+    }
   });
 }
 
