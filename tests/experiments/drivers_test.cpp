@@ -3,6 +3,7 @@
 // friction, notches, selections and physical groups, and setup errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -274,6 +275,52 @@ TEST(Notches, PatchCutsExactlyTheFacesItCrosses) {
   });
   EXPECT_EQ(in_patch, 2u * 8u);
   EXPECT_EQ(elsewhere_inside, 0u);
+}
+
+// Selections list their vertices as GMap::for_each_cell visits them (each
+// vertex's smallest dart, in increasing order), also on a map whose vertex
+// slots do not follow the darts' order: a notch's cuts split vertices, whose
+// new halves take slots at the end.
+TEST(Selections, ListVerticesInTheOrderOfTheCellsWhateverTheSlots) {
+  SetupReport report;
+  auto sim = simulate(scene_of("notch_selection",
+                               "[mesh]\nsource = \"grid:mix:10x10\"\n"
+                               "[[notch]]\nfrom = [0, 0.5, 0]\nto = [0.46, 0.5, 0]\n" +
+                                   std::string(kSprings)),
+                      &report);
+  ASSERT_GT(report.notch_cuts, 0u);
+  const GMap& map = sim->map();
+  const Embedding<Vec3>& position = sim->position();
+  std::vector<Dart> cells;
+  map.for_each_cell(Orbit{1, 2}, [&](Dart d) { cells.push_back(d); });
+  // The premise: the slots of the cells, in cell order, are not in order.
+  bool slots_out_of_order = false;
+  for (std::size_t i = 1; i < cells.size(); ++i)
+    slots_out_of_order =
+        slots_out_of_order || position.slot(cells[i]) < position.slot(cells[i - 1]);
+  ASSERT_TRUE(slots_out_of_order);
+
+  const Vec3 up(0, 1, 0);
+  Selection all;
+  EXPECT_EQ(select_vertices(map, all, up), cells);
+  Selection box;
+  box.kind = Selection::Kind::kBox;
+  box.lo = Vec3(0.2, -1, -1);
+  box.hi = Vec3(0.7, 0.5, 1);
+  std::vector<Dart> in_box;
+  for (const Dart d : cells) {
+    const Vec3& p = position[d];
+    if ((p.array() >= box.lo.array()).all() && (p.array() <= box.hi.array()).all())
+      in_box.push_back(d);
+  }
+  ASSERT_FALSE(in_box.empty());
+  EXPECT_EQ(select_vertices(map, box, up), in_box);
+  Selection corner;
+  corner.kind = Selection::Kind::kCorner;
+  corner.name = "bottom-left";
+  const auto found = select_vertices(map, corner, up);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(position[found[0]], Vec3(0, 0, 0));
 }
 
 TEST(Selections, SidesCornersShapesAndGroups) {
