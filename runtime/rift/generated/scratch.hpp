@@ -25,8 +25,7 @@ struct Scratch {
   std::vector<Dart> orbit;
   std::vector<Dart> marked;
   std::vector<Slot> slots;
-  std::vector<Slot> claimed;
-  std::vector<Slot> seen;
+  std::vector<Slot> claimed;  // update_embedding_slots' table of the slots kept
   // DartList's buffers: the first dart_lists_open are held by open lists.
   std::vector<std::unique_ptr<std::vector<Dart>>> dart_lists;
   std::size_t dart_lists_open = 0;

@@ -153,9 +153,7 @@ class CachedInteraction final : public ForceModel {
     cache_.keep_owners(rewrites_);
     // The cache inserts exactly the matches this returns true for, in order.
     auto match = [&](const GMap& m, Dart d, typename Kernel::Match& out) {
-      if (!match_one(m, d, out)) return false;
-      if (keeps_stored()) stored_.push_back(pending_);
-      return true;
+      return kept(match_one(m, d, out));
     };
     if constexpr (requires(GMap & g) { kernel_.initialise(g, SupportSink{}); }) {
       // The inits find every orbit's pattern (support_sink.hpp): the cache
@@ -165,9 +163,7 @@ class CachedInteraction final : public ForceModel {
       cache_.start_build(map);
       auto build_from = [&](Dart support, const Dart* darts) {
         cache_.build_from(map, support, [&](const GMap& m, Dart, typename Kernel::Match& out) {
-          if (!match_found_one(m, darts, out)) return false;
-          if (keeps_stored()) stored_.push_back(pending_);
-          return true;
+          return kept(match_found_one(m, darts, out));
         });
       };
       kernel_.initialise(map, SupportSink::to(build_from));
@@ -451,6 +447,11 @@ class CachedInteraction final : public ForceModel {
   }
 
   // The kernel's calls, with or without a Stored.
+  /// A build's match: the Stored of a match found is kept beside it.
+  bool kept(bool matched) {
+    if (matched && keeps_stored()) stored_.push_back(pending_);
+    return matched;
+  }
   bool match_one(const GMap& map, Dart d, Match& out) {
     if constexpr (kSplitsStored) {
       return kernel_.match(map, d, out, keeps_stored() ? &pending_ : nullptr);
