@@ -23,6 +23,10 @@ namespace {
 
 using lower::InteractionPlan;
 
+/// rift::ReachWord::kMaxLinks (runtime/rift/sim/reach.hpp): a kernel with a
+/// longer word gets no kReach, and is re-matched within its radius.
+constexpr int kMaxReachLinks = 15;
+
 using ast::orbit_text;
 
 std::string path_text(const std::string& node, const std::vector<int>& hops) {
@@ -1180,6 +1184,23 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
   w.line("static constexpr rift::Orbit kSupport = " + orbit_code(inter.support.dims) + ";");
   w.line("/// Links from the support dart to the farthest dart a match reads.");
   w.line("static constexpr int kRadius = " + std::to_string(plan.kernel.radius) + ";");
+  const auto& reach = plan.kernel.reach;
+  const bool words_fit = std::all_of(reach.begin(), reach.end(), [](const std::vector<int>& word) {
+    return word.size() <= static_cast<std::size_t>(kMaxReachLinks);
+  });
+  if (!reach.empty() && words_fit) {
+    // A re-match walks them back from each touched dart (rift/sim/reach.hpp).
+    w.line("/// Links from the support dart to each dart a match reads (rift/sim/reach.hpp).");
+    std::string words;
+    for (const std::vector<int>& word : reach) {
+      std::string links;
+      for (const int l : word)
+        links += (links.empty() ? "" : ", ") + std::to_string(l);
+      words += (words.empty() ? "" : ", ") + std::string("{") + std::to_string(word.size()) +
+               ", {" + links + "}}";
+    }
+    w.line("static constexpr rift::ReachWord kReach[] = {" + words + "};");
+  }
   w.line("static constexpr bool kTagged = " + std::string(inter.tagged ? "true" : "false") + ";");
   w.line();
   w.line("explicit " + k.cls + "(const " + params + "& p = {}, const Params& pack = {})");

@@ -80,6 +80,7 @@ void write_header(Writer& w, const PackModel& m) {
   w.line("#include \"rift/gmap/gmap.hpp\"");
   w.line("#include \"rift/pack/pack.hpp\"");
   w.line("#include \"rift/sim/cached_interaction.hpp\"");
+  w.line("#include \"rift/sim/reach.hpp\"");
   w.line();
   w.line("namespace rift::packs::" + m.pack + " {");
   w.line();

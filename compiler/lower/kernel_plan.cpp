@@ -53,6 +53,31 @@ class SlotCollector {
   KernelPlan& plan_;
 };
 
+// The words of links from the support dart to every dart a match reads:
+// each node's (the pattern reaches each node from an earlier one by one
+// link, so a node's word extends an earlier node's), then each slot read
+// through hops (its node's word, then the hops). Each word once.
+std::vector<std::vector<int>> reach_words(const KernelPlan& plan) {
+  if (plan.match.hooks.size() != 1) return {};
+  std::vector<std::vector<int>> word(plan.nodes.size());
+  std::vector<std::vector<int>> out = {{}};
+  auto add = [&](std::vector<int> w) {
+    if (std::find(out.begin(), out.end(), w) == out.end()) out.push_back(std::move(w));
+  };
+  for (const Follow& f : plan.match.follows) {
+    std::vector<int> w = word[static_cast<std::size_t>(f.from)];
+    w.push_back(f.dim);
+    word[static_cast<std::size_t>(f.to)] = w;
+    add(std::move(w));
+  }
+  for (const SlotUse& u : plan.slots) {
+    std::vector<int> w = word[static_cast<std::size_t>(u.node)];
+    w.insert(w.end(), u.hops.begin(), u.hops.end());
+    add(std::move(w));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<int> vertex_orbit(int dimension) {
@@ -117,6 +142,7 @@ KernelPlan plan_kernel(const check::CheckedInteraction& ci, const resolve::Symbo
     collect.reads(*j.value);
     collect.add(g.left.find(j.by_node.text), {}, vertex_orbit(g.dimension), "");
   }
+  plan.reach = reach_words(plan);
   return plan;
 }
 

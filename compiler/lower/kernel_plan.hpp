@@ -37,6 +37,11 @@ struct KernelPlan {
   std::vector<ForceStore> forces;  // parallel to the interaction's `force` statements
   std::vector<int> stores;         // the slot of each `store =`, then of each `store +=`
   int radius = 0;                  // kRadius: the farthest dart any read or check touches
+  /// kReach (runtime/rift/sim/reach.hpp): the links from the support dart to
+  /// each dart a match reads (its nodes, and the darts read through hops),
+  /// each word once, in the order they are met. Empty when the pattern has
+  /// more than one hook.
+  std::vector<std::vector<int>> reach;
 
   /// Index of the slot of node@hops on `orbit`, or -1.
   int find(int node, const std::vector<int>& hops, const std::vector<int>& orbit) const;

@@ -46,22 +46,6 @@ std::vector<std::unique_ptr<Criterion>> fresh_criteria(Simulation& sim,
   return out;
 }
 
-// Applies the first candidate of criterion c whose rule applies (a split at
-// a vertex with nothing to split does not), then tells the simulation, as
-// its loop does. False when none applies.
-bool tear_once(Simulation& sim, std::size_t c) {
-  const std::vector<TearCandidate> candidates = collected(*sim.criteria()[c], sim.map());
-  std::vector<Dart> touched;
-  for (const TearCandidate& candidate : candidates) {
-    touched.clear();
-    if (!sim.criteria()[c]->apply(sim.map(), candidate, touched)) continue;
-    EXPECT_EQ(sim.map().check_validity(), std::vector<std::string>{});
-    sim.on_topology_changed(touched);
-    return true;
-  }
-  return false;
-}
-
 // Tears `rounds` times, each time at the first candidate of the criteria in
 // turn (every rule of the scene's criteria runs), and after each tear
 // compares every criterion with its fresh counterpart.
@@ -97,11 +81,6 @@ void tear_and_compare(const std::string& name, const std::string& mesh, const st
   }
   EXPECT_GE(tears, static_cast<std::size_t>(rounds) / 2) << name;
   EXPECT_GT(compared, 0u) << name;
-}
-
-Vec3 shear_and_stretch(const Vec3& p) {
-  return Vec3(1.2 * p.x() + 0.1 * p.y() * p.y(), 1.1 * p.y() + 0.05 * p.x(),
-              p.z() + 0.03 * p.x() * p.y());
 }
 
 TEST(CriterionCells, FollowTearsOfACloth) {

@@ -145,4 +145,23 @@ std::vector<Dart> apply_first_candidate(Simulation& sim, std::size_t c) {
   return touched;
 }
 
+Vec3 shear_and_stretch(const Vec3& p) {
+  return Vec3(1.2 * p.x() + 0.1 * p.y() * p.y(), 1.1 * p.y() + 0.05 * p.x(),
+              p.z() + 0.03 * p.x() * p.y());
+}
+
+bool tear_once(Simulation& sim, std::size_t c) {
+  std::vector<TearCandidate> candidates;
+  sim.criteria().at(c)->collect(sim.map(), candidates);
+  std::vector<Dart> touched;
+  for (const TearCandidate& candidate : candidates) {
+    touched.clear();
+    if (!sim.criteria()[c]->apply(sim.map(), candidate, touched)) continue;
+    EXPECT_EQ(sim.map().check_validity(), std::vector<std::string>{});
+    sim.on_topology_changed(touched);
+    return true;
+  }
+  return false;
+}
+
 }  // namespace rift::tearing_test

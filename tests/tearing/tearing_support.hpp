@@ -69,4 +69,13 @@ void store_forces(Simulation& sim);
 /// would (rematch included); returns the touched darts.
 std::vector<Dart> apply_first_candidate(Simulation& sim, std::size_t c = 0);
 
+/// A smooth deformation that strains every edge of a unit mesh differently
+/// (x and y stretched and sheared, z bent): candidates everywhere.
+Vec3 shear_and_stretch(const Vec3& p);
+
+/// Applies the first candidate of criterion c whose rule applies (a split at
+/// a vertex with nothing to split does not), checks the map, then tells the
+/// simulation, as its loop does. False when none applies.
+bool tear_once(Simulation& sim, std::size_t c);
+
 }  // namespace rift::tearing_test

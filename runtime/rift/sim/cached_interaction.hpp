@@ -4,8 +4,9 @@
 //   using Match = ...;                      // trivially copyable: slots and darts
 //   static constexpr Orbit kSupport;        // the orbit carrying the parameters
 //   static constexpr int kRadius;           // links from the support dart to the farthest matched
-//   dart const std::string& name() const; void initialise(GMap&);                 // declare
-//   embeddings, compute rest values bool match(const GMap&, Dart, Match&) const; void
+//   static constexpr ReachWord kReach[];    // optional: the words to what a match reads
+//   (reach.hpp) dart const std::string& name() const; void initialise(GMap&);                 //
+//   declare embeddings, compute rest values bool match(const GMap&, Dart, Match&) const; void
 //   add_forces(const Match&, const ForceInput&, Vec3* f, bool store); void reset_stored(const
 //   Match&);        // zero the stored forces of a lost match Real energy(const Match&, const
 //   ForceInput&) const;
@@ -251,18 +252,18 @@ class CachedInteraction final : public ForceModel {
     if constexpr (kGroupable) {
       if (grouped_) {
         StoredObserver<GroupsObserver> observer{*this, GroupsObserver{*this}};
-        cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost, observer,
+        cache_.rematch(map, Kernel::kSupport, reach(), region, match, lost, observer,
                        support_chooser());
         return;
       }
     }
     if constexpr (kColoured) {
       StoredObserver<ColouringObserver> observer{*this, ColouringObserver{kernel_, colouring_}};
-      cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost, observer,
+      cache_.rematch(map, Kernel::kSupport, reach(), region, match, lost, observer,
                      support_chooser());
     } else {
       StoredObserver<typename MatchCache<Match>::NoObserver> observer{*this, {}};
-      cache_.rematch(map, Kernel::kSupport, Kernel::kRadius, region, match, lost, observer,
+      cache_.rematch(map, Kernel::kSupport, reach(), region, match, lost, observer,
                      support_chooser());
     }
   }
@@ -443,6 +444,15 @@ class CachedInteraction final : public ForceModel {
       return keeps_stored() || !kKeepsStored;  // the kernel reads ss only when it has slots there
     } else {
       return false;
+    }
+  }
+
+  /// Where a re-match looks (reach.hpp): the kernel's words when it has them.
+  static constexpr Reach reach() {
+    if constexpr (requires { Kernel::kReach; }) {
+      return Reach{Kernel::kRadius, std::span<const ReachWord>(Kernel::kReach)};
+    } else {
+      return Reach{Kernel::kRadius, {}};
     }
   }
 

@@ -27,8 +27,9 @@ class ForceModel {
   /// values, and match every support orbit.
   virtual void initialise(GMap& map) = 0;
 
-  /// Called after rewrites with every dart of every vertex orbit a rewrite
-  /// touched: re-match the support orbits containing one of them, forget the
+  /// Called after rewrites with the darts they touched (created, deleted,
+  /// relinked, or given another slot of any embedding): re-match the support
+  /// orbits whose matches read one of them (rift/sim/reach.hpp), forget the
   /// ones that were deleted, and zero the stored forces of matches that are
   /// lost (§4.1: an interaction whose pattern no longer matches contributes
   /// nothing), and the per-vertex sums at the region's vertices (their

@@ -21,6 +21,7 @@
 #include "rift/core/huge_pages.hpp"
 #include "rift/core/prefetch.hpp"
 #include "rift/gmap/gmap.hpp"
+#include "rift/sim/reach.hpp"
 
 namespace rift {
 
@@ -63,6 +64,11 @@ class MatchCache {
     for (std::size_t e = 0; e < owners_.size(); ++e)
       entry_of_dart_[owners_[e]] = static_cast<std::uint32_t>(e);
     indexed_ = true;
+    // rematch's lists, with room for the darts around a tear now (a few
+    // hundred), so that tears do not grow them one high-water mark at a
+    // time (NoAllocation.WarmTearsAllocateNothing).
+    frontier_.reserve(kTearDarts);
+    seen_.reserve(kTearDarts);
   }
 
   /// Matches every support orbit of the map. match(map, dart, Match&) -> bool.
@@ -128,21 +134,21 @@ class MatchCache {
   void rematch(const GMap& map, Orbit support, int radius, std::span<const Dart> region,
                MatchFn&& match, LostFn&& lost) {
     NoObserver none;
-    rematch(map, support, radius, region, match, lost, none);
+    rematch(map, support, Reach{radius, {}}, region, match, lost, none);
   }
 
   /// The same, telling `observer` (a NoObserver's three methods) of every
   /// change of the dense array.
   template <class MatchFn, class LostFn, class Observer>
-  void rematch(const GMap& map, Orbit support, int radius, std::span<const Dart> region,
+  void rematch(const GMap& map, Orbit support, const Reach& reach, std::span<const Dart> region,
                MatchFn&& match, LostFn&& lost, Observer& observer) {
-    rematch(map, support, radius, region, match, lost, observer, FirstDart{});
+    rematch(map, support, reach, region, match, lost, observer, FirstDart{});
   }
 
   /// The same, a support orbit without an owner (new, or whose owner's match
   /// was lost) matched from the dart choose(map, d) picks (see build).
   template <class MatchFn, class LostFn, class Observer, class ChooseFn>
-  void rematch(const GMap& map, Orbit support, int radius, std::span<const Dart> region,
+  void rematch(const GMap& map, Orbit support, const Reach& reach, std::span<const Dart> region,
                MatchFn&& match, LostFn&& lost, Observer& observer, ChooseFn&& choose) {
     index_owners(map);
     if (entry_of_dart_.size() < map.capacity()) grow_huge(entry_of_dart_, map.capacity(), kNone);
@@ -153,28 +159,41 @@ class MatchCache {
         erase(entry_of_dart_[d], observer);
       }
     }
-    // Every live dart within `radius` links of the region, each once.
+    // The darts whose support orbits may hold a match reading a region dart
+    // (reach.hpp), each once.
     const Mark near = map.reserve_mark();
     frontier_.clear();
-    for (Dart d : region) {
-      if (map.is_alive(d) && !map.is_marked(d, near)) {
-        map.mark(d, near);
-        frontier_.push_back(d);
+    auto take = [&](Dart y) {
+      if (!map.is_marked(y, near)) {
+        map.mark(y, near);
+        frontier_.push_back(y);
       }
-    }
-    std::size_t begin = 0;
-    for (int step = 0; step < radius; ++step) {
-      const std::size_t end = frontier_.size();
-      for (std::size_t k = begin; k < end; ++k) {
-        for (int i = 0; i <= map.dimension(); ++i) {
-          const Dart y = map.alpha(frontier_[k], i);
-          if (!map.is_marked(y, near)) {
-            map.mark(y, near);
-            frontier_.push_back(y);
-          }
+    };
+    if (!reach.words.empty()) {
+      // Each word walked back from each live region dart.
+      for (Dart d : region) {
+        if (!map.is_alive(d)) continue;
+        for (const ReachWord& w : reach.words) {
+          Dart y = d;
+          for (int k = w.length - 1; k >= 0; --k)
+            y = map.alpha(y, w.links[static_cast<std::size_t>(k)]);
+          take(y);
         }
       }
-      begin = end;
+    } else {
+      // Every live dart within `radius` links of the region.
+      for (Dart d : region) {
+        if (map.is_alive(d)) take(d);
+      }
+      std::size_t begin = 0;
+      for (int step = 0; step < reach.radius; ++step) {
+        const std::size_t end = frontier_.size();
+        for (std::size_t k = begin; k < end; ++k) {
+          for (int i = 0; i <= map.dimension(); ++i)
+            take(map.alpha(frontier_[k], i));
+        }
+        begin = end;
+      }
     }
     if (entry_of_dart_.size() >= kPrefetchFromDarts) prefetch_entries(observer);
     // Each support orbit meeting that neighbourhood: keep one owner, match again.
@@ -279,6 +298,8 @@ class MatchCache {
   std::vector<std::uint32_t> entry_of_dart_;  ///< empty until indexed_
   bool indexed_ = false;
   bool keeps_owners_ = true;  ///< false: never re-matched, owners_ stays empty
+  /// Darts rematch's lists have room for from the first re-match on.
+  static constexpr std::size_t kTearDarts = 2048;
   std::vector<Dart> frontier_;
   std::vector<Dart> seen_;  ///< rematch's darts of the support orbits it walked
 };

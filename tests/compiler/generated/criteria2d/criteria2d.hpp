@@ -14,6 +14,7 @@
 #include "rift/gmap/gmap.hpp"
 #include "rift/pack/pack.hpp"
 #include "rift/sim/cached_interaction.hpp"
+#include "rift/sim/reach.hpp"
 
 namespace rift::packs::criteria2d {
 
