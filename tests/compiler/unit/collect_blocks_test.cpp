@@ -3,18 +3,12 @@
 // per-cell interrupt poll only in bodies that walk orbits of unbounded size
 // (the block polls before it starts: rift/generated/collect_cells.hpp).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
-#include "driver/compile.hpp"
+#include "generated_text.hpp"
 
 namespace {
-
-namespace fs = std::filesystem;
 
 const char* kPack = R"(pack blocks dimension 2;
 embedding position : vec3 on <1,2>;
@@ -47,33 +41,14 @@ criterion face on <0,1>(f) (threshold : real > 0 = 1.0) {
 )";
 
 std::string generated_cpp() {
-  const fs::path dir =
-      fs::temp_directory_path() / ("riftc_collect_blocks_test_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  rift::driver::Options options;
-  options.out_dir = dir.string();
-  options.line_directives = false;
-  const auto r = rift::driver::compile_text("blocks.rules", kPack, options);
-  EXPECT_EQ(r.exit_code, 0) << r.diagnostics;
-  std::ifstream in(dir / "blocks.cpp");
-  std::ostringstream s;
-  s << in.rdbuf();
-  in.close();
-  fs::remove_all(dir);
-  return s.str();
-}
-
-/// The text of a generated function, from its signature to the next one.
-std::string function(const std::string& code, const std::string& signature) {
-  const std::size_t start = code.find(signature);
-  if (start == std::string::npos) return {};
-  return code.substr(start, code.find("\n}\n", start) - start);
+  return rift::compiler_test::generated_text("blocks.rules", kPack, "blocks.cpp");
 }
 
 TEST(CollectBlocks, ReadersAreTakenPerBlockAndTheCellsLoopedInside) {
   const std::string code = generated_cpp();
   for (const char* name : {"CornerSums", "Star", "Face"}) {
-    const std::string collect = function(code, std::string(name) + "Criterion::collect(");
+    const std::string collect =
+        rift::compiler_test::function_text(code, std::string(name) + "Criterion::collect(");
     ASSERT_FALSE(collect.empty()) << name << ":\n" << code;
     const std::size_t block = collect.find("std::span<const rift::Dart> cells");
     const std::size_t reader = collect.find("= e_f_dart.reader();");
@@ -92,7 +67,8 @@ TEST(CollectBlocks, ReadersAreTakenPerBlockAndTheCellsLoopedInside) {
 TEST(CollectBlocks, OnlyBodiesWalkingUnboundedOrbitsPollPerCell) {
   const std::string code = generated_cpp();
   const auto polls = [&](const char* name) {
-    const std::string collect = function(code, std::string(name) + "Criterion::collect(");
+    const std::string collect =
+        rift::compiler_test::function_text(code, std::string(name) + "Criterion::collect(");
     EXPECT_FALSE(collect.empty()) << name;
     return collect.find("rift::throw_if_interrupted();") != std::string::npos;
   };

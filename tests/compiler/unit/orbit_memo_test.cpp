@@ -5,18 +5,12 @@
 // walk's choice of dart changes) or that no other cell reaches must be
 // computed where it is written.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
-#include "driver/compile.hpp"
+#include "generated_text.hpp"
 
 namespace {
-
-namespace fs = std::filesystem;
 
 const char* kPack = R"(pack memos dimension 2;
 embedding position : vec3 on <1,2>;
@@ -69,29 +63,11 @@ criterion inside_the_cell on <0,1,2>(x) (threshold : real > 0 = 1.0) {
 )";
 
 std::string generated(const std::string& file) {
-  // Per process: ctest runs this binary's tests as processes of their own,
-  // side by side, and a shared folder was removed under a neighbour's feet.
-  const fs::path dir =
-      fs::temp_directory_path() / ("riftc_orbit_memo_test_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  rift::driver::Options options;
-  options.out_dir = dir.string();
-  options.line_directives = false;
-  const auto r = rift::driver::compile_text("memos.rules", kPack, options);
-  EXPECT_EQ(r.exit_code, 0) << r.diagnostics;
-  std::ifstream in(dir / file);
-  std::ostringstream s;
-  s << in.rdbuf();
-  in.close();
-  fs::remove_all(dir);
-  return s.str();
+  return rift::compiler_test::generated_text("memos.rules", kPack, file);
 }
 
-/// The text of a generated function, from its signature to the next one.
 std::string function(const std::string& code, const std::string& signature) {
-  const std::size_t start = code.find(signature);
-  if (start == std::string::npos) return {};
-  return code.substr(start, code.find("\n}\n", start) - start);
+  return rift::compiler_test::function_text(code, signature);
 }
 
 TEST(OrbitMemo, AFaceValueOfAVertexCriterionIsReadThroughTheMemo) {

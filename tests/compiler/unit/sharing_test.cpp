@@ -4,19 +4,13 @@
 // before the fold. Checked on the IR (equal expressions are one node) and on
 // the generated C++ (how many times a computation is written, and where).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
-#include "driver/compile.hpp"
+#include "generated_text.hpp"
 #include "ir/body.hpp"
 
 namespace {
-
-namespace fs = std::filesystem;
 
 const char* kPack = R"(pack sharing dimension 2;
 embedding position : vec3 on <1,2>;
@@ -56,30 +50,11 @@ criterion heavy on <1,2>(v) (threshold : real > 0 = 1.0) {
 )";
 
 std::string generated_source() {
-  // Per process: ctest runs this binary's tests as processes of their own,
-  // side by side, and a shared folder was removed under a neighbour's feet.
-  const fs::path dir =
-      fs::temp_directory_path() / ("riftc_sharing_test_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  rift::driver::Options options;
-  options.out_dir = dir.string();
-  options.line_directives = false;
-  const auto r = rift::driver::compile_text("sharing.rules", kPack, options);
-  EXPECT_EQ(r.exit_code, 0) << r.diagnostics;
-  std::ifstream in(dir / "sharing.cpp");
-  std::ostringstream s;
-  s << in.rdbuf();
-  in.close();
-  fs::remove_all(dir);
-  return s.str();
+  return rift::compiler_test::generated_text("sharing.rules", kPack, "sharing.cpp");
 }
 
-/// The text of a generated function, from its signature to the next one.
 std::string function(const std::string& code, const std::string& signature) {
-  const std::size_t start = code.find(signature);
-  if (start == std::string::npos) return {};
-  const std::size_t end = code.find("\n}\n", start);
-  return code.substr(start, end - start);
+  return rift::compiler_test::function_text(code, signature);
 }
 
 int count(const std::string& text, const std::string& what) {
