@@ -646,13 +646,20 @@ void write_add_forces_all(Writer& w, const Kernel& k, bool indexed) {
   auto store_at = [&](const ir::Store& st) {
     return "stored_" + st.embedding + "[" + slot_at(k, st.store_slot, ss_i) + "]";
   };
-  // With stored values, one loop per kind of evaluation (storing or not),
-  // each with its own instantiation of the body: the integrator's other
-  // stages run the loop they had without stores.
-  const std::string if_store = stores_values ? "if constexpr (kStore) " : "if (store) ";
-  // Not inlined: two instantiations of the body in one function exceed the
-  // inliner's growth limits, and the matrix products of both would be calls.
-  if (stores_values) w.open("auto pass = [&]<bool kStore>() __attribute__((noinline)) {");
+  // One loop per kind of pass (storing or not), each with its own
+  // instantiation of the body: the integrator's other stages run a loop
+  // without stores, and without a test of `store` at each stored force
+  // (four of a shear spring's 70 instructions).
+  const bool two_passes = stores_values || !stores.empty();
+  const std::string if_store = two_passes ? "if constexpr (kStore) " : "if (store) ";
+  // With stored values not inlined: two instantiations of the body in one
+  // function exceed the inliner's growth limits, and the matrix products of
+  // both would be calls. Without, inlined: a call would read the input and
+  // the columns through the closure at every use.
+  if (two_passes) {
+    w.open(stores_values ? "auto pass = [&]<bool kStore>() __attribute__((noinline)) {"
+                         : "auto pass = [&]<bool kStore>() {");
+  }
   if (indexed) {
     w.open("for (std::size_t i = 0; i < n; ++i) {");
     w.line("const Match& m = ms[at[i]];");
@@ -700,7 +707,7 @@ void write_add_forces_all(Writer& w, const Kernel& k, bool indexed) {
     w.line("(void)evaluate<true>(m, in, c, r);");
   }
   w.close();
-  if (stores_values) {
+  if (two_passes) {
     w.close("};");
     w.line("if (store) {");
     w.line("  pass.template operator()<true>();");
@@ -1031,13 +1038,16 @@ void write_add_forces_grouped(Writer& w, const Kernel& k, bool indexed) {
   const ir::Body& b = k.plan->body;
   const std::string n = std::to_string(b.forces.size());
   w.open("void " + k.cls +
-         (indexed ? "::add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* "
+         (indexed ? "::add_forces_grouped_at(std::span<const Match> reps, const rift::Real* "
                     "counts, const std::uint32_t* at, std::size_t n, const "
-                  : "::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* "
+                  : "::add_forces_grouped(std::span<const Match> reps, const rift::Real* "
                     "counts, const ") +
          "rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {");
   w.line(kLocalInput);
   w.line("const Columns c = columns();");
+  // The loop twice, with and without terms: a test of `terms` in the loop
+  // was two of the stretch spring's 80 instructions.
+  w.open("const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {");
   if (indexed) {
     w.open("for (std::size_t i = 0; i < n; ++i) {");
     w.line("const std::uint32_t e = at[i];");
@@ -1048,7 +1058,8 @@ void write_add_forces_grouped(Writer& w, const Kernel& k, bool indexed) {
   }
   w.line("Result r;");
   w.open("if (!evaluate<true>(m, in, c, r)) {");
-  w.line("if (terms) for (int t = 0; t < " + n + "; ++t) terms[i * " + n + " + t].setZero();");
+  w.line("if constexpr (kTerms) for (int t = 0; t < " + n + "; ++t) terms[i * " + n +
+         " + t].setZero();");
   w.line("continue;");
   w.close();
   w.line(indexed ? "const rift::Real count = counts[e];" : "const rift::Real count = counts[i];");
@@ -1072,13 +1083,15 @@ void write_add_forces_grouped(Writer& w, const Kernel& k, bool indexed) {
       w.line(target + " += count * r." + force_field(b, f) + ";");
     }
   }
-  w.open("if (terms) {");
+  w.open("if constexpr (kTerms) {");
   for (std::size_t i = 0; i < b.forces.size(); ++i) {
     w.line("terms[i * " + n + " + " + std::to_string(i) + "] = r." + force_field(b, b.forces[i]) +
            ";");
   }
   w.close();
   w.close();
+  w.close("};");
+  w.line("if (terms) loop(std::true_type{}); else loop(std::false_type{});");
   w.close();
   w.line();
 }
@@ -1276,11 +1289,11 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
     w.line("/// The force pass over groups: adds counts[i] times the forces of reps[i];");
     w.line("/// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.");
     w.line(
-        "void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const "
+        "void add_forces_grouped(std::span<const Match> reps, const rift::Real* counts, const "
         "rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);");
     w.line("/// The same over reps[at[i]] (counts parallel to reps) for i < n.");
     w.line(
-        "void add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, "
+        "void add_forces_grouped_at(std::span<const Match> reps, const rift::Real* counts, "
         "const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, "
         "rift::Vec3* terms);");
   }

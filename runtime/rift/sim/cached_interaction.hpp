@@ -43,7 +43,7 @@
 //   void group_key(const Match&, std::uint64_t* out) const;  // vertex slots, then value bits
 //   bool evaluate_terms(const Match&, const ForceInput&, Vec3* terms) const;
 //   void store_terms(const Match&, const Vec3* terms);       // the stored forces
-//   void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts,
+//   void add_forces_grouped(std::span<const Match> reps, const Real* counts,
 //                           const ForceInput&, Vec3* f,      // f += count × forces
 //                           Vec3* terms);                    // and each rep's forces
 //
@@ -315,8 +315,8 @@ class CachedInteraction final : public ForceModel {
       if (matches_given_back_) {
         // No matches to check against: the groups must still count them all.
         std::size_t members = 0;
-        for (std::uint32_t c : groups_.counts())
-          members += c;
+        for (const Real c : groups_.counts())
+          members += static_cast<std::size_t>(c);
         return members == matched_ ? "" : "the groups count another number of matches";
       }
       if (grouped_) return groups_.check(cache_.matches(), key_fn());
@@ -329,9 +329,9 @@ class CachedInteraction final : public ForceModel {
     if (matches_given_back_) {
       // Each group's members have its representative's energy, bit for bit.
       const std::span<const Match> reps = groups_.representatives();
-      const std::span<const std::uint32_t> counts = groups_.counts();
+      const std::span<const Real> counts = groups_.counts();
       for (std::size_t g = 0; g < reps.size(); ++g)
-        e += static_cast<Real>(counts[g]) * kernel_.energy(reps[g], in);
+        e += counts[g] * kernel_.energy(reps[g], in);
       return e;
     }
     for (const auto& m : cache_.matches())
@@ -536,12 +536,12 @@ class CachedInteraction final : public ForceModel {
   static constexpr bool kGroupable =
       kColoured && requires(const Kernel& k, Kernel& mk, const Match& m, std::uint64_t* key,
                             const ForceInput& in, Vec3* t, std::span<const Match> ms,
-                            const std::uint32_t* counts) {
+                            const Real* counts, const std::uint32_t* at) {
     Kernel::kGroupKey;
     k.group_key(m, key);
     k.evaluate_terms(m, in, t);
     mk.add_forces_grouped(ms, counts, in, t, t);
-    mk.add_forces_grouped_at(ms, counts, counts, ms.size(), in, t, t);
+    mk.add_forces_grouped_at(ms, counts, at, ms.size(), in, t, t);
   }
   &&(
       requires(Kernel& mk, const Match& m, const Vec3* t) { mk.store_terms(m, t); } ||
@@ -640,7 +640,7 @@ class CachedInteraction final : public ForceModel {
   void add_forces_grouped(const ForceInput& in, Vec3* f, bool store) {
     if constexpr (kGroupable) {
       const std::span<const Match> reps = groups_.representatives();
-      const std::span<const std::uint32_t> counts = groups_.counts();
+      const std::span<const Real> counts = groups_.counts();
       const std::span<const Match> all = cache_.matches();
       // A block a tear reshuffled is read in place, through its entries; of
       // a consecutive block only the first entry is read (a frozen colouring

@@ -104,8 +104,9 @@ class MatchGroups {
   std::size_t size() const { return reps_.size(); }
   /// One member's match per group (any member: they share their key).
   std::span<const Match> representatives() const { return reps_; }
-  /// Members per group, parallel to representatives().
-  std::span<const std::uint32_t> counts() const { return count_; }
+  /// Members per group, parallel to representatives(), as the factor the
+  /// force pass multiplies each group's forces by (see count_).
+  std::span<const Real> counts() const { return count_; }
   std::uint32_t group_of(std::uint32_t entry) const { return group_of_[entry]; }
   /// What the last build kept.
   Keep keeps() const { return keep_; }
@@ -288,7 +289,7 @@ class MatchGroups {
       for_each_member(g, [&](std::uint32_t e) {
         if (group_of_[e] == g) ++n;
       });
-      if (n != count_[g] || seen[g] != count_[g])
+      if (Real(n) != count_[g] || Real(seen[g]) != count_[g])
         return "group " + std::to_string(g) + " has a wrong count";
       key(reps_[g], a);
       if (find(a) != g) return "group " + std::to_string(g) + " is not found by its key";
@@ -334,7 +335,7 @@ class MatchGroups {
         n = 0;
         for_each_member(g, [&](std::uint32_t) { ++n; });
       }
-      if (seen[g] != count_[g] || n != count_[g])
+      if (Real(seen[g]) != count_[g] || Real(n) != count_[g])
         return "group " + std::to_string(g) + " has a wrong count";
     }
     return "";
@@ -551,7 +552,10 @@ class MatchGroups {
   std::uint64_t spread_ = kSpread;  ///< positions per value of a key's first word
   Keep keep_ = Keep::kEverything;
   std::vector<Match> reps_;
-  std::vector<std::uint32_t> count_;
+  // A whole number kept as a Real: the force pass multiplies every force of
+  // a group by it, and converting an integer there (pxor, cvtsi2sd, a
+  // register) was 5 % of a spring's evaluation. Exact up to 2^53 members.
+  std::vector<Real> count_;
   std::vector<std::uint32_t> head_;      ///< per group: its first member
   std::vector<std::uint64_t> keys_;      ///< per group: its key (words_ words), as grouped
   std::vector<std::uint32_t> group_of_;  ///< per entry

@@ -248,22 +248,29 @@ void StretchKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, 
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   rift::Vec3* const stored_f_stretch = store ? e_f_stretch.values().data() : nullptr;
-  for (std::size_t i = 0; i < ms.size(); ++i) {
-    const Match& m = ms[i];
-    Result r;
-    if (!evaluate<true>(m, in, c, r)) {
-      if (store) {
-        stored_f_stretch[ss[i].dart_a] = rift::Vec3::Zero();
-        stored_f_stretch[ss[i].dart_b] = rift::Vec3::Zero();
+  auto pass = [&]<bool kStore>() {
+    for (std::size_t i = 0; i < ms.size(); ++i) {
+      const Match& m = ms[i];
+      Result r;
+      if (!evaluate<true>(m, in, c, r)) {
+        if constexpr (kStore) {
+          stored_f_stretch[ss[i].dart_a] = rift::Vec3::Zero();
+          stored_f_stretch[ss[i].dart_b] = rift::Vec3::Zero();
+        }
+        continue;
       }
-      continue;
+      const rift::Slot to_vertex_a = m.vertex_a;
+      const rift::Slot to_vertex_b = m.vertex_b;
+      f[to_vertex_a] += r.f_stretch_a;
+      if constexpr (kStore) stored_f_stretch[ss[i].dart_a] = r.f_stretch_a;
+      f[to_vertex_b] -= r.f_stretch_a;
+      if constexpr (kStore) stored_f_stretch[ss[i].dart_b] = r.f_stretch_b;
     }
-    const rift::Slot to_vertex_a = m.vertex_a;
-    const rift::Slot to_vertex_b = m.vertex_b;
-    f[to_vertex_a] += r.f_stretch_a;
-    if (store) stored_f_stretch[ss[i].dart_a] = r.f_stretch_a;
-    f[to_vertex_b] -= r.f_stretch_a;
-    if (store) stored_f_stretch[ss[i].dart_b] = r.f_stretch_b;
+  };
+  if (store) {
+    pass.template operator()<true>();
+  } else {
+    pass.template operator()<false>();
   }
 }
 
@@ -271,22 +278,29 @@ void StretchKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   rift::Vec3* const stored_f_stretch = store ? e_f_stretch.values().data() : nullptr;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Match& m = ms[at[i]];
-    Result r;
-    if (!evaluate<true>(m, in, c, r)) {
-      if (store) {
-        stored_f_stretch[ss[at[i]].dart_a] = rift::Vec3::Zero();
-        stored_f_stretch[ss[at[i]].dart_b] = rift::Vec3::Zero();
+  auto pass = [&]<bool kStore>() {
+    for (std::size_t i = 0; i < n; ++i) {
+      const Match& m = ms[at[i]];
+      Result r;
+      if (!evaluate<true>(m, in, c, r)) {
+        if constexpr (kStore) {
+          stored_f_stretch[ss[at[i]].dart_a] = rift::Vec3::Zero();
+          stored_f_stretch[ss[at[i]].dart_b] = rift::Vec3::Zero();
+        }
+        continue;
       }
-      continue;
+      const rift::Slot to_vertex_a = m.vertex_a;
+      const rift::Slot to_vertex_b = m.vertex_b;
+      f[to_vertex_a] += r.f_stretch_a;
+      if constexpr (kStore) stored_f_stretch[ss[at[i]].dart_a] = r.f_stretch_a;
+      f[to_vertex_b] -= r.f_stretch_a;
+      if constexpr (kStore) stored_f_stretch[ss[at[i]].dart_b] = r.f_stretch_b;
     }
-    const rift::Slot to_vertex_a = m.vertex_a;
-    const rift::Slot to_vertex_b = m.vertex_b;
-    f[to_vertex_a] += r.f_stretch_a;
-    if (store) stored_f_stretch[ss[at[i]].dart_a] = r.f_stretch_a;
-    f[to_vertex_b] -= r.f_stretch_a;
-    if (store) stored_f_stretch[ss[at[i]].dart_b] = r.f_stretch_b;
+  };
+  if (store) {
+    pass.template operator()<true>();
+  } else {
+    pass.template operator()<false>();
   }
 }
 
@@ -331,51 +345,57 @@ void StretchKernel::store_terms_of(std::span<const Match> ms, const Stored* ss, 
   }
 }
 
-void StretchKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
+void StretchKernel::add_forces_grouped(std::span<const Match> reps, const rift::Real* counts, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
-  for (std::size_t i = 0; i < reps.size(); ++i) {
-    const Match& m = reps[i];
-    Result r;
-    if (!evaluate<true>(m, in, c, r)) {
-      if (terms) for (int t = 0; t < 2; ++t) terms[i * 2 + t].setZero();
-      continue;
+  const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {
+    for (std::size_t i = 0; i < reps.size(); ++i) {
+      const Match& m = reps[i];
+      Result r;
+      if (!evaluate<true>(m, in, c, r)) {
+        if constexpr (kTerms) for (int t = 0; t < 2; ++t) terms[i * 2 + t].setZero();
+        continue;
+      }
+      const rift::Real count = counts[i];
+      const rift::Slot to_vertex_a = m.vertex_a;
+      const rift::Slot to_vertex_b = m.vertex_b;
+      const rift::Vec3 cf0 = count * r.f_stretch_a;
+      f[to_vertex_a] += cf0;
+      f[to_vertex_b] -= cf0;
+      if constexpr (kTerms) {
+        terms[i * 2 + 0] = r.f_stretch_a;
+        terms[i * 2 + 1] = r.f_stretch_b;
+      }
     }
-    const rift::Real count = counts[i];
-    const rift::Slot to_vertex_a = m.vertex_a;
-    const rift::Slot to_vertex_b = m.vertex_b;
-    const rift::Vec3 cf0 = count * r.f_stretch_a;
-    f[to_vertex_a] += cf0;
-    f[to_vertex_b] -= cf0;
-    if (terms) {
-      terms[i * 2 + 0] = r.f_stretch_a;
-      terms[i * 2 + 1] = r.f_stretch_b;
-    }
-  }
+  };
+  if (terms) loop(std::true_type{}); else loop(std::false_type{});
 }
 
-void StretchKernel::add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
+void StretchKernel::add_forces_grouped_at(std::span<const Match> reps, const rift::Real* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t e = at[i];
-    const Match& m = reps[e];
-    Result r;
-    if (!evaluate<true>(m, in, c, r)) {
-      if (terms) for (int t = 0; t < 2; ++t) terms[i * 2 + t].setZero();
-      continue;
+  const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint32_t e = at[i];
+      const Match& m = reps[e];
+      Result r;
+      if (!evaluate<true>(m, in, c, r)) {
+        if constexpr (kTerms) for (int t = 0; t < 2; ++t) terms[i * 2 + t].setZero();
+        continue;
+      }
+      const rift::Real count = counts[e];
+      const rift::Slot to_vertex_a = m.vertex_a;
+      const rift::Slot to_vertex_b = m.vertex_b;
+      const rift::Vec3 cf0 = count * r.f_stretch_a;
+      f[to_vertex_a] += cf0;
+      f[to_vertex_b] -= cf0;
+      if constexpr (kTerms) {
+        terms[i * 2 + 0] = r.f_stretch_a;
+        terms[i * 2 + 1] = r.f_stretch_b;
+      }
     }
-    const rift::Real count = counts[e];
-    const rift::Slot to_vertex_a = m.vertex_a;
-    const rift::Slot to_vertex_b = m.vertex_b;
-    const rift::Vec3 cf0 = count * r.f_stretch_a;
-    f[to_vertex_a] += cf0;
-    f[to_vertex_b] -= cf0;
-    if (terms) {
-      terms[i * 2 + 0] = r.f_stretch_a;
-      terms[i * 2 + 1] = r.f_stretch_b;
-    }
-  }
+  };
+  if (terms) loop(std::true_type{}); else loop(std::false_type{});
 }
 
 void StretchKernel::reset_stored([[maybe_unused]] const Match& m, [[maybe_unused]] const Stored& s) {
@@ -600,30 +620,37 @@ void ShearKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, co
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   rift::Vec3* const stored_f_shear = store ? e_f_shear.values().data() : nullptr;
-  for (std::size_t i = 0; i < ms.size(); ++i) {
-    const Match& m = ms[i];
-    Result r;
-    if (!evaluate<true>(m, in, c, r)) {
-      if (store) {
-        stored_f_shear[ss[i].orbit1_c0] = rift::Vec3::Zero();
-        stored_f_shear[ss[i].orbit1_c2] = rift::Vec3::Zero();
-        stored_f_shear[ss[i].orbit1_c1] = rift::Vec3::Zero();
-        stored_f_shear[ss[i].orbit1_c3] = rift::Vec3::Zero();
+  auto pass = [&]<bool kStore>() {
+    for (std::size_t i = 0; i < ms.size(); ++i) {
+      const Match& m = ms[i];
+      Result r;
+      if (!evaluate<true>(m, in, c, r)) {
+        if constexpr (kStore) {
+          stored_f_shear[ss[i].orbit1_c0] = rift::Vec3::Zero();
+          stored_f_shear[ss[i].orbit1_c2] = rift::Vec3::Zero();
+          stored_f_shear[ss[i].orbit1_c1] = rift::Vec3::Zero();
+          stored_f_shear[ss[i].orbit1_c3] = rift::Vec3::Zero();
+        }
+        continue;
       }
-      continue;
+      const rift::Slot to_vertex_c0 = m.vertex_c0;
+      const rift::Slot to_vertex_c2 = m.vertex_c2;
+      const rift::Slot to_vertex_c1 = m.vertex_c1;
+      const rift::Slot to_vertex_c3 = m.vertex_c3;
+      f[to_vertex_c0] += r.f_shear_c0;
+      if constexpr (kStore) stored_f_shear[ss[i].orbit1_c0] = r.f_shear_c0;
+      f[to_vertex_c2] -= r.f_shear_c0;
+      if constexpr (kStore) stored_f_shear[ss[i].orbit1_c2] = r.f_shear_c2;
+      f[to_vertex_c1] += r.f_shear_c1;
+      if constexpr (kStore) stored_f_shear[ss[i].orbit1_c1] = r.f_shear_c1;
+      f[to_vertex_c3] -= r.f_shear_c1;
+      if constexpr (kStore) stored_f_shear[ss[i].orbit1_c3] = r.f_shear_c3;
     }
-    const rift::Slot to_vertex_c0 = m.vertex_c0;
-    const rift::Slot to_vertex_c2 = m.vertex_c2;
-    const rift::Slot to_vertex_c1 = m.vertex_c1;
-    const rift::Slot to_vertex_c3 = m.vertex_c3;
-    f[to_vertex_c0] += r.f_shear_c0;
-    if (store) stored_f_shear[ss[i].orbit1_c0] = r.f_shear_c0;
-    f[to_vertex_c2] -= r.f_shear_c0;
-    if (store) stored_f_shear[ss[i].orbit1_c2] = r.f_shear_c2;
-    f[to_vertex_c1] += r.f_shear_c1;
-    if (store) stored_f_shear[ss[i].orbit1_c1] = r.f_shear_c1;
-    f[to_vertex_c3] -= r.f_shear_c1;
-    if (store) stored_f_shear[ss[i].orbit1_c3] = r.f_shear_c3;
+  };
+  if (store) {
+    pass.template operator()<true>();
+  } else {
+    pass.template operator()<false>();
   }
 }
 
@@ -631,30 +658,37 @@ void ShearKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* 
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   rift::Vec3* const stored_f_shear = store ? e_f_shear.values().data() : nullptr;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Match& m = ms[at[i]];
-    Result r;
-    if (!evaluate<true>(m, in, c, r)) {
-      if (store) {
-        stored_f_shear[ss[at[i]].orbit1_c0] = rift::Vec3::Zero();
-        stored_f_shear[ss[at[i]].orbit1_c2] = rift::Vec3::Zero();
-        stored_f_shear[ss[at[i]].orbit1_c1] = rift::Vec3::Zero();
-        stored_f_shear[ss[at[i]].orbit1_c3] = rift::Vec3::Zero();
+  auto pass = [&]<bool kStore>() {
+    for (std::size_t i = 0; i < n; ++i) {
+      const Match& m = ms[at[i]];
+      Result r;
+      if (!evaluate<true>(m, in, c, r)) {
+        if constexpr (kStore) {
+          stored_f_shear[ss[at[i]].orbit1_c0] = rift::Vec3::Zero();
+          stored_f_shear[ss[at[i]].orbit1_c2] = rift::Vec3::Zero();
+          stored_f_shear[ss[at[i]].orbit1_c1] = rift::Vec3::Zero();
+          stored_f_shear[ss[at[i]].orbit1_c3] = rift::Vec3::Zero();
+        }
+        continue;
       }
-      continue;
+      const rift::Slot to_vertex_c0 = m.vertex_c0;
+      const rift::Slot to_vertex_c2 = m.vertex_c2;
+      const rift::Slot to_vertex_c1 = m.vertex_c1;
+      const rift::Slot to_vertex_c3 = m.vertex_c3;
+      f[to_vertex_c0] += r.f_shear_c0;
+      if constexpr (kStore) stored_f_shear[ss[at[i]].orbit1_c0] = r.f_shear_c0;
+      f[to_vertex_c2] -= r.f_shear_c0;
+      if constexpr (kStore) stored_f_shear[ss[at[i]].orbit1_c2] = r.f_shear_c2;
+      f[to_vertex_c1] += r.f_shear_c1;
+      if constexpr (kStore) stored_f_shear[ss[at[i]].orbit1_c1] = r.f_shear_c1;
+      f[to_vertex_c3] -= r.f_shear_c1;
+      if constexpr (kStore) stored_f_shear[ss[at[i]].orbit1_c3] = r.f_shear_c3;
     }
-    const rift::Slot to_vertex_c0 = m.vertex_c0;
-    const rift::Slot to_vertex_c2 = m.vertex_c2;
-    const rift::Slot to_vertex_c1 = m.vertex_c1;
-    const rift::Slot to_vertex_c3 = m.vertex_c3;
-    f[to_vertex_c0] += r.f_shear_c0;
-    if (store) stored_f_shear[ss[at[i]].orbit1_c0] = r.f_shear_c0;
-    f[to_vertex_c2] -= r.f_shear_c0;
-    if (store) stored_f_shear[ss[at[i]].orbit1_c2] = r.f_shear_c2;
-    f[to_vertex_c1] += r.f_shear_c1;
-    if (store) stored_f_shear[ss[at[i]].orbit1_c1] = r.f_shear_c1;
-    f[to_vertex_c3] -= r.f_shear_c1;
-    if (store) stored_f_shear[ss[at[i]].orbit1_c3] = r.f_shear_c3;
+  };
+  if (store) {
+    pass.template operator()<true>();
+  } else {
+    pass.template operator()<false>();
   }
 }
 
@@ -710,65 +744,71 @@ void ShearKernel::store_terms_of(std::span<const Match> ms, const Stored* ss, co
   }
 }
 
-void ShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
+void ShearKernel::add_forces_grouped(std::span<const Match> reps, const rift::Real* counts, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
-  for (std::size_t i = 0; i < reps.size(); ++i) {
-    const Match& m = reps[i];
-    Result r;
-    if (!evaluate<true>(m, in, c, r)) {
-      if (terms) for (int t = 0; t < 4; ++t) terms[i * 4 + t].setZero();
-      continue;
+  const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {
+    for (std::size_t i = 0; i < reps.size(); ++i) {
+      const Match& m = reps[i];
+      Result r;
+      if (!evaluate<true>(m, in, c, r)) {
+        if constexpr (kTerms) for (int t = 0; t < 4; ++t) terms[i * 4 + t].setZero();
+        continue;
+      }
+      const rift::Real count = counts[i];
+      const rift::Slot to_vertex_c0 = m.vertex_c0;
+      const rift::Slot to_vertex_c2 = m.vertex_c2;
+      const rift::Slot to_vertex_c1 = m.vertex_c1;
+      const rift::Slot to_vertex_c3 = m.vertex_c3;
+      const rift::Vec3 cf0 = count * r.f_shear_c0;
+      f[to_vertex_c0] += cf0;
+      f[to_vertex_c2] -= cf0;
+      const rift::Vec3 cf2 = count * r.f_shear_c1;
+      f[to_vertex_c1] += cf2;
+      f[to_vertex_c3] -= cf2;
+      if constexpr (kTerms) {
+        terms[i * 4 + 0] = r.f_shear_c0;
+        terms[i * 4 + 1] = r.f_shear_c2;
+        terms[i * 4 + 2] = r.f_shear_c1;
+        terms[i * 4 + 3] = r.f_shear_c3;
+      }
     }
-    const rift::Real count = counts[i];
-    const rift::Slot to_vertex_c0 = m.vertex_c0;
-    const rift::Slot to_vertex_c2 = m.vertex_c2;
-    const rift::Slot to_vertex_c1 = m.vertex_c1;
-    const rift::Slot to_vertex_c3 = m.vertex_c3;
-    const rift::Vec3 cf0 = count * r.f_shear_c0;
-    f[to_vertex_c0] += cf0;
-    f[to_vertex_c2] -= cf0;
-    const rift::Vec3 cf2 = count * r.f_shear_c1;
-    f[to_vertex_c1] += cf2;
-    f[to_vertex_c3] -= cf2;
-    if (terms) {
-      terms[i * 4 + 0] = r.f_shear_c0;
-      terms[i * 4 + 1] = r.f_shear_c2;
-      terms[i * 4 + 2] = r.f_shear_c1;
-      terms[i * 4 + 3] = r.f_shear_c3;
-    }
-  }
+  };
+  if (terms) loop(std::true_type{}); else loop(std::false_type{});
 }
 
-void ShearKernel::add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
+void ShearKernel::add_forces_grouped_at(std::span<const Match> reps, const rift::Real* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t e = at[i];
-    const Match& m = reps[e];
-    Result r;
-    if (!evaluate<true>(m, in, c, r)) {
-      if (terms) for (int t = 0; t < 4; ++t) terms[i * 4 + t].setZero();
-      continue;
+  const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint32_t e = at[i];
+      const Match& m = reps[e];
+      Result r;
+      if (!evaluate<true>(m, in, c, r)) {
+        if constexpr (kTerms) for (int t = 0; t < 4; ++t) terms[i * 4 + t].setZero();
+        continue;
+      }
+      const rift::Real count = counts[e];
+      const rift::Slot to_vertex_c0 = m.vertex_c0;
+      const rift::Slot to_vertex_c2 = m.vertex_c2;
+      const rift::Slot to_vertex_c1 = m.vertex_c1;
+      const rift::Slot to_vertex_c3 = m.vertex_c3;
+      const rift::Vec3 cf0 = count * r.f_shear_c0;
+      f[to_vertex_c0] += cf0;
+      f[to_vertex_c2] -= cf0;
+      const rift::Vec3 cf2 = count * r.f_shear_c1;
+      f[to_vertex_c1] += cf2;
+      f[to_vertex_c3] -= cf2;
+      if constexpr (kTerms) {
+        terms[i * 4 + 0] = r.f_shear_c0;
+        terms[i * 4 + 1] = r.f_shear_c2;
+        terms[i * 4 + 2] = r.f_shear_c1;
+        terms[i * 4 + 3] = r.f_shear_c3;
+      }
     }
-    const rift::Real count = counts[e];
-    const rift::Slot to_vertex_c0 = m.vertex_c0;
-    const rift::Slot to_vertex_c2 = m.vertex_c2;
-    const rift::Slot to_vertex_c1 = m.vertex_c1;
-    const rift::Slot to_vertex_c3 = m.vertex_c3;
-    const rift::Vec3 cf0 = count * r.f_shear_c0;
-    f[to_vertex_c0] += cf0;
-    f[to_vertex_c2] -= cf0;
-    const rift::Vec3 cf2 = count * r.f_shear_c1;
-    f[to_vertex_c1] += cf2;
-    f[to_vertex_c3] -= cf2;
-    if (terms) {
-      terms[i * 4 + 0] = r.f_shear_c0;
-      terms[i * 4 + 1] = r.f_shear_c2;
-      terms[i * 4 + 2] = r.f_shear_c1;
-      terms[i * 4 + 3] = r.f_shear_c3;
-    }
-  }
+  };
+  if (terms) loop(std::true_type{}); else loop(std::false_type{});
 }
 
 void ShearKernel::reset_stored([[maybe_unused]] const Match& m, [[maybe_unused]] const Stored& s) {
@@ -2271,46 +2311,53 @@ void VolumeShearKernel::add_forces_all(std::span<const Match> ms, const Stored* 
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   rift::Vec3* const stored_f_volume_shear = store ? e_f_volume_shear.values().data() : nullptr;
-  for (std::size_t i = 0; i < ms.size(); ++i) {
-    const Match& m = ms[i];
-    Result r;
-    if (!evaluate<true>(m, in, c, r)) {
-      if (store) {
-        stored_f_volume_shear[ss[i].orbit12_b0] = rift::Vec3::Zero();
-        stored_f_volume_shear[ss[i].orbit12_s22] = rift::Vec3::Zero();
-        stored_f_volume_shear[ss[i].orbit12_b2] = rift::Vec3::Zero();
-        stored_f_volume_shear[ss[i].orbit12_s32] = rift::Vec3::Zero();
-        stored_f_volume_shear[ss[i].orbit12_b4] = rift::Vec3::Zero();
-        stored_f_volume_shear[ss[i].orbit12_s02] = rift::Vec3::Zero();
-        stored_f_volume_shear[ss[i].orbit12_b6] = rift::Vec3::Zero();
-        stored_f_volume_shear[ss[i].orbit12_s12] = rift::Vec3::Zero();
+  auto pass = [&]<bool kStore>() {
+    for (std::size_t i = 0; i < ms.size(); ++i) {
+      const Match& m = ms[i];
+      Result r;
+      if (!evaluate<true>(m, in, c, r)) {
+        if constexpr (kStore) {
+          stored_f_volume_shear[ss[i].orbit12_b0] = rift::Vec3::Zero();
+          stored_f_volume_shear[ss[i].orbit12_s22] = rift::Vec3::Zero();
+          stored_f_volume_shear[ss[i].orbit12_b2] = rift::Vec3::Zero();
+          stored_f_volume_shear[ss[i].orbit12_s32] = rift::Vec3::Zero();
+          stored_f_volume_shear[ss[i].orbit12_b4] = rift::Vec3::Zero();
+          stored_f_volume_shear[ss[i].orbit12_s02] = rift::Vec3::Zero();
+          stored_f_volume_shear[ss[i].orbit12_b6] = rift::Vec3::Zero();
+          stored_f_volume_shear[ss[i].orbit12_s12] = rift::Vec3::Zero();
+        }
+        continue;
       }
-      continue;
+      const rift::Slot to_vertex_b0 = m.vertex_b0;
+      const rift::Slot to_vertex_s22 = m.vertex_s22;
+      const rift::Slot to_vertex_b2 = m.vertex_b2;
+      const rift::Slot to_vertex_s32 = m.vertex_s32;
+      const rift::Slot to_vertex_b4 = m.vertex_b4;
+      const rift::Slot to_vertex_s02 = m.vertex_s02;
+      const rift::Slot to_vertex_b6 = m.vertex_b6;
+      const rift::Slot to_vertex_s12 = m.vertex_s12;
+      f[to_vertex_b0] += r.f_volume_shear_b0;
+      if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_b0] = r.f_volume_shear_b0;
+      f[to_vertex_s22] -= r.f_volume_shear_b0;
+      if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s22] = r.f_volume_shear_s22;
+      f[to_vertex_b2] += r.f_volume_shear_b2;
+      if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_b2] = r.f_volume_shear_b2;
+      f[to_vertex_s32] -= r.f_volume_shear_b2;
+      if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s32] = r.f_volume_shear_s32;
+      f[to_vertex_b4] += r.f_volume_shear_b4;
+      if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_b4] = r.f_volume_shear_b4;
+      f[to_vertex_s02] -= r.f_volume_shear_b4;
+      if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s02] = r.f_volume_shear_s02;
+      f[to_vertex_b6] += r.f_volume_shear_b6;
+      if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_b6] = r.f_volume_shear_b6;
+      f[to_vertex_s12] -= r.f_volume_shear_b6;
+      if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s12] = r.f_volume_shear_s12;
     }
-    const rift::Slot to_vertex_b0 = m.vertex_b0;
-    const rift::Slot to_vertex_s22 = m.vertex_s22;
-    const rift::Slot to_vertex_b2 = m.vertex_b2;
-    const rift::Slot to_vertex_s32 = m.vertex_s32;
-    const rift::Slot to_vertex_b4 = m.vertex_b4;
-    const rift::Slot to_vertex_s02 = m.vertex_s02;
-    const rift::Slot to_vertex_b6 = m.vertex_b6;
-    const rift::Slot to_vertex_s12 = m.vertex_s12;
-    f[to_vertex_b0] += r.f_volume_shear_b0;
-    if (store) stored_f_volume_shear[ss[i].orbit12_b0] = r.f_volume_shear_b0;
-    f[to_vertex_s22] -= r.f_volume_shear_b0;
-    if (store) stored_f_volume_shear[ss[i].orbit12_s22] = r.f_volume_shear_s22;
-    f[to_vertex_b2] += r.f_volume_shear_b2;
-    if (store) stored_f_volume_shear[ss[i].orbit12_b2] = r.f_volume_shear_b2;
-    f[to_vertex_s32] -= r.f_volume_shear_b2;
-    if (store) stored_f_volume_shear[ss[i].orbit12_s32] = r.f_volume_shear_s32;
-    f[to_vertex_b4] += r.f_volume_shear_b4;
-    if (store) stored_f_volume_shear[ss[i].orbit12_b4] = r.f_volume_shear_b4;
-    f[to_vertex_s02] -= r.f_volume_shear_b4;
-    if (store) stored_f_volume_shear[ss[i].orbit12_s02] = r.f_volume_shear_s02;
-    f[to_vertex_b6] += r.f_volume_shear_b6;
-    if (store) stored_f_volume_shear[ss[i].orbit12_b6] = r.f_volume_shear_b6;
-    f[to_vertex_s12] -= r.f_volume_shear_b6;
-    if (store) stored_f_volume_shear[ss[i].orbit12_s12] = r.f_volume_shear_s12;
+  };
+  if (store) {
+    pass.template operator()<true>();
+  } else {
+    pass.template operator()<false>();
   }
 }
 
@@ -2318,46 +2365,53 @@ void VolumeShearKernel::add_forces_at(std::span<const Match> ms, const std::uint
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   rift::Vec3* const stored_f_volume_shear = store ? e_f_volume_shear.values().data() : nullptr;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Match& m = ms[at[i]];
-    Result r;
-    if (!evaluate<true>(m, in, c, r)) {
-      if (store) {
-        stored_f_volume_shear[ss[at[i]].orbit12_b0] = rift::Vec3::Zero();
-        stored_f_volume_shear[ss[at[i]].orbit12_s22] = rift::Vec3::Zero();
-        stored_f_volume_shear[ss[at[i]].orbit12_b2] = rift::Vec3::Zero();
-        stored_f_volume_shear[ss[at[i]].orbit12_s32] = rift::Vec3::Zero();
-        stored_f_volume_shear[ss[at[i]].orbit12_b4] = rift::Vec3::Zero();
-        stored_f_volume_shear[ss[at[i]].orbit12_s02] = rift::Vec3::Zero();
-        stored_f_volume_shear[ss[at[i]].orbit12_b6] = rift::Vec3::Zero();
-        stored_f_volume_shear[ss[at[i]].orbit12_s12] = rift::Vec3::Zero();
+  auto pass = [&]<bool kStore>() {
+    for (std::size_t i = 0; i < n; ++i) {
+      const Match& m = ms[at[i]];
+      Result r;
+      if (!evaluate<true>(m, in, c, r)) {
+        if constexpr (kStore) {
+          stored_f_volume_shear[ss[at[i]].orbit12_b0] = rift::Vec3::Zero();
+          stored_f_volume_shear[ss[at[i]].orbit12_s22] = rift::Vec3::Zero();
+          stored_f_volume_shear[ss[at[i]].orbit12_b2] = rift::Vec3::Zero();
+          stored_f_volume_shear[ss[at[i]].orbit12_s32] = rift::Vec3::Zero();
+          stored_f_volume_shear[ss[at[i]].orbit12_b4] = rift::Vec3::Zero();
+          stored_f_volume_shear[ss[at[i]].orbit12_s02] = rift::Vec3::Zero();
+          stored_f_volume_shear[ss[at[i]].orbit12_b6] = rift::Vec3::Zero();
+          stored_f_volume_shear[ss[at[i]].orbit12_s12] = rift::Vec3::Zero();
+        }
+        continue;
       }
-      continue;
+      const rift::Slot to_vertex_b0 = m.vertex_b0;
+      const rift::Slot to_vertex_s22 = m.vertex_s22;
+      const rift::Slot to_vertex_b2 = m.vertex_b2;
+      const rift::Slot to_vertex_s32 = m.vertex_s32;
+      const rift::Slot to_vertex_b4 = m.vertex_b4;
+      const rift::Slot to_vertex_s02 = m.vertex_s02;
+      const rift::Slot to_vertex_b6 = m.vertex_b6;
+      const rift::Slot to_vertex_s12 = m.vertex_s12;
+      f[to_vertex_b0] += r.f_volume_shear_b0;
+      if constexpr (kStore) stored_f_volume_shear[ss[at[i]].orbit12_b0] = r.f_volume_shear_b0;
+      f[to_vertex_s22] -= r.f_volume_shear_b0;
+      if constexpr (kStore) stored_f_volume_shear[ss[at[i]].orbit12_s22] = r.f_volume_shear_s22;
+      f[to_vertex_b2] += r.f_volume_shear_b2;
+      if constexpr (kStore) stored_f_volume_shear[ss[at[i]].orbit12_b2] = r.f_volume_shear_b2;
+      f[to_vertex_s32] -= r.f_volume_shear_b2;
+      if constexpr (kStore) stored_f_volume_shear[ss[at[i]].orbit12_s32] = r.f_volume_shear_s32;
+      f[to_vertex_b4] += r.f_volume_shear_b4;
+      if constexpr (kStore) stored_f_volume_shear[ss[at[i]].orbit12_b4] = r.f_volume_shear_b4;
+      f[to_vertex_s02] -= r.f_volume_shear_b4;
+      if constexpr (kStore) stored_f_volume_shear[ss[at[i]].orbit12_s02] = r.f_volume_shear_s02;
+      f[to_vertex_b6] += r.f_volume_shear_b6;
+      if constexpr (kStore) stored_f_volume_shear[ss[at[i]].orbit12_b6] = r.f_volume_shear_b6;
+      f[to_vertex_s12] -= r.f_volume_shear_b6;
+      if constexpr (kStore) stored_f_volume_shear[ss[at[i]].orbit12_s12] = r.f_volume_shear_s12;
     }
-    const rift::Slot to_vertex_b0 = m.vertex_b0;
-    const rift::Slot to_vertex_s22 = m.vertex_s22;
-    const rift::Slot to_vertex_b2 = m.vertex_b2;
-    const rift::Slot to_vertex_s32 = m.vertex_s32;
-    const rift::Slot to_vertex_b4 = m.vertex_b4;
-    const rift::Slot to_vertex_s02 = m.vertex_s02;
-    const rift::Slot to_vertex_b6 = m.vertex_b6;
-    const rift::Slot to_vertex_s12 = m.vertex_s12;
-    f[to_vertex_b0] += r.f_volume_shear_b0;
-    if (store) stored_f_volume_shear[ss[at[i]].orbit12_b0] = r.f_volume_shear_b0;
-    f[to_vertex_s22] -= r.f_volume_shear_b0;
-    if (store) stored_f_volume_shear[ss[at[i]].orbit12_s22] = r.f_volume_shear_s22;
-    f[to_vertex_b2] += r.f_volume_shear_b2;
-    if (store) stored_f_volume_shear[ss[at[i]].orbit12_b2] = r.f_volume_shear_b2;
-    f[to_vertex_s32] -= r.f_volume_shear_b2;
-    if (store) stored_f_volume_shear[ss[at[i]].orbit12_s32] = r.f_volume_shear_s32;
-    f[to_vertex_b4] += r.f_volume_shear_b4;
-    if (store) stored_f_volume_shear[ss[at[i]].orbit12_b4] = r.f_volume_shear_b4;
-    f[to_vertex_s02] -= r.f_volume_shear_b4;
-    if (store) stored_f_volume_shear[ss[at[i]].orbit12_s02] = r.f_volume_shear_s02;
-    f[to_vertex_b6] += r.f_volume_shear_b6;
-    if (store) stored_f_volume_shear[ss[at[i]].orbit12_b6] = r.f_volume_shear_b6;
-    f[to_vertex_s12] -= r.f_volume_shear_b6;
-    if (store) stored_f_volume_shear[ss[at[i]].orbit12_s12] = r.f_volume_shear_s12;
+  };
+  if (store) {
+    pass.template operator()<true>();
+  } else {
+    pass.template operator()<false>();
   }
 }
 
@@ -2435,93 +2489,99 @@ void VolumeShearKernel::store_terms_of(std::span<const Match> ms, const Stored* 
   }
 }
 
-void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
+void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const rift::Real* counts, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
-  for (std::size_t i = 0; i < reps.size(); ++i) {
-    const Match& m = reps[i];
-    Result r;
-    if (!evaluate<true>(m, in, c, r)) {
-      if (terms) for (int t = 0; t < 8; ++t) terms[i * 8 + t].setZero();
-      continue;
+  const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {
+    for (std::size_t i = 0; i < reps.size(); ++i) {
+      const Match& m = reps[i];
+      Result r;
+      if (!evaluate<true>(m, in, c, r)) {
+        if constexpr (kTerms) for (int t = 0; t < 8; ++t) terms[i * 8 + t].setZero();
+        continue;
+      }
+      const rift::Real count = counts[i];
+      const rift::Slot to_vertex_b0 = m.vertex_b0;
+      const rift::Slot to_vertex_s22 = m.vertex_s22;
+      const rift::Slot to_vertex_b2 = m.vertex_b2;
+      const rift::Slot to_vertex_s32 = m.vertex_s32;
+      const rift::Slot to_vertex_b4 = m.vertex_b4;
+      const rift::Slot to_vertex_s02 = m.vertex_s02;
+      const rift::Slot to_vertex_b6 = m.vertex_b6;
+      const rift::Slot to_vertex_s12 = m.vertex_s12;
+      const rift::Vec3 cf0 = count * r.f_volume_shear_b0;
+      f[to_vertex_b0] += cf0;
+      f[to_vertex_s22] -= cf0;
+      const rift::Vec3 cf2 = count * r.f_volume_shear_b2;
+      f[to_vertex_b2] += cf2;
+      f[to_vertex_s32] -= cf2;
+      const rift::Vec3 cf4 = count * r.f_volume_shear_b4;
+      f[to_vertex_b4] += cf4;
+      f[to_vertex_s02] -= cf4;
+      const rift::Vec3 cf6 = count * r.f_volume_shear_b6;
+      f[to_vertex_b6] += cf6;
+      f[to_vertex_s12] -= cf6;
+      if constexpr (kTerms) {
+        terms[i * 8 + 0] = r.f_volume_shear_b0;
+        terms[i * 8 + 1] = r.f_volume_shear_s22;
+        terms[i * 8 + 2] = r.f_volume_shear_b2;
+        terms[i * 8 + 3] = r.f_volume_shear_s32;
+        terms[i * 8 + 4] = r.f_volume_shear_b4;
+        terms[i * 8 + 5] = r.f_volume_shear_s02;
+        terms[i * 8 + 6] = r.f_volume_shear_b6;
+        terms[i * 8 + 7] = r.f_volume_shear_s12;
+      }
     }
-    const rift::Real count = counts[i];
-    const rift::Slot to_vertex_b0 = m.vertex_b0;
-    const rift::Slot to_vertex_s22 = m.vertex_s22;
-    const rift::Slot to_vertex_b2 = m.vertex_b2;
-    const rift::Slot to_vertex_s32 = m.vertex_s32;
-    const rift::Slot to_vertex_b4 = m.vertex_b4;
-    const rift::Slot to_vertex_s02 = m.vertex_s02;
-    const rift::Slot to_vertex_b6 = m.vertex_b6;
-    const rift::Slot to_vertex_s12 = m.vertex_s12;
-    const rift::Vec3 cf0 = count * r.f_volume_shear_b0;
-    f[to_vertex_b0] += cf0;
-    f[to_vertex_s22] -= cf0;
-    const rift::Vec3 cf2 = count * r.f_volume_shear_b2;
-    f[to_vertex_b2] += cf2;
-    f[to_vertex_s32] -= cf2;
-    const rift::Vec3 cf4 = count * r.f_volume_shear_b4;
-    f[to_vertex_b4] += cf4;
-    f[to_vertex_s02] -= cf4;
-    const rift::Vec3 cf6 = count * r.f_volume_shear_b6;
-    f[to_vertex_b6] += cf6;
-    f[to_vertex_s12] -= cf6;
-    if (terms) {
-      terms[i * 8 + 0] = r.f_volume_shear_b0;
-      terms[i * 8 + 1] = r.f_volume_shear_s22;
-      terms[i * 8 + 2] = r.f_volume_shear_b2;
-      terms[i * 8 + 3] = r.f_volume_shear_s32;
-      terms[i * 8 + 4] = r.f_volume_shear_b4;
-      terms[i * 8 + 5] = r.f_volume_shear_s02;
-      terms[i * 8 + 6] = r.f_volume_shear_b6;
-      terms[i * 8 + 7] = r.f_volume_shear_s12;
-    }
-  }
+  };
+  if (terms) loop(std::true_type{}); else loop(std::false_type{});
 }
 
-void VolumeShearKernel::add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
+void VolumeShearKernel::add_forces_grouped_at(std::span<const Match> reps, const rift::Real* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t e = at[i];
-    const Match& m = reps[e];
-    Result r;
-    if (!evaluate<true>(m, in, c, r)) {
-      if (terms) for (int t = 0; t < 8; ++t) terms[i * 8 + t].setZero();
-      continue;
+  const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint32_t e = at[i];
+      const Match& m = reps[e];
+      Result r;
+      if (!evaluate<true>(m, in, c, r)) {
+        if constexpr (kTerms) for (int t = 0; t < 8; ++t) terms[i * 8 + t].setZero();
+        continue;
+      }
+      const rift::Real count = counts[e];
+      const rift::Slot to_vertex_b0 = m.vertex_b0;
+      const rift::Slot to_vertex_s22 = m.vertex_s22;
+      const rift::Slot to_vertex_b2 = m.vertex_b2;
+      const rift::Slot to_vertex_s32 = m.vertex_s32;
+      const rift::Slot to_vertex_b4 = m.vertex_b4;
+      const rift::Slot to_vertex_s02 = m.vertex_s02;
+      const rift::Slot to_vertex_b6 = m.vertex_b6;
+      const rift::Slot to_vertex_s12 = m.vertex_s12;
+      const rift::Vec3 cf0 = count * r.f_volume_shear_b0;
+      f[to_vertex_b0] += cf0;
+      f[to_vertex_s22] -= cf0;
+      const rift::Vec3 cf2 = count * r.f_volume_shear_b2;
+      f[to_vertex_b2] += cf2;
+      f[to_vertex_s32] -= cf2;
+      const rift::Vec3 cf4 = count * r.f_volume_shear_b4;
+      f[to_vertex_b4] += cf4;
+      f[to_vertex_s02] -= cf4;
+      const rift::Vec3 cf6 = count * r.f_volume_shear_b6;
+      f[to_vertex_b6] += cf6;
+      f[to_vertex_s12] -= cf6;
+      if constexpr (kTerms) {
+        terms[i * 8 + 0] = r.f_volume_shear_b0;
+        terms[i * 8 + 1] = r.f_volume_shear_s22;
+        terms[i * 8 + 2] = r.f_volume_shear_b2;
+        terms[i * 8 + 3] = r.f_volume_shear_s32;
+        terms[i * 8 + 4] = r.f_volume_shear_b4;
+        terms[i * 8 + 5] = r.f_volume_shear_s02;
+        terms[i * 8 + 6] = r.f_volume_shear_b6;
+        terms[i * 8 + 7] = r.f_volume_shear_s12;
+      }
     }
-    const rift::Real count = counts[e];
-    const rift::Slot to_vertex_b0 = m.vertex_b0;
-    const rift::Slot to_vertex_s22 = m.vertex_s22;
-    const rift::Slot to_vertex_b2 = m.vertex_b2;
-    const rift::Slot to_vertex_s32 = m.vertex_s32;
-    const rift::Slot to_vertex_b4 = m.vertex_b4;
-    const rift::Slot to_vertex_s02 = m.vertex_s02;
-    const rift::Slot to_vertex_b6 = m.vertex_b6;
-    const rift::Slot to_vertex_s12 = m.vertex_s12;
-    const rift::Vec3 cf0 = count * r.f_volume_shear_b0;
-    f[to_vertex_b0] += cf0;
-    f[to_vertex_s22] -= cf0;
-    const rift::Vec3 cf2 = count * r.f_volume_shear_b2;
-    f[to_vertex_b2] += cf2;
-    f[to_vertex_s32] -= cf2;
-    const rift::Vec3 cf4 = count * r.f_volume_shear_b4;
-    f[to_vertex_b4] += cf4;
-    f[to_vertex_s02] -= cf4;
-    const rift::Vec3 cf6 = count * r.f_volume_shear_b6;
-    f[to_vertex_b6] += cf6;
-    f[to_vertex_s12] -= cf6;
-    if (terms) {
-      terms[i * 8 + 0] = r.f_volume_shear_b0;
-      terms[i * 8 + 1] = r.f_volume_shear_s22;
-      terms[i * 8 + 2] = r.f_volume_shear_b2;
-      terms[i * 8 + 3] = r.f_volume_shear_s32;
-      terms[i * 8 + 4] = r.f_volume_shear_b4;
-      terms[i * 8 + 5] = r.f_volume_shear_s02;
-      terms[i * 8 + 6] = r.f_volume_shear_b6;
-      terms[i * 8 + 7] = r.f_volume_shear_s12;
-    }
-  }
+  };
+  if (terms) loop(std::true_type{}); else loop(std::false_type{});
 }
 
 void VolumeShearKernel::reset_stored([[maybe_unused]] const Match& m, [[maybe_unused]] const Stored& s) {

@@ -100,9 +100,9 @@ class StretchKernel {
   void store_terms_of(std::span<const Match> ms, const Stored* ss, const std::uint32_t* entries, const std::uint32_t* term_of, std::size_t n, const rift::Vec3* terms);
   /// The force pass over groups: adds counts[i] times the forces of reps[i];
   /// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.
-  void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
+  void add_forces_grouped(std::span<const Match> reps, const rift::Real* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
   /// The same over reps[at[i]] (counts parallel to reps) for i < n.
-  void add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
+  void add_forces_grouped_at(std::span<const Match> reps, const rift::Real* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
   void reset_stored(const Match& m, const Stored& s);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).
@@ -215,9 +215,9 @@ class ShearKernel {
   void store_terms_of(std::span<const Match> ms, const Stored* ss, const std::uint32_t* entries, const std::uint32_t* term_of, std::size_t n, const rift::Vec3* terms);
   /// The force pass over groups: adds counts[i] times the forces of reps[i];
   /// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.
-  void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
+  void add_forces_grouped(std::span<const Match> reps, const rift::Real* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
   /// The same over reps[at[i]] (counts parallel to reps) for i < n.
-  void add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
+  void add_forces_grouped_at(std::span<const Match> reps, const rift::Real* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
   void reset_stored(const Match& m, const Stored& s);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).
@@ -344,9 +344,9 @@ class VolumeShearKernel {
   void store_terms_of(std::span<const Match> ms, const Stored* ss, const std::uint32_t* entries, const std::uint32_t* term_of, std::size_t n, const rift::Vec3* terms);
   /// The force pass over groups: adds counts[i] times the forces of reps[i];
   /// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.
-  void add_forces_grouped(std::span<const Match> reps, const std::uint32_t* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
+  void add_forces_grouped(std::span<const Match> reps, const rift::Real* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
   /// The same over reps[at[i]] (counts parallel to reps) for i < n.
-  void add_forces_grouped_at(std::span<const Match> reps, const std::uint32_t* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
+  void add_forces_grouped_at(std::span<const Match> reps, const rift::Real* counts, const std::uint32_t* at, std::size_t n, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
   void reset_stored(const Match& m, const Stored& s);
   rift::Real energy(const Match& m, const rift::ForceInput& in) const;
   /// The rule gives an energy (the implicit Newton line search can use it).
