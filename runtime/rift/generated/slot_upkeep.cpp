@@ -47,6 +47,42 @@ class ClaimedSlots {
   std::size_t mask_ = 0;
 };
 
+// update_embedding_slots for a per-dart attachment (<>): each dart is its
+// own orbit, so the general case's orbit walk, lists and merges reduce to
+// "keep the dart's slot unless another dart of the rewrite kept it first".
+// The same slots and copies as the general case, without its walk per dart:
+// per-dart attachments (stored forces) were most of a spring split's upkeep.
+void update_dart_slots(GMap& g, OrbitAttachment& att, const Dart* darts, std::size_t count,
+                       Scratch& s, std::vector<Dart>* touched) {
+  const Mark m = g.reserve_mark();  // a dart listed twice is upkept once
+  ClaimedSlots claimed(s.claimed, count);
+  s.marked.clear();
+  for (std::size_t k = 0; k < count; ++k) {
+    const Dart x = darts[k];
+    if (g.is_marked(x, m)) continue;
+    g.mark(x, m);
+    s.marked.push_back(x);
+    const Slot slot = att.slot(x);
+    Slot keep = slot;
+    if (slot == kNoSlot) {
+      keep = att.allocate_slot();
+    } else if (claimed.contains(slot)) {
+      // Shared with a dart met before: split off, this dart takes a copy.
+      keep = att.allocate_slot();
+      for (const auto& column : att.columns())
+        column->copy_slot(slot, keep);
+    }
+    claimed.insert(keep);
+    if (keep != slot) {
+      att.assign(x, keep);
+      if (touched) touched->push_back(x);
+    }
+  }
+  for (Dart x : s.marked)
+    g.unmark(x, m);
+  g.free_mark(m);
+}
+
 }  // namespace
 
 void update_embedding_slots(GMap& g, const Dart* darts, std::size_t count, Scratch& s,
@@ -65,6 +101,10 @@ void update_embedding_slots(GMap& g, const Dart* darts, std::size_t count, Scrat
   for (const auto& attachment : g.attachments()) {
     OrbitAttachment& att = *attachment;
     if (att.dormant()) continue;  // no slots until a column is asked for
+    if (att.orbit().empty()) {
+      update_dart_slots(g, att, darts, count, s, touched);
+      continue;
+    }
     const Mark m = g.reserve_mark();
     ClaimedSlots claimed(s.claimed, count);
     s.marked.clear();

@@ -18,6 +18,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "rift/core/flat_list.hpp"
 #include "rift/core/huge_pages.hpp"
 #include "rift/core/prefetch.hpp"
 #include "rift/gmap/gmap.hpp"
@@ -300,8 +301,8 @@ class MatchCache {
   bool keeps_owners_ = true;  ///< false: never re-matched, owners_ stays empty
   /// Darts rematch's lists have room for from the first re-match on.
   static constexpr std::size_t kTearDarts = 2048;
-  std::vector<Dart> frontier_;
-  std::vector<Dart> seen_;  ///< rematch's darts of the support orbits it walked
+  FlatList<Dart> frontier_;
+  FlatList<Dart> seen_;  ///< rematch's darts of the support orbits it walked
 };
 
 }  // namespace rift
