@@ -1203,7 +1203,9 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
   });
   if (!reach.empty() && words_fit) {
     // A re-match walks them back from each touched dart (rift/sim/reach.hpp).
-    w.line("/// Links from the support dart to each dart a match reads (rift/sim/reach.hpp).");
+    w.line(
+        "/// Links from the support dart to each dart a match reads, less the first links "
+        "inside the support orbit (rift/sim/reach.hpp).");
     std::string words;
     for (const std::vector<int>& word : reach) {
       std::string links;

@@ -57,11 +57,22 @@ class SlotCollector {
 // each node's (the pattern reaches each node from an earlier one by one
 // link, so a node's word extends an earlier node's), then each slot read
 // through hops (its node's word, then the hops). Each word once.
-std::vector<std::vector<int>> reach_words(const KernelPlan& plan) {
+//
+// A word's first links that stay in the support orbit (links of its
+// dimensions) are left out: walked back from a touched dart, the rest of
+// the word ends in the support orbit of the match, which the re-match walks
+// whole anyway. The quad's shear spring (support <0,1>, links 0 and 1 only)
+// keeps the empty word alone, where its eight words walked 16 links from
+// each touched dart, and the bend spring (support <2>) three of its six.
+std::vector<std::vector<int>> reach_words(const KernelPlan& plan, const std::vector<int>& support) {
   if (plan.match.hooks.size() != 1) return {};
   std::vector<std::vector<int>> word(plan.nodes.size());
   std::vector<std::vector<int>> out = {{}};
   auto add = [&](std::vector<int> w) {
+    const auto outside = std::find_if(w.begin(), w.end(), [&](int link) {
+      return std::find(support.begin(), support.end(), link) == support.end();
+    });
+    w.erase(w.begin(), outside);
     if (std::find(out.begin(), out.end(), w) == out.end()) out.push_back(std::move(w));
   };
   for (const Follow& f : plan.match.follows) {
@@ -142,7 +153,7 @@ KernelPlan plan_kernel(const check::CheckedInteraction& ci, const resolve::Symbo
     collect.reads(*j.value);
     collect.add(g.left.find(j.by_node.text), {}, vertex_orbit(g.dimension), "");
   }
-  plan.reach = reach_words(plan);
+  plan.reach = reach_words(plan, inter.support.dims);
   return plan;
 }
 

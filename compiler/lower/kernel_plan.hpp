@@ -39,8 +39,8 @@ struct KernelPlan {
   int radius = 0;                  // kRadius: the farthest dart any read or check touches
   /// kReach (runtime/rift/sim/reach.hpp): the links from the support dart to
   /// each dart a match reads (its nodes, and the darts read through hops),
-  /// each word once, in the order they are met. Empty when the pattern has
-  /// more than one hook.
+  /// without the first links that stay in the support orbit, each word once,
+  /// in the order they are met. Empty when the pattern has more than one hook.
   std::vector<std::vector<int>> reach;
 
   /// Index of the slot of node@hops on `orbit`, or -1.

@@ -143,5 +143,34 @@ TEST(Rematch, EveryBlockInteractionHoldsTheMatchesOfTheWholeTornMap) {
                  {"global_face", "spring_split", "vertex_sum"}, 2, 16);
 }
 
+/// The kernel's words as text, "" for the empty word: "{}, {1}, {1,0}".
+template <class Kernel>
+std::string words_of() {
+  std::string out;
+  for (const ReachWord& w : Kernel::kReach) {
+    std::string links;
+    for (int k = 0; k < w.length; ++k)
+      links += (k ? "," : "") + std::to_string(w.links[static_cast<std::size_t>(k)]);
+    out += (out.empty() ? "{" : ", {") + links + "}";
+  }
+  return out;
+}
+
+// riftc leaves out each word's first links that stay in the support orbit
+// (the re-match walks the support orbit whole): a pattern inside its support
+// orbit keeps the empty word alone, and the others only the links that leave
+// it. The completeness tests above pass with longer words too; this one
+// fails when the words are not reduced.
+TEST(Rematch, WordsLeaveOutTheLinksInsideTheSupportOrbit) {
+  // Support <0,1> (a face), links 0 and 1 only: eight words before.
+  EXPECT_EQ(words_of<packs::mass_spring2d::ShearKernel>(), "{}");
+  // Support <0> (an edge): {} and {0} before.
+  EXPECT_EQ(words_of<packs::mass_spring2d::StretchKernel>(), "{}");
+  // Support <2>: {2}, {2,1} and {2,1,0} lose their first link.
+  EXPECT_EQ(words_of<packs::mass_spring2d::BendKernel>(), "{}, {1}, {1,0}");
+  // A hexahedron's volume shear (support <0,1,2>): 49 words before.
+  EXPECT_EQ(words_of<packs::mass_spring3d::VolumeShearKernel>(), "{}");
+}
+
 }  // namespace
 }  // namespace rift::tearing_test

@@ -13,6 +13,12 @@
 // are the paths to other darts it reads (the pattern reaches each node from
 // an earlier one), so the words of those darts suffice.
 //
+// The re-match walks each support orbit it reaches whole, so a word's first
+// links that stay in the support orbit (links of its dimensions) need not be
+// walked: riftc leaves them out, and a pattern inside its support orbit
+// keeps the empty word alone (the quad's shear spring: 8 words, 16 links
+// from each touched dart, before).
+//
 // riftc emits each generated kernel's words (kReach). A kernel without them
 // is re-matched over every dart within kRadius links of the touched ones:
 // the same matches, from a neighbourhood that grows as (dimension + 1) to the

@@ -60,8 +60,8 @@ class CorotationalKernel {
   static constexpr rift::Orbit kSupport = rift::Orbit{0, 1, 2};
   /// Links from the support dart to the farthest dart a match reads.
   static constexpr int kRadius = 6;
-  /// Links from the support dart to each dart a match reads (rift/sim/reach.hpp).
-  static constexpr rift::ReachWord kReach[] = {{0, {}}, {1, {0}}, {1, {1}}, {1, {2}}, {2, {0, 1}}, {2, {0, 2}}, {2, {1, 0}}, {2, {1, 2}}, {2, {2, 1}}, {3, {0, 1, 0}}, {3, {0, 2, 1}}, {3, {1, 2, 0}}, {3, {1, 2, 1}}, {3, {2, 1, 0}}, {4, {0, 2, 1, 0}}, {4, {1, 2, 0, 1}}, {4, {1, 2, 1, 0}}, {5, {1, 2, 0, 1, 0}}};
+  /// Links from the support dart to each dart a match reads, less the first links inside the support orbit (rift/sim/reach.hpp).
+  static constexpr rift::ReachWord kReach[] = {{0, {}}};
   static constexpr bool kTagged = true;
 
   explicit CorotationalKernel(const CorotationalParams& p = {}, const Params& pack = {})

@@ -55,8 +55,8 @@ class StretchKernel {
   static constexpr rift::Orbit kSupport = rift::Orbit{0};
   /// Links from the support dart to the farthest dart a match reads.
   static constexpr int kRadius = 1;
-  /// Links from the support dart to each dart a match reads (rift/sim/reach.hpp).
-  static constexpr rift::ReachWord kReach[] = {{0, {}}, {1, {0}}};
+  /// Links from the support dart to each dart a match reads, less the first links inside the support orbit (rift/sim/reach.hpp).
+  static constexpr rift::ReachWord kReach[] = {{0, {}}};
   static constexpr bool kTagged = false;
 
   explicit StretchKernel(const StretchParams& p = {}, const Params& pack = {})
@@ -170,8 +170,8 @@ class ShearKernel {
   static constexpr rift::Orbit kSupport = rift::Orbit{0, 1};
   /// Links from the support dart to the farthest dart a match reads.
   static constexpr int kRadius = 5;
-  /// Links from the support dart to each dart a match reads (rift/sim/reach.hpp).
-  static constexpr rift::ReachWord kReach[] = {{0, {}}, {1, {0}}, {1, {1}}, {2, {0, 1}}, {2, {1, 0}}, {3, {0, 1, 0}}, {3, {1, 0, 1}}, {4, {0, 1, 0, 1}}};
+  /// Links from the support dart to each dart a match reads, less the first links inside the support orbit (rift/sim/reach.hpp).
+  static constexpr rift::ReachWord kReach[] = {{0, {}}};
   static constexpr bool kTagged = true;
 
   explicit ShearKernel(const ShearParams& p = {}, const Params& pack = {})
@@ -299,8 +299,8 @@ class VolumeShearKernel {
   static constexpr rift::Orbit kSupport = rift::Orbit{0, 1, 2};
   /// Links from the support dart to the farthest dart a match reads.
   static constexpr int kRadius = 10;
-  /// Links from the support dart to each dart a match reads (rift/sim/reach.hpp).
-  static constexpr rift::ReachWord kReach[] = {{0, {}}, {1, {0}}, {1, {1}}, {1, {2}}, {2, {0, 1}}, {2, {0, 2}}, {2, {1, 0}}, {2, {1, 2}}, {2, {2, 1}}, {3, {0, 1, 0}}, {3, {0, 1, 2}}, {3, {0, 2, 1}}, {3, {1, 0, 1}}, {3, {1, 0, 2}}, {3, {1, 2, 1}}, {3, {2, 1, 0}}, {4, {0, 1, 0, 1}}, {4, {0, 1, 0, 2}}, {4, {0, 1, 2, 1}}, {4, {0, 2, 1, 0}}, {4, {1, 0, 1, 2}}, {4, {1, 0, 2, 1}}, {4, {1, 2, 1, 0}}, {4, {2, 1, 0, 1}}, {5, {0, 1, 0, 1, 2}}, {5, {0, 1, 0, 2, 1}}, {5, {0, 1, 2, 1, 0}}, {5, {0, 2, 1, 0, 1}}, {5, {1, 0, 1, 2, 1}}, {5, {1, 0, 2, 1, 0}}, {5, {1, 2, 1, 0, 1}}, {5, {2, 1, 0, 1, 2}}, {6, {0, 1, 0, 1, 2, 1}}, {6, {0, 1, 0, 2, 1, 0}}, {6, {0, 1, 2, 1, 0, 1}}, {6, {0, 2, 1, 0, 1, 2}}, {6, {1, 0, 1, 2, 1, 0}}, {6, {1, 0, 2, 1, 0, 1}}, {6, {1, 2, 1, 0, 1, 2}}, {7, {0, 1, 0, 1, 2, 1, 0}}, {7, {0, 1, 0, 2, 1, 0, 1}}, {7, {0, 1, 2, 1, 0, 1, 2}}, {7, {1, 0, 1, 2, 1, 0, 1}}, {7, {1, 0, 2, 1, 0, 1, 2}}, {8, {0, 1, 0, 1, 2, 1, 0, 1}}, {8, {0, 1, 0, 2, 1, 0, 1, 2}}, {8, {1, 0, 1, 2, 1, 0, 1, 2}}, {9, {0, 1, 0, 1, 2, 1, 0, 1, 2}}};
+  /// Links from the support dart to each dart a match reads, less the first links inside the support orbit (rift/sim/reach.hpp).
+  static constexpr rift::ReachWord kReach[] = {{0, {}}};
   static constexpr bool kTagged = true;
 
   explicit VolumeShearKernel(const VolumeShearParams& p = {}, const Params& pack = {})
