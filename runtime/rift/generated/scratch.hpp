@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "rift/core/flat_list.hpp"
 #include "rift/core/types.hpp"
 
 namespace rift::generated {
@@ -22,9 +23,11 @@ struct Scratch {
   std::vector<std::uint32_t> parent;  // parent[r] = p * label + k: r was reached from p by link k
   std::vector<Dart> left;             // left node v's dart of row r at left[v * row_count + r]
   std::vector<Dart> right;            // the same for right nodes
-  std::vector<Dart> orbit;
-  std::vector<Dart> marked;
-  std::vector<Slot> slots;
+  // update_embedding_slots' lists: FlatLists, whose appends are inlined
+  // (a call per append of std::vector's was a third of the slot upkeep).
+  FlatList<Dart> orbit;
+  FlatList<Dart> marked;
+  FlatList<Slot> slots;
   std::vector<Slot> claimed;  // update_embedding_slots' table of the slots kept
   // DartList's buffers: the first dart_lists_open are held by open lists.
   std::vector<std::unique_ptr<std::vector<Dart>>> dart_lists;

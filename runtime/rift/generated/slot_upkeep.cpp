@@ -134,7 +134,7 @@ void update_embedding_slots(GMap& g, const Dart* darts, std::size_t count, Scrat
       } else if (keep == kNoSlot) {
         keep = att.allocate_slot();
         for (const auto& column : att.columns())
-          column->copy_slot(s.slots.front(), keep);
+          column->copy_slot(s.slots[0], keep);
       } else {
         for (Slot other : s.slots) {
           if (other == keep || claimed.contains(other)) continue;
