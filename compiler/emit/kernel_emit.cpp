@@ -649,7 +649,7 @@ void write_add_forces_all(Writer& w, const Kernel& k, bool indexed) {
   // One loop per kind of pass (storing or not), each with its own
   // instantiation of the body: the integrator's other stages run a loop
   // without stores, and without a test of `store` at each stored force
-  // (four of a shear spring's 70 instructions).
+  // (3 % of the shear spring's loop).
   const bool two_passes = stores_values || !stores.empty();
   const std::string if_store = two_passes ? "if constexpr (kStore) " : "if (store) ";
   // With stored values not inlined: two instantiations of the body in one

@@ -50,8 +50,9 @@ class ClaimedSlots {
 // update_embedding_slots for a per-dart attachment (<>): each dart is its
 // own orbit, so the general case's orbit walk, lists and merges reduce to
 // "keep the dart's slot unless another dart of the rewrite kept it first".
-// The same slots and copies as the general case, without its walk per dart:
-// per-dart attachments (stored forces) were most of a spring split's upkeep.
+// The same slots and copies as the general case, without its orbit walk,
+// lists and search of the orbit's slots per dart (6 % of the upkeep of a
+// spring split, whose stored forces are per dart).
 void update_dart_slots(GMap& g, OrbitAttachment& att, const Dart* darts, std::size_t count,
                        Scratch& s, std::vector<Dart>* touched) {
   const Mark m = g.reserve_mark();  // a dart listed twice is upkept once
