@@ -207,7 +207,15 @@ void emit_rule(Writer& w, const lower::RulePlan& plan, const PackModel& model) {
     link(right_name(l.node) + "[r]",
          right_name(l.node) + "[s.nbr[r * label + " + std::to_string(l.pos) + "]]", l.dim);
   }
-  if (nr > 0) w.line("update_embedding_slots(g, s.right.data(), s.right.size(), s, touched);");
+  if (nr > 0) {
+    // What the rewrite changes, for the upkeep to skip the attachments whose
+    // orbits it leaves as they were (slot_upkeep.hpp, rule_plan.hpp).
+    w.line(
+        "update_embedding_slots(g, s.right.data(), s.right.size(), s, touched, "
+        "{rift::Orbit::from_mask(" +
+        std::to_string(rewrite.relinked_dims) + "), " +
+        (rewrite.darts_come_or_go ? "true" : "false") + "});");
+  }
   for (std::size_t k = 0; k < rule.right.assigns.size(); ++k) {
     const ast::Assign& a = rule.right.assigns[k];
     const int v = plan.assign_nodes[k];

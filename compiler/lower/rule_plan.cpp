@@ -1,6 +1,8 @@
 #include "lower/rule_plan.hpp"
 
+#include <algorithm>
 #include <set>
+#include <string>
 
 #include "check/pattern_graph.hpp"
 
@@ -49,6 +51,44 @@ MatchPlan plan_match(const check::RuleGraph& g) {
   return plan;
 }
 
+namespace {
+
+// The explicit arcs of node v along dim on one side, as the partners' names
+// ("" for a loop: v is free along dim).
+std::multiset<std::string> arc_partners(const check::PatternSide& side, int v, int dim) {
+  std::multiset<std::string> out;
+  for (const check::GraphArc& arc : side.arcs) {
+    if (arc.dim != dim) continue;
+    if (arc.a == v && arc.b == v) {
+      out.insert("");
+    } else if (arc.a == v) {
+      out.insert(side.nodes[static_cast<std::size_t>(arc.b)].name());
+    } else if (arc.b == v) {
+      out.insert(side.nodes[static_cast<std::size_t>(arc.a)].name());
+    }
+  }
+  return out;
+}
+
+// Whether right node v (kept from a left node) has along `dim` the links its
+// left node had: the same label positions holding dim, and the same explicit
+// arcs (partners by name). The rewrite unlinks and relinks such a link to the
+// same partner, which changes no orbit.
+bool same_links(const check::RuleGraph& g, const std::vector<int>& right_from_left, int v,
+                int dim) {
+  const int l = right_from_left[static_cast<std::size_t>(v)];
+  if (l < 0) return false;
+  const std::vector<int>& left_label = g.left.nodes[static_cast<std::size_t>(l)].label();
+  const std::vector<int>& right_label = g.right.nodes[static_cast<std::size_t>(v)].label();
+  if (left_label.size() != right_label.size()) return false;
+  for (std::size_t p = 0; p < left_label.size(); ++p) {
+    if ((left_label[p] == dim) != (right_label[p] == dim)) return false;
+  }
+  return arc_partners(g.left, l, dim) == arc_partners(g.right, v, dim);
+}
+
+}  // namespace
+
 RewritePlan plan_rewrite(const check::RuleGraph& g) {
   RewritePlan plan;
   for (std::size_t v = 0; v < g.left.nodes.size(); ++v) {
@@ -74,6 +114,12 @@ RewritePlan plan_rewrite(const check::RuleGraph& g) {
   }
   for (const check::GraphArc& arc : g.right.arcs)
     plan.arcs.push_back(ArcCheck{arc.a, arc.b, arc.dim});
+  plan.darts_come_or_go = !plan.deleted.empty() ||
+                          std::find(plan.right_from_left.begin(), plan.right_from_left.end(), -1) !=
+                              plan.right_from_left.end();
+  for (const ArcCheck& u : plan.unlinks) {
+    if (!same_links(g, plan.right_from_left, u.a, u.dim)) plan.relinked_dims |= 1u << u.dim;
+  }
   return plan;
 }
 

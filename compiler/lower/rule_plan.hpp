@@ -48,6 +48,13 @@ struct RewritePlan {
   std::vector<ArcCheck> unlinks;  // (preserved right node, dim) cleared before relinking; b unused
   std::vector<ArcCheck> arcs;     // explicit right arcs (loops included: they stay free)
   std::vector<LabelLink> label_links;
+  /// The dimensions whose links the rewrite changes, as a mask: those of an
+  /// unlink whose relinking gives a dart another partner than it had. Links
+  /// the right side gives back as the left side had them (the same label
+  /// position, the same explicit arc) do not count.
+  unsigned relinked_dims = 0;
+  /// Whether the rewrite creates or deletes darts.
+  bool darts_come_or_go = false;
 };
 
 MatchPlan plan_match(const check::RuleGraph& g);

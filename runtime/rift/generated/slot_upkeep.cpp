@@ -87,13 +87,13 @@ void update_dart_slots(GMap& g, OrbitAttachment& att, const Dart* darts, std::si
 }  // namespace
 
 void update_embedding_slots(GMap& g, const Dart* darts, std::size_t count, Scratch& s,
-                            std::vector<Dart>* touched) {
+                            std::vector<Dart>* touched, RewriteChanges changes) {
   // Every awake attachment's slots of the rewritten darts, asked for before
   // the first is read: on a large map each attachment's slot array is a miss
   // per dart, and the loops below would take them one after the other.
   if (g.capacity() >= kPrefetchFromDarts) {
     for (const auto& attachment : g.attachments()) {
-      if (attachment->dormant()) continue;
+      if (attachment->dormant() || !changes.may_change(attachment->orbit())) continue;
       const Slot* slots = attachment->slot_data();
       for (std::size_t k = 0; k < count; ++k)
         prefetch(slots + darts[k]);
@@ -102,6 +102,10 @@ void update_embedding_slots(GMap& g, const Dart* darts, std::size_t count, Scrat
   for (const auto& attachment : g.attachments()) {
     OrbitAttachment& att = *attachment;
     if (att.dormant()) continue;  // no slots until a column is asked for
+    // Its orbits are the ones before the rewrite (the 2-links a face
+    // separation changes leave every edge, corner and face as it was): four
+    // of a cloth's six attachments after a tear.
+    if (!changes.may_change(att.orbit())) continue;
     if (att.orbit().empty()) {
       update_dart_slots(g, att, darts, count, s, touched);
       continue;

@@ -143,7 +143,7 @@ bool apply_separate_faces(rift::GMap& g, std::span<const rift::Dart> hooks, cons
     const rift::Dart y = right_1[s.nbr[r * label + 0]];
     if (x != y && g.is_free(x, 0) && g.is_free(y, 0)) g.link(x, y, 0);
   }
-  update_embedding_slots(g, s.right.data(), s.right.size(), s, touched);
+  update_embedding_slots(g, s.right.data(), s.right.size(), s, touched, {rift::Orbit::from_mask(4), false});
   g.check_after_rewrite("rule 'separate_faces'");
   return true;
 }
