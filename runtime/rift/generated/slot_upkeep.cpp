@@ -51,8 +51,10 @@ class ClaimedSlots {
 // own orbit, so the general case's orbit walk, lists and merges reduce to
 // "keep the dart's slot unless another dart of the rewrite kept it first".
 // The same slots and copies as the general case, without its orbit walk,
-// lists and search of the orbit's slots per dart (6 % of the upkeep of a
-// spring split, whose stored forces are per dart).
+// lists and search of the orbit's slots per dart. Only rewrites that create
+// or delete darts come here (the others skip per-dart attachments, whose
+// orbits they cannot change); before that skip it was 6 % of the upkeep of
+// a spring split.
 void update_dart_slots(GMap& g, OrbitAttachment& att, const Dart* darts, std::size_t count,
                        Scratch& s, std::vector<Dart>* touched) {
   const Mark m = g.reserve_mark();  // a dart listed twice is upkept once
