@@ -95,7 +95,9 @@ class ByteSource {
 
 std::uint64_t header_integer(ByteSource& in, const VtkBinaryLayout& layout) {
   std::array<std::uint8_t, 8> b{};
-  const auto n = static_cast<std::size_t>(layout.header_bytes);
+  // UInt64 or UInt32 (the reader sets nothing else); spelled as a choice so
+  // that the compiler sees the read fits in b.
+  const std::size_t n = layout.header_bytes == 8 ? 8 : 4;
   in.read(b.data(), n);
   std::uint64_t value = 0;
   for (std::size_t k = 0; k < n; ++k) {
