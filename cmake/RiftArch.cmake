@@ -18,7 +18,8 @@
 # copy, so the same force evaluated in two places (the grouped and the atomic
 # pass, a stage and its reference) could round differently, and tests check
 # that such paths agree to the bit. With it, the instruction set changes the
-# speed of rift's own code, not its arithmetic.
+# speed of rift's own loops, not their arithmetic (Eigen's dynamic-size
+# operations may still sum in another order with AVX's wider packets).
 include(CheckCXXCompilerFlag)
 include(CheckCXXSourceRuns)
 
