@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
 #include <utility>
 
 #include "emit/names.hpp"
@@ -138,9 +139,23 @@ void BodyRenderer::precompute(ExprId id) {
   const std::string code = expr(id);
   if (known(id, 0)) return;  // a fold computed by a fused walk
   std::string name = local_name(id);
-  locals_.push_back(std::string("const ") + cpp_type(g_[id].type) + " " + name + " = " + code +
-                    ";");
+  locals_.push_back(local_statement(id, name, code));
   blocks_.back().emplace(id, name);
+}
+
+std::string BodyRenderer::value_type(Type t) const {
+  if (!ctx_.lanes) return cpp_type(t);
+  if (t == Type::Vec3) return "rift::lanes::Vec3";
+  if (t == Type::Bool) return "rift::lanes::Mask";
+  return "rift::lanes::Real";  // the only other type a lanes body has
+}
+
+std::string BodyRenderer::local_statement(ExprId id, const std::string& name,
+                                          const std::string& code) {
+  // A lanes body's uniform values (a parameter, a literal) become lane values
+  // where they are named.
+  const std::string value = ctx_.lanes ? std::string("rift::lanes::as_lanes(") + code + ")" : code;
+  return std::string("const ") + value_type(g_[id].type) + " " + name + " = " + value + ";";
 }
 
 std::string BodyRenderer::local_name(ExprId id) {
@@ -221,7 +236,7 @@ std::string BodyRenderer::value(ExprId id) {
   if (uses_[i] < 2 && level == fold_depth_) return node(id);
   const std::string code = node(id);
   std::string name = local_name(id);
-  std::string local = std::string("const ") + cpp_type(n.type) + " " + name + " = " + code + ";";
+  std::string local = local_statement(id, name, code);
   if (level > 0) {
     FoldScope& scope = folds_[static_cast<std::size_t>(level - 1)];
     scope.locals.push_back(std::move(local));
@@ -265,6 +280,7 @@ std::string BodyRenderer::node(ExprId id) {
       if (n.type == Type::Bool) return n.boolean ? "true" : "false";
       if (n.type == Type::Int)
         return std::string("std::int64_t{") + std::to_string(n.integer) + "}";
+      if (ctx_.lanes && n.type == Type::Vec3) return "rift::lanes::Vec3{}";
       if (n.type == Type::Vec3 || n.type == Type::Mat3) return zero_of(n.type);
       return real_literal(n.real);
     case Op::PositionTangent:
@@ -275,14 +291,18 @@ std::string BodyRenderer::node(ExprId id) {
       if (ctx_.read) return ctx_.read(n);
       return embedding_access(n.embedding) + "[" + place(n.place) + "]";
     case Op::Param:
-      return ctx_.args + "." + member_name(n.name);
-    case Op::PackParam:
-      return ctx_.params + "." + member_name(n.name);
+    case Op::PackParam: {
+      const std::string p =
+          (n.op == Op::Param ? ctx_.args : ctx_.params) + "." + member_name(n.name);
+      // Every vec3 of a lanes body is a lane value: its operators need no other.
+      return ctx_.lanes && n.type == Type::Vec3 ? std::string("rift::lanes::Vec3(") + p + ")" : p;
+    }
     case Op::Let:
       return let_name(n.name);
     case Op::Neg:
       return std::string("(-") + value(n.a) + ")";
     case Op::Not:
+      if (ctx_.lanes) return std::string("(~rift::lanes::as_lanes(") + value(n.a) + "))";
       return std::string("(!") + value(n.a) + ")";
     case Op::ToReal:
       return std::string("static_cast<rift::Real>(") + value(n.a) + ")";
@@ -292,12 +312,19 @@ std::string BodyRenderer::node(ExprId id) {
       const std::string a = value(n.a);
       const std::string b = value(n.b);
       const std::string c = value(n.c);
+      if (ctx_.lanes) {
+        // Both branches are computed; each lane keeps its own.
+        return std::string("rift::lanes::select(rift::lanes::as_lanes(") + a +
+               "), rift::lanes::as_lanes(" + b + "), rift::lanes::as_lanes(" + c + "))";
+      }
       const std::string t = cpp_type(n.type);
       if (n.type == Type::Vec3 || n.type == Type::Mat3)
         return std::string("(") + a + " ? " + t + "(" + b + ") : " + t + "(" + c + "))";
       return std::string("(") + a + " ? " + b + " : " + c + ")";
     }
     case Op::Index: {
+      if (ctx_.lanes)
+        return std::string("(") + value(n.a) + ")(" + index(n.b) + ")";  // a vec3's coordinate
       std::string out = std::string("(") + value(n.a) + ")(" + index(n.b);
       if (n.c != ir::kNoExpr) out += std::string(", ") + index(n.c);
       return out + ")";
@@ -309,6 +336,11 @@ std::string BodyRenderer::node(ExprId id) {
     default: {
       const std::string a = value(n.a);
       const std::string b = value(n.b);
+      if (ctx_.lanes && (n.op == Op::And || n.op == Op::Or)) {
+        // Per lane, both operands computed (no lane may skip the other).
+        return std::string("(rift::lanes::as_lanes(") + a + ") " + (n.op == Op::And ? "&" : "|") +
+               " rift::lanes::as_lanes(" + b + "))";
+      }
       const char* op = n.op == Op::And ? "&&" : n.op == Op::Or ? "||" : nullptr;
       return std::string("(") + a + " " + (op ? std::string(op) : std::string(ir::op_name(n.op))) +
              " " + b + ")";
@@ -492,6 +524,7 @@ std::string BodyRenderer::call(const Node& n) {
     }
     return out;
   };
+  if (ctx_.lanes) return lanes_call(n, x);
   using B = ir::Builtin;
   switch (n.fn) {
     case B::Vec3:
@@ -539,6 +572,36 @@ std::string BodyRenderer::call(const Node& n) {
       return std::string("symmetric_eigenvalues(") + x[0] + ")";
     default:  // abs sqrt exp log sin cos tan acos asin atan atan2 pow
       return std::string("std::") + std::string(ir::builtin_name(n.fn)) + "(" + join() + ")";
+  }
+}
+
+std::string BodyRenderer::lanes_call(const Node& n, const std::vector<std::string>& x) {
+  std::string args;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    if (k) args += ", ";
+    args += std::string("rift::lanes::as_lanes(") + x[k] + ")";
+  }
+  using B = ir::Builtin;
+  switch (n.fn) {
+    case B::Vec3:
+      return std::string("rift::lanes::Vec3(") + args + ")";
+    case B::StopGradient:
+    case B::Real:  // of a real: the value itself (renders_in_lanes)
+      return x[0];
+    case B::Sqrt:
+    case B::Abs:
+    case B::Min:
+    case B::Max:
+    case B::Clamp:
+    case B::Dot:
+    case B::Cross:
+    case B::Norm:
+      return std::string("rift::lanes::") + std::string(ir::builtin_name(n.fn)) + "(" + args + ")";
+    case B::Normalize:
+      return std::string("rift::lanes::normalized(") + args + ")";
+    default:  // renders_in_lanes admits no other
+      throw std::logic_error(std::string("riftc: no lanes form of built-in '") +
+                             std::string(ir::builtin_name(n.fn)) + "'");
   }
 }
 

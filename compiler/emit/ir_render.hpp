@@ -45,6 +45,10 @@ struct RenderContext {
   /// (lower/orbit_memo.hpp), read through the members memo_var() and
   /// memo_values_var(). Null elsewhere: nothing is memoised.
   const std::vector<ir::OrbitMemo>* memos = nullptr;
+  /// A force kernel's evaluate_lanes (rift/core/lanes.hpp): values of type
+  /// real, vec3 and bool are those of kWidth matches at once. Only bodies
+  /// renders_in_lanes accepts (emit/lanes.hpp). `read` gives lane values.
+  bool lanes = false;
 };
 
 /// The expressions of one body rendered into one C++ function, in the order
@@ -103,6 +107,12 @@ class BodyRenderer {
   /// The fold group `id` belongs to, or nullptr when it is walked alone.
   const std::vector<ir::ExprId>* group_of(ir::ExprId id) const;
   std::string call(const ir::Node& n);
+  /// call() of a lanes body: rift::lanes' functions, every operand a lane value.
+  std::string lanes_call(const ir::Node& n, const std::vector<std::string>& x);
+  /// The C++ type of a value of type t (a lane type in a lanes body).
+  std::string value_type(ir::Type t) const;
+  /// `const T name = code;` for a local computing `id`.
+  std::string local_statement(ir::ExprId id, const std::string& name, const std::string& code);
   bool cheap(const ir::Node& n) const;
   const std::string* known(ir::ExprId id, int level) const;
   /// The C++ name of a new local computing `id`: `sN`, or the name of the

@@ -13,6 +13,7 @@
 #include "ast/orbit_text.hpp"
 #include "emit/emit_context.hpp"
 #include "emit/ir_render.hpp"
+#include "emit/lanes.hpp"
 #include "emit/names.hpp"
 #include "lower/derivative.hpp"
 #include "lower/interaction_plan.hpp"
@@ -115,6 +116,9 @@ struct Kernel {
   // so that a scene that stores nothing leaves their orbit's attachment
   // without slots (rift::GMap's dormant attachments).
   std::set<std::string> store_only_embeddings;
+  // The body has a lanes form (emit/lanes.hpp): the force passes without
+  // stores evaluate rift::lanes::kWidth matches at once.
+  bool lanes = false;
 };
 
 /// The embeddings a body's forces are stored in, each once.
@@ -139,6 +143,7 @@ Kernel kernel_of(const InteractionPlan& plan) {
   k.cls = kernel_class(k.inter->name.text);
   k.slots = slot_names(plan.kernel);
   k.derivative = lower::plan_derivative(plan.body, plan.kernel, k.inter->name.loc);
+  k.lanes = renders_in_lanes(plan.body);
   const ir::Body& b = plan.body;
   auto scan = [&](ir::ExprId root) {
     if (root == ir::kNoExpr) return;
@@ -585,6 +590,84 @@ void write_evaluate(Writer& w, const Kernel& k) {
   w.line();
 }
 
+// The body on rift::lanes::kWidth consecutive matches at once (lanes.hpp):
+// the lets the whens and forces read, in source order, each a lane value;
+// a `when` clears the lanes where it fails instead of returning. The force
+// passes without stores run it over their matches kWidth at a time and add
+// each lane's forces in the order of the matches, as the scalar loop does.
+void write_evaluate_lanes(Writer& w, const Kernel& k) {
+  const ir::Body& b = k.plan->body;
+  std::vector<bool> wanted(b.lets.size());
+  for (const ir::Stmt& s : b.stmts)
+    lets_used(b, s.cond, wanted);
+  for (const ir::Force& f : b.forces)
+    lets_used(b, f.value, wanted);
+  std::vector<ir::ExprId> roots;
+  for (const ir::Stmt& s : b.stmts) {
+    if (s.kind == ir::Stmt::Kind::When) {
+      roots.push_back(s.cond);
+    } else if (wanted[static_cast<std::size_t>(s.let)]) {
+      roots.push_back(b.lets[static_cast<std::size_t>(s.let)].value);
+    }
+  }
+  for (const ir::Force& f : b.forces)
+    roots.push_back(f.value);
+  // The slots the lanes read, each gathered once from the kWidth matches.
+  std::set<int> read_slots;
+  for (ir::ExprId root : roots) {
+    ir::visit(b.graph, root, [&](const ir::Node& n) {
+      if (n.op == ir::Op::Position || n.op == ir::Op::Velocity || n.op == ir::Op::Read)
+        read_slots.insert(n.place.slot);
+    });
+  }
+  RenderContext ctx = loop_context(k);
+  ctx.lanes = true;
+  ctx.read = [&k](const ir::Node& n) {
+    const std::string at = std::string("s_") + k.slots[static_cast<std::size_t>(n.place.slot)];
+    if (n.op == ir::Op::Position) return std::string("rift::lanes::gather(in.x, ") + at + ")";
+    if (n.op == ir::Op::Velocity) return std::string("rift::lanes::gather(in.v, ") + at + ")";
+    return std::string("rift::lanes::gather(c.") + member_name(n.embedding) + ", " + at + ")";
+  };
+  w.open("inline rift::lanes::Mask " + k.cls + "::evaluate_lanes(" +
+         (read_slots.empty() ? "const Match* /*ms*/" : "const Match* ms") + ", " +
+         (k.reads_state ? "const rift::ForceInput& in" : "const rift::ForceInput& /*in*/") + ", " +
+         (k.columns.empty() ? "const Columns& /*c*/" : "const Columns& c") +
+         ", ResultLanes& r) const {");
+  for (int s : read_slots) {
+    const std::string& name = k.slots[static_cast<std::size_t>(s)];
+    w.line(std::string("const rift::lanes::Slots s_") + name +
+           " = rift::lanes::slots(ms, &Match::" + name + ");");
+  }
+  w.line("rift::lanes::Mask active = rift::lanes::all_true();");
+  BodyRenderer values(b.graph, b.sharing, ctx, roots);
+  for (const ir::Stmt& s : b.stmts) {
+    if (s.kind == ir::Stmt::Kind::When) {
+      write_rendered(w, values, s.loc, "active = active & rift::lanes::as_lanes(", s.cond, ");");
+      continue;
+    }
+    const auto i = static_cast<std::size_t>(s.let);
+    if (!wanted[i]) continue;
+    const ir::Let& l = b.lets[i];
+    const ir::Type t = b.graph[l.value].type;
+    const std::string type = t == ir::Type::Vec3   ? "rift::lanes::Vec3"
+                             : t == ir::Type::Bool ? "rift::lanes::Mask"
+                                                   : "rift::lanes::Real";
+    write_rendered(
+        w, values, l.loc,
+        std::string("const ") + type + " " + let_name(l.name) + " = rift::lanes::as_lanes(",
+        l.value, ");");
+    values.computed(l.value, let_name(l.name));
+  }
+  for (const ir::Force& f : b.forces) {
+    write_rendered(w, values, f.loc,
+                   std::string("r.") + force_field(b, f) + " = rift::lanes::as_lanes(", f.value,
+                   ");");
+  }
+  w.line("return active;");
+  w.close();
+  w.line();
+}
+
 // The whole force pass: column pointers are loaded once instead of once per
 // match (stores through Vec3* may alias anything, so the compiler cannot
 // hoist them itself), and the body is inlined. `indexed`: the pass over
@@ -612,6 +695,45 @@ std::vector<std::string> write_force_targets(Writer& w, const Kernel& k, const i
     targets.push_back("f[to_" + slot + "]");
   }
   return targets;
+}
+
+// The lanes part of a force pass over consecutive matches (evaluate_lanes):
+// `done` counts the matches it evaluated, kWidth at a time, and the scalar
+// loop that follows takes the rest. Each lane's forces are added in the
+// order of the matches, with the scalar loop's arithmetic: `count` times
+// each force where the matches are groups' representatives (counts[]).
+void write_lanes_pass(Writer& w, const Kernel& k, const std::string& ms, bool counted) {
+  const ir::Body& b = k.plan->body;
+  w.open(std::string("for (; done + rift::lanes::kWidth <= ") + ms +
+         ".size(); done += rift::lanes::kWidth) {");
+  w.line(std::string("const Match* lane_ms = ") + ms + ".data() + done;");
+  w.line("ResultLanes r;");
+  w.line("const rift::lanes::Mask active = evaluate_lanes(lane_ms, in, c, r);");
+  std::vector<std::string> value(b.forces.size());
+  for (std::size_t i = 0; i < b.forces.size(); ++i)
+    value[i] = std::string("r.") + force_field(b, b.forces[i]);
+  if (counted) {
+    w.line("const rift::lanes::Real count = rift::lanes::load(counts + done);");
+    for (std::size_t i = 0; i < b.forces.size(); ++i) {
+      if (negated_force(b, i) >= 0) continue;  // subtracts the force it negates
+      w.line(std::string("const rift::lanes::Vec3 cf") + std::to_string(i) + " = count * " +
+             value[i] + ";");
+      value[i] = std::string("cf") + std::to_string(i);
+    }
+  }
+  w.open("for (int lane = 0; lane < rift::lanes::kWidth; ++lane) {");
+  w.line("if (!active[lane]) continue;");
+  w.line("const Match& m = lane_ms[lane];");
+  const std::vector<std::string> targets = write_force_targets(w, k, b);
+  for (std::size_t i = 0; i < b.forces.size(); ++i) {
+    if (const int j = negated_force(b, i); j >= 0) {
+      w.line(targets[i] + " -= " + value[static_cast<std::size_t>(j)] + ".lane(lane);");
+    } else {
+      w.line(targets[i] + " += " + value[i] + ".lane(lane);");
+    }
+  }
+  w.close();
+  w.close();
 }
 
 void write_add_forces_all(Writer& w, const Kernel& k, bool indexed) {
@@ -660,11 +782,20 @@ void write_add_forces_all(Writer& w, const Kernel& k, bool indexed) {
     w.open(stores_values ? "auto pass = [&]<bool kStore>() __attribute__((noinline)) {"
                          : "auto pass = [&]<bool kStore>() {");
   }
+  const bool lanes = k.lanes && !indexed;
+  if (lanes) {
+    // The pass that stores nothing: kWidth matches at a time, then the rest.
+    w.line("std::size_t done = 0;");
+    w.open(two_passes ? "if constexpr (!kStore) {" : "{");
+    write_lanes_pass(w, k, "ms", false);
+    w.close();
+  }
   if (indexed) {
     w.open("for (std::size_t i = 0; i < n; ++i) {");
     w.line("const Match& m = ms[at[i]];");
   } else {
-    w.open("for (std::size_t i = 0; i < ms.size(); ++i) {");
+    w.open(std::string("for (std::size_t i = ") + (lanes ? "done" : "0") +
+           "; i < ms.size(); ++i) {");
     w.line("const Match& m = ms[i];");
   }
   w.line("Result r;");
@@ -1045,6 +1176,14 @@ void write_add_forces_grouped(Writer& w, const Kernel& k, bool indexed) {
          "rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {");
   w.line(kLocalInput);
   w.line("const Columns c = columns();");
+  const bool lanes = k.lanes && !indexed;
+  if (lanes) {
+    // Without terms: kWidth groups at a time, then the rest.
+    w.line("std::size_t done = 0;");
+    w.open("if (!terms) {");
+    write_lanes_pass(w, k, "reps", true);
+    w.close();
+  }
   // The loop twice, with and without terms: a test of `terms` in the loop
   // was two of the stretch spring's 80 instructions.
   w.open("const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {");
@@ -1053,7 +1192,8 @@ void write_add_forces_grouped(Writer& w, const Kernel& k, bool indexed) {
     w.line("const std::uint32_t e = at[i];");
     w.line("const Match& m = reps[e];");
   } else {
-    w.open("for (std::size_t i = 0; i < reps.size(); ++i) {");
+    w.open(std::string("for (std::size_t i = ") + (lanes ? "done" : "0") +
+           "; i < reps.size(); ++i) {");
     w.line("const Match& m = reps[i];");
   }
   w.line("Result r;");
@@ -1354,6 +1494,18 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
       "match.");
   w.line("bool find(const rift::GMap& g, rift::Dart support, rift::Dart* darts) const;");
   w.line("Columns columns() const;");
+  if (k.lanes) {
+    w.line("/// What evaluate_lanes gives: each force for rift::lanes::kWidth matches.");
+    w.open("struct ResultLanes {");
+    for (const ir::Force& f : b.forces)
+      w.line(std::string("rift::lanes::Vec3 ") + force_field(b, f) + ";");
+    w.close("};");
+    w.line("/// The body for ms[0] .. ms[kWidth - 1] at once (rift/core/lanes.hpp): the forces");
+    w.line("/// evaluate() gives each, to the bit; true in the lanes whose `when`s hold.");
+    w.line(
+        "[[gnu::always_inline]] inline rift::lanes::Mask evaluate_lanes(const Match* ms, const "
+        "rift::ForceInput& in, const Columns& c, ResultLanes& r) const;");
+  }
   w.line("/// The interaction's body; false where a `when` fails.");
   w.line(b.stores.empty() ? "template <bool kForces>"
                           : "template <bool kForces, bool kStores = false>");
@@ -1389,6 +1541,7 @@ void emit_kernel(Writer& w, const InteractionPlan& plan, const PackModel& model)
   if (chooses_support_dart(k)) write_support_dart(w, k);
   write_columns(w, k);
   write_evaluate(w, k);
+  if (k.lanes) write_evaluate_lanes(w, k);
   write_add_forces_all(w, k, false);
   write_add_forces_all(w, k, true);
   write_force_targets(w, k);

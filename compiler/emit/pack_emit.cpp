@@ -75,6 +75,7 @@ void write_header(Writer& w, const PackModel& m) {
   w.line("#include <vector>");
   w.line();
   w.line("#include \"rift/core/interrupt.hpp\"");
+  w.line("#include \"rift/core/lanes.hpp\"");
   w.line("#include \"rift/generated/collect_cells.hpp\"");
   w.line("#include \"rift/generated/orbit_memo.hpp\"");
   w.line("#include \"rift/gmap/gmap.hpp\"");

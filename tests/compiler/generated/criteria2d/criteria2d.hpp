@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rift/core/interrupt.hpp"
+#include "rift/core/lanes.hpp"
 #include "rift/generated/collect_cells.hpp"
 #include "rift/generated/orbit_memo.hpp"
 #include "rift/gmap/gmap.hpp"

@@ -244,12 +244,42 @@ inline bool StretchKernel::evaluate(const Match& m, const rift::ForceInput& in, 
   return true;
 }
 
+inline rift::lanes::Mask StretchKernel::evaluate_lanes(const Match* ms, const rift::ForceInput& in, const Columns& c, ResultLanes& r) const {
+  const rift::lanes::Slots s_vertex_a = rift::lanes::slots(ms, &Match::vertex_a);
+  const rift::lanes::Slots s_vertex_b = rift::lanes::slots(ms, &Match::vertex_b);
+  const rift::lanes::Slots s_orbit0_a = rift::lanes::slots(ms, &Match::orbit0_a);
+  rift::lanes::Mask active = rift::lanes::all_true();
+  const rift::lanes::Vec3 spring_force_d = rift::lanes::as_lanes((rift::lanes::gather(in.x, s_vertex_b) - rift::lanes::gather(in.x, s_vertex_a)));
+  const rift::lanes::Real spring_force_l = rift::lanes::as_lanes(rift::lanes::norm(rift::lanes::as_lanes(spring_force_d)));
+  const rift::lanes::Real spring_force_inv = rift::lanes::as_lanes(rift::lanes::select(rift::lanes::as_lanes((spring_force_l > 0.0)), rift::lanes::as_lanes((1.0 / spring_force_l)), rift::lanes::as_lanes(0.0)));
+  const rift::lanes::Vec3 l_f = rift::lanes::as_lanes(((((rift::lanes::gather(c.stretch_k, s_orbit0_a) * (spring_force_l - rift::lanes::gather(c.stretch_rest, s_orbit0_a))) + ((p_.damping * rift::lanes::dot(rift::lanes::as_lanes((rift::lanes::gather(in.v, s_vertex_b) - rift::lanes::gather(in.v, s_vertex_a))), rift::lanes::as_lanes(spring_force_d))) * spring_force_inv)) * spring_force_inv) * spring_force_d));
+  r.f_stretch_a = rift::lanes::as_lanes(l_f);
+  r.f_stretch_b = rift::lanes::as_lanes((-l_f));
+  return active;
+}
+
 void StretchKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in_arg, rift::Vec3* f, bool store) {
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   rift::Vec3* const stored_f_stretch = store ? e_f_stretch.values().data() : nullptr;
   auto pass = [&]<bool kStore>() {
-    for (std::size_t i = 0; i < ms.size(); ++i) {
+    std::size_t done = 0;
+    if constexpr (!kStore) {
+      for (; done + rift::lanes::kWidth <= ms.size(); done += rift::lanes::kWidth) {
+        const Match* lane_ms = ms.data() + done;
+        ResultLanes r;
+        const rift::lanes::Mask active = evaluate_lanes(lane_ms, in, c, r);
+        for (int lane = 0; lane < rift::lanes::kWidth; ++lane) {
+          if (!active[lane]) continue;
+          const Match& m = lane_ms[lane];
+          const rift::Slot to_vertex_a = m.vertex_a;
+          const rift::Slot to_vertex_b = m.vertex_b;
+          f[to_vertex_a] += r.f_stretch_a.lane(lane);
+          f[to_vertex_b] -= r.f_stretch_a.lane(lane);
+        }
+      }
+    }
+    for (std::size_t i = done; i < ms.size(); ++i) {
       const Match& m = ms[i];
       Result r;
       if (!evaluate<true>(m, in, c, r)) {
@@ -348,8 +378,26 @@ void StretchKernel::store_terms_of(std::span<const Match> ms, const Stored* ss, 
 void StretchKernel::add_forces_grouped(std::span<const Match> reps, const rift::Real* counts, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
+  std::size_t done = 0;
+  if (!terms) {
+    for (; done + rift::lanes::kWidth <= reps.size(); done += rift::lanes::kWidth) {
+      const Match* lane_ms = reps.data() + done;
+      ResultLanes r;
+      const rift::lanes::Mask active = evaluate_lanes(lane_ms, in, c, r);
+      const rift::lanes::Real count = rift::lanes::load(counts + done);
+      const rift::lanes::Vec3 cf0 = count * r.f_stretch_a;
+      for (int lane = 0; lane < rift::lanes::kWidth; ++lane) {
+        if (!active[lane]) continue;
+        const Match& m = lane_ms[lane];
+        const rift::Slot to_vertex_a = m.vertex_a;
+        const rift::Slot to_vertex_b = m.vertex_b;
+        f[to_vertex_a] += cf0.lane(lane);
+        f[to_vertex_b] -= cf0.lane(lane);
+      }
+    }
+  }
   const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {
-    for (std::size_t i = 0; i < reps.size(); ++i) {
+    for (std::size_t i = done; i < reps.size(); ++i) {
       const Match& m = reps[i];
       Result r;
       if (!evaluate<true>(m, in, c, r)) {
@@ -616,12 +664,54 @@ inline bool ShearKernel::evaluate(const Match& m, const rift::ForceInput& in, co
   return true;
 }
 
+inline rift::lanes::Mask ShearKernel::evaluate_lanes(const Match* ms, const rift::ForceInput& in, const Columns& c, ResultLanes& r) const {
+  const rift::lanes::Slots s_vertex_c0 = rift::lanes::slots(ms, &Match::vertex_c0);
+  const rift::lanes::Slots s_vertex_c2 = rift::lanes::slots(ms, &Match::vertex_c2);
+  const rift::lanes::Slots s_orbit01_c0 = rift::lanes::slots(ms, &Match::orbit01_c0);
+  const rift::lanes::Slots s_vertex_c1 = rift::lanes::slots(ms, &Match::vertex_c1);
+  const rift::lanes::Slots s_vertex_c3 = rift::lanes::slots(ms, &Match::vertex_c3);
+  rift::lanes::Mask active = rift::lanes::all_true();
+  const rift::lanes::Vec3 spring_force_d = rift::lanes::as_lanes((rift::lanes::gather(in.x, s_vertex_c2) - rift::lanes::gather(in.x, s_vertex_c0)));
+  const rift::lanes::Real spring_force_l = rift::lanes::as_lanes(rift::lanes::norm(rift::lanes::as_lanes(spring_force_d)));
+  const rift::lanes::Real spring_force_inv = rift::lanes::as_lanes(rift::lanes::select(rift::lanes::as_lanes((spring_force_l > 0.0)), rift::lanes::as_lanes((1.0 / spring_force_l)), rift::lanes::as_lanes(0.0)));
+  const rift::lanes::Vec3 l_fa = rift::lanes::as_lanes(((((rift::lanes::gather(c.shear_k, s_orbit01_c0) * (spring_force_l - rift::lanes::gather(c.shear_rest02, s_orbit01_c0))) + ((p_.damping * rift::lanes::dot(rift::lanes::as_lanes((rift::lanes::gather(in.v, s_vertex_c2) - rift::lanes::gather(in.v, s_vertex_c0))), rift::lanes::as_lanes(spring_force_d))) * spring_force_inv)) * spring_force_inv) * spring_force_d));
+  const rift::lanes::Vec3 spring_force_d_2 = rift::lanes::as_lanes((rift::lanes::gather(in.x, s_vertex_c3) - rift::lanes::gather(in.x, s_vertex_c1)));
+  const rift::lanes::Real spring_force_l_2 = rift::lanes::as_lanes(rift::lanes::norm(rift::lanes::as_lanes(spring_force_d_2)));
+  const rift::lanes::Real spring_force_inv_2 = rift::lanes::as_lanes(rift::lanes::select(rift::lanes::as_lanes((spring_force_l_2 > 0.0)), rift::lanes::as_lanes((1.0 / spring_force_l_2)), rift::lanes::as_lanes(0.0)));
+  const rift::lanes::Vec3 l_fb = rift::lanes::as_lanes(((((rift::lanes::gather(c.shear_k, s_orbit01_c0) * (spring_force_l_2 - rift::lanes::gather(c.shear_rest13, s_orbit01_c0))) + ((p_.damping * rift::lanes::dot(rift::lanes::as_lanes((rift::lanes::gather(in.v, s_vertex_c3) - rift::lanes::gather(in.v, s_vertex_c1))), rift::lanes::as_lanes(spring_force_d_2))) * spring_force_inv_2)) * spring_force_inv_2) * spring_force_d_2));
+  r.f_shear_c0 = rift::lanes::as_lanes(l_fa);
+  r.f_shear_c2 = rift::lanes::as_lanes((-l_fa));
+  r.f_shear_c1 = rift::lanes::as_lanes(l_fb);
+  r.f_shear_c3 = rift::lanes::as_lanes((-l_fb));
+  return active;
+}
+
 void ShearKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in_arg, rift::Vec3* f, bool store) {
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   rift::Vec3* const stored_f_shear = store ? e_f_shear.values().data() : nullptr;
   auto pass = [&]<bool kStore>() {
-    for (std::size_t i = 0; i < ms.size(); ++i) {
+    std::size_t done = 0;
+    if constexpr (!kStore) {
+      for (; done + rift::lanes::kWidth <= ms.size(); done += rift::lanes::kWidth) {
+        const Match* lane_ms = ms.data() + done;
+        ResultLanes r;
+        const rift::lanes::Mask active = evaluate_lanes(lane_ms, in, c, r);
+        for (int lane = 0; lane < rift::lanes::kWidth; ++lane) {
+          if (!active[lane]) continue;
+          const Match& m = lane_ms[lane];
+          const rift::Slot to_vertex_c0 = m.vertex_c0;
+          const rift::Slot to_vertex_c2 = m.vertex_c2;
+          const rift::Slot to_vertex_c1 = m.vertex_c1;
+          const rift::Slot to_vertex_c3 = m.vertex_c3;
+          f[to_vertex_c0] += r.f_shear_c0.lane(lane);
+          f[to_vertex_c2] -= r.f_shear_c0.lane(lane);
+          f[to_vertex_c1] += r.f_shear_c1.lane(lane);
+          f[to_vertex_c3] -= r.f_shear_c1.lane(lane);
+        }
+      }
+    }
+    for (std::size_t i = done; i < ms.size(); ++i) {
       const Match& m = ms[i];
       Result r;
       if (!evaluate<true>(m, in, c, r)) {
@@ -747,8 +837,31 @@ void ShearKernel::store_terms_of(std::span<const Match> ms, const Stored* ss, co
 void ShearKernel::add_forces_grouped(std::span<const Match> reps, const rift::Real* counts, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
+  std::size_t done = 0;
+  if (!terms) {
+    for (; done + rift::lanes::kWidth <= reps.size(); done += rift::lanes::kWidth) {
+      const Match* lane_ms = reps.data() + done;
+      ResultLanes r;
+      const rift::lanes::Mask active = evaluate_lanes(lane_ms, in, c, r);
+      const rift::lanes::Real count = rift::lanes::load(counts + done);
+      const rift::lanes::Vec3 cf0 = count * r.f_shear_c0;
+      const rift::lanes::Vec3 cf2 = count * r.f_shear_c1;
+      for (int lane = 0; lane < rift::lanes::kWidth; ++lane) {
+        if (!active[lane]) continue;
+        const Match& m = lane_ms[lane];
+        const rift::Slot to_vertex_c0 = m.vertex_c0;
+        const rift::Slot to_vertex_c2 = m.vertex_c2;
+        const rift::Slot to_vertex_c1 = m.vertex_c1;
+        const rift::Slot to_vertex_c3 = m.vertex_c3;
+        f[to_vertex_c0] += cf0.lane(lane);
+        f[to_vertex_c2] -= cf0.lane(lane);
+        f[to_vertex_c1] += cf2.lane(lane);
+        f[to_vertex_c3] -= cf2.lane(lane);
+      }
+    }
+  }
   const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {
-    for (std::size_t i = 0; i < reps.size(); ++i) {
+    for (std::size_t i = done; i < reps.size(); ++i) {
       const Match& m = reps[i];
       Result r;
       if (!evaluate<true>(m, in, c, r)) {
@@ -2307,12 +2420,79 @@ inline bool VolumeShearKernel::evaluate(const Match& m, const rift::ForceInput& 
   return true;
 }
 
+inline rift::lanes::Mask VolumeShearKernel::evaluate_lanes(const Match* ms, const rift::ForceInput& in, const Columns& c, ResultLanes& r) const {
+  const rift::lanes::Slots s_orbit012_b0 = rift::lanes::slots(ms, &Match::orbit012_b0);
+  const rift::lanes::Slots s_vertex_b0 = rift::lanes::slots(ms, &Match::vertex_b0);
+  const rift::lanes::Slots s_vertex_s22 = rift::lanes::slots(ms, &Match::vertex_s22);
+  const rift::lanes::Slots s_vertex_b2 = rift::lanes::slots(ms, &Match::vertex_b2);
+  const rift::lanes::Slots s_vertex_s32 = rift::lanes::slots(ms, &Match::vertex_s32);
+  const rift::lanes::Slots s_vertex_b4 = rift::lanes::slots(ms, &Match::vertex_b4);
+  const rift::lanes::Slots s_vertex_s02 = rift::lanes::slots(ms, &Match::vertex_s02);
+  const rift::lanes::Slots s_vertex_b6 = rift::lanes::slots(ms, &Match::vertex_b6);
+  const rift::lanes::Slots s_vertex_s12 = rift::lanes::slots(ms, &Match::vertex_s12);
+  rift::lanes::Mask active = rift::lanes::all_true();
+  const rift::lanes::Real l_k = rift::lanes::as_lanes(rift::lanes::gather(c.vshear_k, s_orbit012_b0));
+  const rift::lanes::Vec3 spring_force_d = rift::lanes::as_lanes((rift::lanes::gather(in.x, s_vertex_s22) - rift::lanes::gather(in.x, s_vertex_b0)));
+  const rift::lanes::Real spring_force_l = rift::lanes::as_lanes(rift::lanes::norm(rift::lanes::as_lanes(spring_force_d)));
+  const rift::lanes::Real spring_force_inv = rift::lanes::as_lanes(rift::lanes::select(rift::lanes::as_lanes((spring_force_l > 0.0)), rift::lanes::as_lanes((1.0 / spring_force_l)), rift::lanes::as_lanes(0.0)));
+  const rift::lanes::Vec3 l_g0 = rift::lanes::as_lanes(((((l_k * (spring_force_l - rift::lanes::gather(c.vshear_rest0, s_orbit012_b0))) + ((p_.damping * rift::lanes::dot(rift::lanes::as_lanes((rift::lanes::gather(in.v, s_vertex_s22) - rift::lanes::gather(in.v, s_vertex_b0))), rift::lanes::as_lanes(spring_force_d))) * spring_force_inv)) * spring_force_inv) * spring_force_d));
+  const rift::lanes::Vec3 spring_force_d_2 = rift::lanes::as_lanes((rift::lanes::gather(in.x, s_vertex_s32) - rift::lanes::gather(in.x, s_vertex_b2)));
+  const rift::lanes::Real spring_force_l_2 = rift::lanes::as_lanes(rift::lanes::norm(rift::lanes::as_lanes(spring_force_d_2)));
+  const rift::lanes::Real spring_force_inv_2 = rift::lanes::as_lanes(rift::lanes::select(rift::lanes::as_lanes((spring_force_l_2 > 0.0)), rift::lanes::as_lanes((1.0 / spring_force_l_2)), rift::lanes::as_lanes(0.0)));
+  const rift::lanes::Vec3 l_g1 = rift::lanes::as_lanes(((((l_k * (spring_force_l_2 - rift::lanes::gather(c.vshear_rest1, s_orbit012_b0))) + ((p_.damping * rift::lanes::dot(rift::lanes::as_lanes((rift::lanes::gather(in.v, s_vertex_s32) - rift::lanes::gather(in.v, s_vertex_b2))), rift::lanes::as_lanes(spring_force_d_2))) * spring_force_inv_2)) * spring_force_inv_2) * spring_force_d_2));
+  const rift::lanes::Vec3 spring_force_d_3 = rift::lanes::as_lanes((rift::lanes::gather(in.x, s_vertex_s02) - rift::lanes::gather(in.x, s_vertex_b4)));
+  const rift::lanes::Real spring_force_l_3 = rift::lanes::as_lanes(rift::lanes::norm(rift::lanes::as_lanes(spring_force_d_3)));
+  const rift::lanes::Real spring_force_inv_3 = rift::lanes::as_lanes(rift::lanes::select(rift::lanes::as_lanes((spring_force_l_3 > 0.0)), rift::lanes::as_lanes((1.0 / spring_force_l_3)), rift::lanes::as_lanes(0.0)));
+  const rift::lanes::Vec3 l_g2 = rift::lanes::as_lanes(((((l_k * (spring_force_l_3 - rift::lanes::gather(c.vshear_rest2, s_orbit012_b0))) + ((p_.damping * rift::lanes::dot(rift::lanes::as_lanes((rift::lanes::gather(in.v, s_vertex_s02) - rift::lanes::gather(in.v, s_vertex_b4))), rift::lanes::as_lanes(spring_force_d_3))) * spring_force_inv_3)) * spring_force_inv_3) * spring_force_d_3));
+  const rift::lanes::Vec3 spring_force_d_4 = rift::lanes::as_lanes((rift::lanes::gather(in.x, s_vertex_s12) - rift::lanes::gather(in.x, s_vertex_b6)));
+  const rift::lanes::Real spring_force_l_4 = rift::lanes::as_lanes(rift::lanes::norm(rift::lanes::as_lanes(spring_force_d_4)));
+  const rift::lanes::Real spring_force_inv_4 = rift::lanes::as_lanes(rift::lanes::select(rift::lanes::as_lanes((spring_force_l_4 > 0.0)), rift::lanes::as_lanes((1.0 / spring_force_l_4)), rift::lanes::as_lanes(0.0)));
+  const rift::lanes::Vec3 l_g3 = rift::lanes::as_lanes(((((l_k * (spring_force_l_4 - rift::lanes::gather(c.vshear_rest3, s_orbit012_b0))) + ((p_.damping * rift::lanes::dot(rift::lanes::as_lanes((rift::lanes::gather(in.v, s_vertex_s12) - rift::lanes::gather(in.v, s_vertex_b6))), rift::lanes::as_lanes(spring_force_d_4))) * spring_force_inv_4)) * spring_force_inv_4) * spring_force_d_4));
+  r.f_volume_shear_b0 = rift::lanes::as_lanes(l_g0);
+  r.f_volume_shear_s22 = rift::lanes::as_lanes((-l_g0));
+  r.f_volume_shear_b2 = rift::lanes::as_lanes(l_g1);
+  r.f_volume_shear_s32 = rift::lanes::as_lanes((-l_g1));
+  r.f_volume_shear_b4 = rift::lanes::as_lanes(l_g2);
+  r.f_volume_shear_s02 = rift::lanes::as_lanes((-l_g2));
+  r.f_volume_shear_b6 = rift::lanes::as_lanes(l_g3);
+  r.f_volume_shear_s12 = rift::lanes::as_lanes((-l_g3));
+  return active;
+}
+
 void VolumeShearKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in_arg, rift::Vec3* f, bool store) {
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
   rift::Vec3* const stored_f_volume_shear = store ? e_f_volume_shear.values().data() : nullptr;
   auto pass = [&]<bool kStore>() {
-    for (std::size_t i = 0; i < ms.size(); ++i) {
+    std::size_t done = 0;
+    if constexpr (!kStore) {
+      for (; done + rift::lanes::kWidth <= ms.size(); done += rift::lanes::kWidth) {
+        const Match* lane_ms = ms.data() + done;
+        ResultLanes r;
+        const rift::lanes::Mask active = evaluate_lanes(lane_ms, in, c, r);
+        for (int lane = 0; lane < rift::lanes::kWidth; ++lane) {
+          if (!active[lane]) continue;
+          const Match& m = lane_ms[lane];
+          const rift::Slot to_vertex_b0 = m.vertex_b0;
+          const rift::Slot to_vertex_s22 = m.vertex_s22;
+          const rift::Slot to_vertex_b2 = m.vertex_b2;
+          const rift::Slot to_vertex_s32 = m.vertex_s32;
+          const rift::Slot to_vertex_b4 = m.vertex_b4;
+          const rift::Slot to_vertex_s02 = m.vertex_s02;
+          const rift::Slot to_vertex_b6 = m.vertex_b6;
+          const rift::Slot to_vertex_s12 = m.vertex_s12;
+          f[to_vertex_b0] += r.f_volume_shear_b0.lane(lane);
+          f[to_vertex_s22] -= r.f_volume_shear_b0.lane(lane);
+          f[to_vertex_b2] += r.f_volume_shear_b2.lane(lane);
+          f[to_vertex_s32] -= r.f_volume_shear_b2.lane(lane);
+          f[to_vertex_b4] += r.f_volume_shear_b4.lane(lane);
+          f[to_vertex_s02] -= r.f_volume_shear_b4.lane(lane);
+          f[to_vertex_b6] += r.f_volume_shear_b6.lane(lane);
+          f[to_vertex_s12] -= r.f_volume_shear_b6.lane(lane);
+        }
+      }
+    }
+    for (std::size_t i = done; i < ms.size(); ++i) {
       const Match& m = ms[i];
       Result r;
       if (!evaluate<true>(m, in, c, r)) {
@@ -2492,8 +2672,41 @@ void VolumeShearKernel::store_terms_of(std::span<const Match> ms, const Stored* 
 void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const rift::Real* counts, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
+  std::size_t done = 0;
+  if (!terms) {
+    for (; done + rift::lanes::kWidth <= reps.size(); done += rift::lanes::kWidth) {
+      const Match* lane_ms = reps.data() + done;
+      ResultLanes r;
+      const rift::lanes::Mask active = evaluate_lanes(lane_ms, in, c, r);
+      const rift::lanes::Real count = rift::lanes::load(counts + done);
+      const rift::lanes::Vec3 cf0 = count * r.f_volume_shear_b0;
+      const rift::lanes::Vec3 cf2 = count * r.f_volume_shear_b2;
+      const rift::lanes::Vec3 cf4 = count * r.f_volume_shear_b4;
+      const rift::lanes::Vec3 cf6 = count * r.f_volume_shear_b6;
+      for (int lane = 0; lane < rift::lanes::kWidth; ++lane) {
+        if (!active[lane]) continue;
+        const Match& m = lane_ms[lane];
+        const rift::Slot to_vertex_b0 = m.vertex_b0;
+        const rift::Slot to_vertex_s22 = m.vertex_s22;
+        const rift::Slot to_vertex_b2 = m.vertex_b2;
+        const rift::Slot to_vertex_s32 = m.vertex_s32;
+        const rift::Slot to_vertex_b4 = m.vertex_b4;
+        const rift::Slot to_vertex_s02 = m.vertex_s02;
+        const rift::Slot to_vertex_b6 = m.vertex_b6;
+        const rift::Slot to_vertex_s12 = m.vertex_s12;
+        f[to_vertex_b0] += cf0.lane(lane);
+        f[to_vertex_s22] -= cf0.lane(lane);
+        f[to_vertex_b2] += cf2.lane(lane);
+        f[to_vertex_s32] -= cf2.lane(lane);
+        f[to_vertex_b4] += cf4.lane(lane);
+        f[to_vertex_s02] -= cf4.lane(lane);
+        f[to_vertex_b6] += cf6.lane(lane);
+        f[to_vertex_s12] -= cf6.lane(lane);
+      }
+    }
+  }
   const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {
-    for (std::size_t i = 0; i < reps.size(); ++i) {
+    for (std::size_t i = done; i < reps.size(); ++i) {
       const Match& m = reps[i];
       Result r;
       if (!evaluate<true>(m, in, c, r)) {

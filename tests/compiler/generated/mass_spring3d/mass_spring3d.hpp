@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rift/core/interrupt.hpp"
+#include "rift/core/lanes.hpp"
 #include "rift/generated/collect_cells.hpp"
 #include "rift/generated/orbit_memo.hpp"
 #include "rift/gmap/gmap.hpp"
@@ -129,6 +130,14 @@ class StretchKernel {
   /// The pattern's darts from one support dart, in pattern order; false when it does not match.
   bool find(const rift::GMap& g, rift::Dart support, rift::Dart* darts) const;
   Columns columns() const;
+  /// What evaluate_lanes gives: each force for rift::lanes::kWidth matches.
+  struct ResultLanes {
+    rift::lanes::Vec3 f_stretch_a;
+    rift::lanes::Vec3 f_stretch_b;
+  };
+  /// The body for ms[0] .. ms[kWidth - 1] at once (rift/core/lanes.hpp): the forces
+  /// evaluate() gives each, to the bit; true in the lanes whose `when`s hold.
+  [[gnu::always_inline]] inline rift::lanes::Mask evaluate_lanes(const Match* ms, const rift::ForceInput& in, const Columns& c, ResultLanes& r) const;
   /// The interaction's body; false where a `when` fails.
   template <bool kForces>
   [[gnu::always_inline]] inline bool evaluate(const Match& m, const rift::ForceInput& in, const Columns& c, Result& r) const;
@@ -247,6 +256,16 @@ class ShearKernel {
   /// The pattern's darts from one support dart, in pattern order; false when it does not match.
   bool find(const rift::GMap& g, rift::Dart support, rift::Dart* darts) const;
   Columns columns() const;
+  /// What evaluate_lanes gives: each force for rift::lanes::kWidth matches.
+  struct ResultLanes {
+    rift::lanes::Vec3 f_shear_c0;
+    rift::lanes::Vec3 f_shear_c2;
+    rift::lanes::Vec3 f_shear_c1;
+    rift::lanes::Vec3 f_shear_c3;
+  };
+  /// The body for ms[0] .. ms[kWidth - 1] at once (rift/core/lanes.hpp): the forces
+  /// evaluate() gives each, to the bit; true in the lanes whose `when`s hold.
+  [[gnu::always_inline]] inline rift::lanes::Mask evaluate_lanes(const Match* ms, const rift::ForceInput& in, const Columns& c, ResultLanes& r) const;
   /// The interaction's body; false where a `when` fails.
   template <bool kForces>
   [[gnu::always_inline]] inline bool evaluate(const Match& m, const rift::ForceInput& in, const Columns& c, Result& r) const;
@@ -382,6 +401,20 @@ class VolumeShearKernel {
   /// The pattern's darts from one support dart, in pattern order; false when it does not match.
   bool find(const rift::GMap& g, rift::Dart support, rift::Dart* darts) const;
   Columns columns() const;
+  /// What evaluate_lanes gives: each force for rift::lanes::kWidth matches.
+  struct ResultLanes {
+    rift::lanes::Vec3 f_volume_shear_b0;
+    rift::lanes::Vec3 f_volume_shear_s22;
+    rift::lanes::Vec3 f_volume_shear_b2;
+    rift::lanes::Vec3 f_volume_shear_s32;
+    rift::lanes::Vec3 f_volume_shear_b4;
+    rift::lanes::Vec3 f_volume_shear_s02;
+    rift::lanes::Vec3 f_volume_shear_b6;
+    rift::lanes::Vec3 f_volume_shear_s12;
+  };
+  /// The body for ms[0] .. ms[kWidth - 1] at once (rift/core/lanes.hpp): the forces
+  /// evaluate() gives each, to the bit; true in the lanes whose `when`s hold.
+  [[gnu::always_inline]] inline rift::lanes::Mask evaluate_lanes(const Match* ms, const rift::ForceInput& in, const Columns& c, ResultLanes& r) const;
   /// The interaction's body; false where a `when` fails.
   template <bool kForces>
   [[gnu::always_inline]] inline bool evaluate(const Match& m, const rift::ForceInput& in, const Columns& c, Result& r) const;
