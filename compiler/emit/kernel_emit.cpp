@@ -697,40 +697,86 @@ std::vector<std::string> write_force_targets(Writer& w, const Kernel& k, const i
   return targets;
 }
 
+// What a lanes pass writes besides the forces it adds (write_lanes_pass).
+struct LanesOutputs {
+  /// Groups' representatives: `count` times each force is added (counts[]),
+  /// and under kTerms each representative's forces go to terms[].
+  bool grouped = false;
+  /// A pass over matches that may store: the statement prefix that keeps the
+  /// stored forces to the storing pass ("if constexpr (kStore) "); empty when
+  /// nothing is stored.
+  std::string if_store;
+};
+
 // The lanes part of a force pass over consecutive matches (evaluate_lanes):
 // `done` counts the matches it evaluated, kWidth at a time, and the scalar
-// loop that follows takes the rest. Each lane's forces are added in the
-// order of the matches, with the scalar loop's arithmetic: `count` times
-// each force where the matches are groups' representatives (counts[]).
-void write_lanes_pass(Writer& w, const Kernel& k, const std::string& ms, bool counted) {
+// loop that follows takes the rest. Each lane's forces are added (and
+// stored, and handed out as terms) in the order of the matches, with the
+// scalar loop's arithmetic and values.
+void write_lanes_pass(Writer& w, const Kernel& k, const std::string& ms, const LanesOutputs& out) {
   const ir::Body& b = k.plan->body;
-  w.open(std::string("for (; done + rift::lanes::kWidth <= ") + ms +
+  const std::string n = std::to_string(b.forces.size());
+  w.open(std::string("for (; lanes_ && done + rift::lanes::kWidth <= ") + ms +
          ".size(); done += rift::lanes::kWidth) {");
   w.line(std::string("const Match* lane_ms = ") + ms + ".data() + done;");
   w.line("ResultLanes r;");
   w.line("const rift::lanes::Mask active = evaluate_lanes(lane_ms, in, c, r);");
-  std::vector<std::string> value(b.forces.size());
+  std::vector<std::string> raw(b.forces.size()), value(b.forces.size());
   for (std::size_t i = 0; i < b.forces.size(); ++i)
-    value[i] = std::string("r.") + force_field(b, b.forces[i]);
-  if (counted) {
+    raw[i] = value[i] = std::string("r.") + force_field(b, b.forces[i]);
+  // As the scalar loops: a force that negates another is subtracted as that
+  // force, except over groups when a later force negates it in turn (it is
+  // then count times itself, cf<i>, as write_add_forces_grouped keeps it).
+  std::vector<bool> subtracts(b.forces.size(), false);
+  for (std::size_t i = 0; i < b.forces.size(); ++i)
+    subtracts[i] = negated_force(b, i) >= 0;
+  if (out.grouped) {
+    for (std::size_t i = 0; i < b.forces.size(); ++i) {
+      if (const int j = negated_force(b, i); j >= 0) subtracts[static_cast<std::size_t>(j)] = false;
+    }
     w.line("const rift::lanes::Real count = rift::lanes::load(counts + done);");
     for (std::size_t i = 0; i < b.forces.size(); ++i) {
-      if (negated_force(b, i) >= 0) continue;  // subtracts the force it negates
+      if (subtracts[i]) continue;
       w.line(std::string("const rift::lanes::Vec3 cf") + std::to_string(i) + " = count * " +
              value[i] + ";");
       value[i] = std::string("cf") + std::to_string(i);
     }
   }
+  auto stored_at = [&](const ir::Force& f) {
+    return std::string("stored_") + f.embedding + "[" + slot_at(k, f.store_slot, "ss[i]") + "]";
+  };
   w.open("for (int lane = 0; lane < rift::lanes::kWidth; ++lane) {");
-  w.line("if (!active[lane]) continue;");
+  w.line("[[maybe_unused]] const std::size_t i = done + static_cast<std::size_t>(lane);");
   w.line("const Match& m = lane_ms[lane];");
+  w.open("if (!active[lane]) {");
+  if (!out.if_store.empty()) {
+    w.open(out.if_store + "{");
+    for (const ir::Force& f : b.forces)
+      w.line(stored_at(f) + " = rift::Vec3::Zero();");
+    w.close();
+  }
+  if (out.grouped) {
+    w.line("if constexpr (kTerms) for (int t = 0; t < " + n + "; ++t) terms[i * " + n +
+           " + t].setZero();");
+  }
+  w.line("continue;");
+  w.close();
   const std::vector<std::string> targets = write_force_targets(w, k, b);
   for (std::size_t i = 0; i < b.forces.size(); ++i) {
-    if (const int j = negated_force(b, i); j >= 0) {
-      w.line(targets[i] + " -= " + value[static_cast<std::size_t>(j)] + ".lane(lane);");
+    if (subtracts[i]) {
+      const auto j = static_cast<std::size_t>(negated_force(b, i));
+      w.line(targets[i] + " -= " + value[j] + ".lane(lane);");
     } else {
       w.line(targets[i] + " += " + value[i] + ".lane(lane);");
     }
+    if (!out.if_store.empty())
+      w.line(out.if_store + stored_at(b.forces[i]) + " = " + raw[i] + ".lane(lane);");
+  }
+  if (out.grouped) {
+    w.open("if constexpr (kTerms) {");
+    for (std::size_t i = 0; i < b.forces.size(); ++i)
+      w.line("terms[i * " + n + " + " + std::to_string(i) + "] = " + raw[i] + ".lane(lane);");
+    w.close();
   }
   w.close();
   w.close();
@@ -784,11 +830,11 @@ void write_add_forces_all(Writer& w, const Kernel& k, bool indexed) {
   }
   const bool lanes = k.lanes && !indexed;
   if (lanes) {
-    // The pass that stores nothing: kWidth matches at a time, then the rest.
+    // kWidth matches at a time, then the rest.
     w.line("std::size_t done = 0;");
-    w.open(two_passes ? "if constexpr (!kStore) {" : "{");
-    write_lanes_pass(w, k, "ms", false);
-    w.close();
+    LanesOutputs out;
+    if (!stores.empty()) out.if_store = if_store;
+    write_lanes_pass(w, k, "ms", out);
   }
   if (indexed) {
     w.open("for (std::size_t i = 0; i < n; ++i) {");
@@ -1177,16 +1223,16 @@ void write_add_forces_grouped(Writer& w, const Kernel& k, bool indexed) {
   w.line(kLocalInput);
   w.line("const Columns c = columns();");
   const bool lanes = k.lanes && !indexed;
-  if (lanes) {
-    // Without terms: kWidth groups at a time, then the rest.
-    w.line("std::size_t done = 0;");
-    w.open("if (!terms) {");
-    write_lanes_pass(w, k, "reps", true);
-    w.close();
-  }
   // The loop twice, with and without terms: a test of `terms` in the loop
   // was two of the stretch spring's 80 instructions.
   w.open("const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {");
+  if (lanes) {
+    // kWidth groups at a time, then the rest.
+    w.line("std::size_t done = 0;");
+    LanesOutputs out;
+    out.grouped = true;
+    write_lanes_pass(w, k, "reps", out);
+  }
   if (indexed) {
     w.open("for (std::size_t i = 0; i < n; ++i) {");
     w.line("const std::uint32_t e = at[i];");
@@ -1377,6 +1423,10 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
     w.line("/// embeddings are then left unbound.");
     w.line("void set_store_forces(bool on) { store_ = on; }");
   }
+  if (k.lanes) {
+    w.line("/// False: the force passes evaluate each match alone, as without lanes (to compare).");
+    w.line("void set_lanes(bool on) { lanes_ = on; }");
+  }
   if (inter.tagged) {
     w.line("/// Before initialise: false for a map never rewritten, whose orbits are then");
     w.line("/// matched only from the darts initialise walks: no tag is kept.");
@@ -1525,6 +1575,7 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
     w.line("bool rewrites_ = true;");
   }
   if (!k.store_only_embeddings.empty()) w.line("bool store_ = true;");
+  if (k.lanes) w.line("bool lanes_ = true;");
   w.close("};");
   w.line("using " + interaction_class(inter.name.text) + " = rift::CachedInteraction<" + k.cls +
          ">;");

@@ -1,10 +1,11 @@
 // Force passes in lanes (rift/core/lanes.hpp, riftc's evaluate_lanes): a
-// pass that stores nothing evaluates kWidth consecutive matches at once, a
-// pass that stores runs the scalar body one match at a time. Both must give
-// the same forces to the bit, whatever the state: a spring of zero length
-// (the `if l > 0` branch that each lane picks for itself), matches left over
-// past the last full set of lanes, grouped passes (counts) and plain ones,
-// 2D and 3D packs, and after a tear reshuffled the matches.
+// pass over consecutive matches evaluates kWidth of them at once, and
+// SimulationSettings::lanes = false evaluates each alone. Both must give the
+// same forces and stored forces to the bit, whatever the state: a spring of
+// zero length (the `if l > 0` branch that each lane picks for itself),
+// matches left over past the last full set of lanes, grouped passes (counts,
+// terms) and plain ones, 2D and 3D packs, and after tears reshuffled the
+// matches.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,27 +22,60 @@
 namespace rift::physics_test {
 namespace {
 
-// Both passes of every interaction, into separate arrays; true when every
-// coordinate has the same bits. `what` names the first difference.
-bool lanes_match_scalar(Simulation& sim, std::string& what) {
-  const ForceInput in{sim.position().values().data(), sim.velocity().values().data()};
-  const std::size_t n = sim.position().values().size();
-  for (const auto& model : sim.force_models()) {
-    std::vector<Vec3> in_lanes(n, Vec3::Zero()), scalar(n, Vec3::Zero());
-    model->add_forces(in, in_lanes.data(), false);
-    model->add_forces(in, scalar.data(), true);
-    for (std::size_t s = 0; s < n; ++s) {
+// Every interaction's force pass, without and with stores, in a simulation
+// with lanes and one without, on the same state: true when every coordinate
+// of the forces and of the stored forces has the same bits. `what` names
+// the first difference.
+bool lanes_match_scalar(Simulation& lanes, Simulation& scalar, std::string& what) {
+  const std::size_t n = lanes.position().values().size();
+  if (scalar.position().values().size() != n ||
+      lanes.force_models().size() != scalar.force_models().size()) {
+    what = "the two simulations differ";
+    return false;
+  }
+  auto same = [&](const std::vector<Vec3>& a, const std::vector<Vec3>& b, const std::string& of) {
+    for (std::size_t s = 0; s < a.size(); ++s) {
       for (int i = 0; i < 3; ++i) {
-        if (!test::same_bits(in_lanes[s][i], scalar[s][i])) {
-          what = model->name() + ", vertex slot " + std::to_string(s) + ", coordinate " +
-                 std::to_string(i) + ": " + std::to_string(in_lanes[s][i]) + " in lanes, " +
-                 std::to_string(scalar[s][i]) + " alone";
+        if (!test::same_bits(a[s][i], b[s][i])) {
+          what = of + ", slot " + std::to_string(s) + ", coordinate " + std::to_string(i) + ": " +
+                 std::to_string(a[s][i]) + " in lanes, " + std::to_string(b[s][i]) + " alone";
           return false;
         }
       }
     }
+    return true;
+  };
+  for (const bool store : {false, true}) {
+    for (std::size_t k = 0; k < lanes.force_models().size(); ++k) {
+      std::vector<Vec3> f_lanes(n, Vec3::Zero()), f_scalar(n, Vec3::Zero());
+      lanes.force_models()[k]->add_forces(
+          {lanes.position().values().data(), lanes.velocity().values().data()}, f_lanes.data(),
+          store);
+      scalar.force_models()[k]->add_forces(
+          {scalar.position().values().data(), scalar.velocity().values().data()}, f_scalar.data(),
+          store);
+      const std::string name = lanes.force_models()[k]->name();
+      if (!same(f_lanes, f_scalar, name + (store ? " (storing pass)" : ""))) return false;
+    }
+  }
+  for (const char* stored : {"f_stretch", "f_shear", "f_volume_shear"}) {
+    const auto a = lanes.map().embedding<Vec3>(stored);
+    const auto b = scalar.map().embedding<Vec3>(stored);
+    if (!a || !b || a.values().empty()) continue;
+    if (!same(a.values(), b.values(), std::string("stored ") + stored)) return false;
   }
   return true;
+}
+
+// A simulation of `mesh` with lanes on or off, the rest alike.
+std::unique_ptr<Simulation> make(const char* mesh, const std::vector<Use>& interactions, bool lanes,
+                                 bool grouped = true, const std::vector<Use>& criteria = {}) {
+  SimSetup setup;
+  setup.settings.lanes = lanes;
+  setup.settings.group_interactions = grouped;
+  setup.interactions = interactions;
+  setup.criteria = criteria;
+  return simulate(load_map(mesh), setup);
 }
 
 // Positions rounded to a coarse lattice: many vertices land on their
@@ -73,14 +107,13 @@ std::vector<Body> bodies() {
 TEST(Lanes, ForcesInLanesAreTheScalarForcesToTheBit) {
   for (const Body& body : bodies()) {
     for (const bool grouped : {true, false}) {
-      SimSetup setup;
-      setup.settings.group_interactions = grouped;
-      setup.interactions = body.interactions;
-      auto sim = simulate(load_map(body.mesh), setup);
+      auto lanes = make(body.mesh, body.interactions, true, grouped);
+      auto scalar = make(body.mesh, body.interactions, false, grouped);
       for (unsigned seed = 1; seed <= 4; ++seed) {
-        deform(*sim, seed, 0.3);
+        deform(*lanes, seed, 0.3);
+        deform(*scalar, seed, 0.3);
         std::string what;
-        EXPECT_TRUE(lanes_match_scalar(*sim, what))
+        EXPECT_TRUE(lanes_match_scalar(*lanes, *scalar, what))
             << body.mesh << (grouped ? " grouped" : " plain") << ", seed " << seed << ": " << what;
       }
     }
@@ -89,53 +122,57 @@ TEST(Lanes, ForcesInLanesAreTheScalarForcesToTheBit) {
 
 TEST(Lanes, ZeroLengthSpringsInSomeLanesOnly) {
   for (const Body& body : bodies()) {
-    SimSetup setup;
-    setup.interactions = body.interactions;
-    auto sim = simulate(load_map(body.mesh), setup);
-    deform(*sim, 7, 0.2);
-    collapse(*sim, 0.5);
+    auto lanes = make(body.mesh, body.interactions, true);
+    auto scalar = make(body.mesh, body.interactions, false);
+    for (Simulation* sim : {lanes.get(), scalar.get()}) {
+      deform(*sim, 7, 0.2);
+      collapse(*sim, 0.5);
+    }
     // The premise: vertices on top of one another, hence springs of length 0
     // next to springs that are not.
-    std::vector<Vec3> points = sim->position().values();
+    std::vector<Vec3> points = lanes->position().values();
     std::sort(points.begin(), points.end(), [](const Vec3& a, const Vec3& b) {
       return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
     });
     const auto distinct = std::unique(points.begin(), points.end()) - points.begin();
     ASSERT_LT(distinct, static_cast<std::ptrdiff_t>(points.size())) << body.mesh;
     ASSERT_GT(distinct, 1) << body.mesh;
-    const std::vector<Vec3> f = internal_forces(*sim);
     std::string what;
-    EXPECT_TRUE(lanes_match_scalar(*sim, what)) << body.mesh << ": " << what;
+    EXPECT_TRUE(lanes_match_scalar(*lanes, *scalar, what)) << body.mesh << ": " << what;
     bool finite = true;
-    for (const Vec3& x : f)
+    for (const Vec3& x : internal_forces(*lanes))
       finite = finite && x.allFinite();
     EXPECT_TRUE(finite) << body.mesh << ": a zero-length spring gave a non-finite force";
   }
 }
 
 TEST(Lanes, AfterTearsReshuffledTheMatches) {
-  SimSetup setup;
-  setup.interactions = paper_cloth_springs();
-  setup.criteria = {{"spring_split", {{"threshold", 1e-9}}}};
-  auto sim = simulate(load_map("grid:quad:9x7"), setup);
-  deform(*sim, 3, 0.1);
-  std::vector<Vec3> f = internal_forces(*sim);
-  const ForceInput in{sim->position().values().data(), sim->velocity().values().data()};
-  for (const auto& m : sim->force_models())
-    m->add_forces(in, f.data(), true);  // the stored forces the criterion reads
+  const std::vector<Use> split = {{"spring_split", {{"threshold", 1e-9}}}};
+  auto lanes = make("grid:quad:9x7", paper_cloth_springs(), true, true, split);
+  auto scalar = make("grid:quad:9x7", paper_cloth_springs(), false, true, split);
   std::vector<TearCandidate> candidates;
-  sim->criteria()[0]->collect(sim->map(), candidates);
+  for (Simulation* sim : {lanes.get(), scalar.get()}) {
+    deform(*sim, 3, 0.1);
+    std::vector<Vec3> f(sim->position().values().size(), Vec3::Zero());
+    const ForceInput in{sim->position().values().data(), sim->velocity().values().data()};
+    for (const auto& m : sim->force_models())
+      m->add_forces(in, f.data(), true);  // the stored forces the criterion reads
+  }
+  lanes->criteria()[0]->collect(lanes->map(), candidates);
   ASSERT_GT(candidates.size(), 10u);
   std::vector<Dart> touched;
   int tears = 0;
   for (std::size_t k = 0; k < candidates.size() && tears < 10; k += 7) {
-    if (tear_at(*sim, candidates[k], touched)) ++tears;
+    const bool torn = tear_at(*lanes, candidates[k], touched);
+    ASSERT_EQ(torn, tear_at(*scalar, candidates[k], touched));
+    if (torn) ++tears;
   }
   ASSERT_GT(tears, 0);
   for (unsigned seed = 11; seed <= 13; ++seed) {
-    deform(*sim, seed, 0.1);
+    deform(*lanes, seed, 0.1);
+    deform(*scalar, seed, 0.1);
     std::string what;
-    EXPECT_TRUE(lanes_match_scalar(*sim, what)) << "seed " << seed << ": " << what;
+    EXPECT_TRUE(lanes_match_scalar(*lanes, *scalar, what)) << "seed " << seed << ": " << what;
   }
 }
 

@@ -292,6 +292,9 @@ class CachedInteraction final : public ForceModel {
   /// Before initialise: evaluate identical matches once (the default) or
   /// every match on its own.
   void set_grouping(bool on) override { group_requested_ = on; }
+  void set_lanes(bool on) override {
+    if constexpr (requires(Kernel & k) { k.set_lanes(true); }) kernel_.set_lanes(on);
+  }
   /// Before initialise (which binds the stored embeddings or not).
   void set_store_forces(bool on) override { store_forces_ = on; }
   bool stores_forces() const { return store_forces_; }

@@ -75,6 +75,9 @@ class ForceModel {
   /// Before initialise: evaluate identical matches once (true, the default
   /// of interactions that can) or each on its own (false).
   virtual void set_grouping(bool /*on*/) {}
+  /// Evaluate several matches at once where the kernel can (true, the
+  /// default; rift/core/lanes.hpp) or each on its own (false): the same bits.
+  virtual void set_lanes(bool /*on*/) {}
 
   // --- Jacobians, for implicit integrators (docs/physics.md, implicit step) ---
   //

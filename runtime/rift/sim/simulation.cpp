@@ -80,6 +80,7 @@ void Simulation::initialise(SetupPhases* phases) {
   if (phases) phases->end("vertex masses");
   for (auto& model : models_) {
     model->set_grouping(settings_.group_interactions);
+    model->set_lanes(settings_.lanes);
     model->set_rewrites(settings_.rewrites);
     model->set_jacobians_used(is_implicit(settings_.integrator));
     model->initialise(map_);

@@ -42,6 +42,10 @@ struct SimulationSettings {
   /// Evaluate identical matches of an interaction once (same forces to
   /// rounding, rift/sim/match_groups.hpp); false evaluates each match.
   bool group_interactions = true;
+  /// Evaluate rift::lanes::kWidth matches at once where riftc gave an
+  /// interaction a lanes form (the same forces to the bit,
+  /// rift/core/lanes.hpp); false runs the scalar body on each match, to compare.
+  bool lanes = true;
   /// The map may be rewritten after initialise (criteria, or a caller's own
   /// rewrites announced by on_topology_changed). false, for a scene without
   /// criteria: the interactions keep none of what only re-matching reads

@@ -71,6 +71,8 @@ class StretchKernel {
   /// Before initialise: false when nothing reads the stored forces, whose
   /// embeddings are then left unbound.
   void set_store_forces(bool on) { store_ = on; }
+  /// False: the force passes evaluate each match alone, as without lanes (to compare).
+  void set_lanes(bool on) { lanes_ = on; }
   /// Fills s too unless it is null.
   bool match(const rift::GMap& g, rift::Dart support, Match& m, Stored* s = nullptr) const;
   /// The same from the pattern's darts as find gave them.
@@ -149,6 +151,7 @@ class StretchKernel {
   rift::Embedding<rift::Real> e_stretch_k;
   rift::Embedding<rift::Real> e_stretch_rest;
   bool store_ = true;
+  bool lanes_ = true;
 };
 using StretchInteraction = rift::CachedInteraction<StretchKernel>;
 
@@ -194,6 +197,8 @@ class ShearKernel {
   /// Before initialise: false when nothing reads the stored forces, whose
   /// embeddings are then left unbound.
   void set_store_forces(bool on) { store_ = on; }
+  /// False: the force passes evaluate each match alone, as without lanes (to compare).
+  void set_lanes(bool on) { lanes_ = on; }
   /// Before initialise: false for a map never rewritten, whose orbits are then
   /// matched only from the darts initialise walks: no tag is kept.
   void set_rewrites(bool on) { rewrites_ = on; }
@@ -280,6 +285,7 @@ class ShearKernel {
   rift::Embedding<rift::Bool> tag_;  ///< unbound when !rewrites_
   bool rewrites_ = true;
   bool store_ = true;
+  bool lanes_ = true;
 };
 using ShearInteraction = rift::CachedInteraction<ShearKernel>;
 
@@ -333,6 +339,8 @@ class VolumeShearKernel {
   /// Before initialise: false when nothing reads the stored forces, whose
   /// embeddings are then left unbound.
   void set_store_forces(bool on) { store_ = on; }
+  /// False: the force passes evaluate each match alone, as without lanes (to compare).
+  void set_lanes(bool on) { lanes_ = on; }
   /// Before initialise: false for a map never rewritten, whose orbits are then
   /// matched only from the darts initialise walks: no tag is kept.
   void set_rewrites(bool on) { rewrites_ = on; }
@@ -431,6 +439,7 @@ class VolumeShearKernel {
   rift::Embedding<rift::Bool> tag_;  ///< unbound when !rewrites_
   bool rewrites_ = true;
   bool store_ = true;
+  bool lanes_ = true;
 };
 using VolumeShearInteraction = rift::CachedInteraction<VolumeShearKernel>;
 
