@@ -716,7 +716,10 @@ struct LanesOutputs {
 void write_lanes_pass(Writer& w, const Kernel& k, const std::string& ms, const LanesOutputs& out) {
   const ir::Body& b = k.plan->body;
   const std::string n = std::to_string(b.forces.size());
-  w.open(std::string("for (; lanes_ && done + rift::lanes::kWidth <= ") + ms +
+  // lanes_ is read once: in the loop's condition, every store to f (which may
+  // alias it) would make the compiler read it again.
+  w.open("if (lanes_) {");
+  w.open(std::string("for (; done + rift::lanes::kWidth <= ") + ms +
          ".size(); done += rift::lanes::kWidth) {");
   w.line(std::string("const Match* lane_ms = ") + ms + ".data() + done;");
   w.line("ResultLanes r;");
@@ -756,8 +759,7 @@ void write_lanes_pass(Writer& w, const Kernel& k, const std::string& ms, const L
     w.close();
   }
   if (out.grouped) {
-    w.line("if constexpr (kTerms) for (int t = 0; t < " + n + "; ++t) terms[i * " + n +
-           " + t].setZero();");
+    w.line("if (terms) for (int t = 0; t < " + n + "; ++t) terms[i * " + n + " + t].setZero();");
   }
   w.line("continue;");
   w.close();
@@ -773,11 +775,12 @@ void write_lanes_pass(Writer& w, const Kernel& k, const std::string& ms, const L
       w.line(out.if_store + stored_at(b.forces[i]) + " = " + raw[i] + ".lane(lane);");
   }
   if (out.grouped) {
-    w.open("if constexpr (kTerms) {");
+    w.open("if (terms) {");
     for (std::size_t i = 0; i < b.forces.size(); ++i)
       w.line("terms[i * " + n + " + " + std::to_string(i) + "] = " + raw[i] + ".lane(lane);");
     w.close();
   }
+  w.close();
   w.close();
   w.close();
 }
@@ -1223,16 +1226,19 @@ void write_add_forces_grouped(Writer& w, const Kernel& k, bool indexed) {
   w.line(kLocalInput);
   w.line("const Columns c = columns();");
   const bool lanes = k.lanes && !indexed;
-  // The loop twice, with and without terms: a test of `terms` in the loop
-  // was two of the stretch spring's 80 instructions.
-  w.open("const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {");
   if (lanes) {
-    // kWidth groups at a time, then the rest.
+    // kWidth groups at a time, then the rest. Outside the loops below, whose
+    // two instantiations it would make too large to inline (the closure's
+    // captures are then read again after every store); `terms` is tested
+    // once per lane, a test per kWidth groups.
     w.line("std::size_t done = 0;");
     LanesOutputs out;
     out.grouped = true;
     write_lanes_pass(w, k, "reps", out);
   }
+  // The loop twice, with and without terms: a test of `terms` in the loop
+  // was two of the stretch spring's 80 instructions.
+  w.open("const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {");
   if (indexed) {
     w.open("for (std::size_t i = 0; i < n; ++i) {");
     w.line("const std::uint32_t e = at[i];");

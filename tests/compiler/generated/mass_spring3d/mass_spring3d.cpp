@@ -264,26 +264,28 @@ void StretchKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, 
   rift::Vec3* const stored_f_stretch = store ? e_f_stretch.values().data() : nullptr;
   auto pass = [&]<bool kStore>() {
     std::size_t done = 0;
-    for (; lanes_ && done + rift::lanes::kWidth <= ms.size(); done += rift::lanes::kWidth) {
-      const Match* lane_ms = ms.data() + done;
-      ResultLanes r;
-      const rift::lanes::Mask active = evaluate_lanes(lane_ms, in, c, r);
-      for (int lane = 0; lane < rift::lanes::kWidth; ++lane) {
-        [[maybe_unused]] const std::size_t i = done + static_cast<std::size_t>(lane);
-        const Match& m = lane_ms[lane];
-        if (!active[lane]) {
-          if constexpr (kStore) {
-            stored_f_stretch[ss[i].dart_a] = rift::Vec3::Zero();
-            stored_f_stretch[ss[i].dart_b] = rift::Vec3::Zero();
+    if (lanes_) {
+      for (; done + rift::lanes::kWidth <= ms.size(); done += rift::lanes::kWidth) {
+        const Match* lane_ms = ms.data() + done;
+        ResultLanes r;
+        const rift::lanes::Mask active = evaluate_lanes(lane_ms, in, c, r);
+        for (int lane = 0; lane < rift::lanes::kWidth; ++lane) {
+          [[maybe_unused]] const std::size_t i = done + static_cast<std::size_t>(lane);
+          const Match& m = lane_ms[lane];
+          if (!active[lane]) {
+            if constexpr (kStore) {
+              stored_f_stretch[ss[i].dart_a] = rift::Vec3::Zero();
+              stored_f_stretch[ss[i].dart_b] = rift::Vec3::Zero();
+            }
+            continue;
           }
-          continue;
+          const rift::Slot to_vertex_a = m.vertex_a;
+          const rift::Slot to_vertex_b = m.vertex_b;
+          f[to_vertex_a] += r.f_stretch_a.lane(lane);
+          if constexpr (kStore) stored_f_stretch[ss[i].dart_a] = r.f_stretch_a.lane(lane);
+          f[to_vertex_b] -= r.f_stretch_a.lane(lane);
+          if constexpr (kStore) stored_f_stretch[ss[i].dart_b] = r.f_stretch_b.lane(lane);
         }
-        const rift::Slot to_vertex_a = m.vertex_a;
-        const rift::Slot to_vertex_b = m.vertex_b;
-        f[to_vertex_a] += r.f_stretch_a.lane(lane);
-        if constexpr (kStore) stored_f_stretch[ss[i].dart_a] = r.f_stretch_a.lane(lane);
-        f[to_vertex_b] -= r.f_stretch_a.lane(lane);
-        if constexpr (kStore) stored_f_stretch[ss[i].dart_b] = r.f_stretch_b.lane(lane);
       }
     }
     for (std::size_t i = done; i < ms.size(); ++i) {
@@ -385,9 +387,9 @@ void StretchKernel::store_terms_of(std::span<const Match> ms, const Stored* ss, 
 void StretchKernel::add_forces_grouped(std::span<const Match> reps, const rift::Real* counts, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
-  const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {
-    std::size_t done = 0;
-    for (; lanes_ && done + rift::lanes::kWidth <= reps.size(); done += rift::lanes::kWidth) {
+  std::size_t done = 0;
+  if (lanes_) {
+    for (; done + rift::lanes::kWidth <= reps.size(); done += rift::lanes::kWidth) {
       const Match* lane_ms = reps.data() + done;
       ResultLanes r;
       const rift::lanes::Mask active = evaluate_lanes(lane_ms, in, c, r);
@@ -397,19 +399,21 @@ void StretchKernel::add_forces_grouped(std::span<const Match> reps, const rift::
         [[maybe_unused]] const std::size_t i = done + static_cast<std::size_t>(lane);
         const Match& m = lane_ms[lane];
         if (!active[lane]) {
-          if constexpr (kTerms) for (int t = 0; t < 2; ++t) terms[i * 2 + t].setZero();
+          if (terms) for (int t = 0; t < 2; ++t) terms[i * 2 + t].setZero();
           continue;
         }
         const rift::Slot to_vertex_a = m.vertex_a;
         const rift::Slot to_vertex_b = m.vertex_b;
         f[to_vertex_a] += cf0.lane(lane);
         f[to_vertex_b] -= cf0.lane(lane);
-        if constexpr (kTerms) {
+        if (terms) {
           terms[i * 2 + 0] = r.f_stretch_a.lane(lane);
           terms[i * 2 + 1] = r.f_stretch_b.lane(lane);
         }
       }
     }
+  }
+  const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {
     for (std::size_t i = done; i < reps.size(); ++i) {
       const Match& m = reps[i];
       Result r;
@@ -705,34 +709,36 @@ void ShearKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, co
   rift::Vec3* const stored_f_shear = store ? e_f_shear.values().data() : nullptr;
   auto pass = [&]<bool kStore>() {
     std::size_t done = 0;
-    for (; lanes_ && done + rift::lanes::kWidth <= ms.size(); done += rift::lanes::kWidth) {
-      const Match* lane_ms = ms.data() + done;
-      ResultLanes r;
-      const rift::lanes::Mask active = evaluate_lanes(lane_ms, in, c, r);
-      for (int lane = 0; lane < rift::lanes::kWidth; ++lane) {
-        [[maybe_unused]] const std::size_t i = done + static_cast<std::size_t>(lane);
-        const Match& m = lane_ms[lane];
-        if (!active[lane]) {
-          if constexpr (kStore) {
-            stored_f_shear[ss[i].orbit1_c0] = rift::Vec3::Zero();
-            stored_f_shear[ss[i].orbit1_c2] = rift::Vec3::Zero();
-            stored_f_shear[ss[i].orbit1_c1] = rift::Vec3::Zero();
-            stored_f_shear[ss[i].orbit1_c3] = rift::Vec3::Zero();
+    if (lanes_) {
+      for (; done + rift::lanes::kWidth <= ms.size(); done += rift::lanes::kWidth) {
+        const Match* lane_ms = ms.data() + done;
+        ResultLanes r;
+        const rift::lanes::Mask active = evaluate_lanes(lane_ms, in, c, r);
+        for (int lane = 0; lane < rift::lanes::kWidth; ++lane) {
+          [[maybe_unused]] const std::size_t i = done + static_cast<std::size_t>(lane);
+          const Match& m = lane_ms[lane];
+          if (!active[lane]) {
+            if constexpr (kStore) {
+              stored_f_shear[ss[i].orbit1_c0] = rift::Vec3::Zero();
+              stored_f_shear[ss[i].orbit1_c2] = rift::Vec3::Zero();
+              stored_f_shear[ss[i].orbit1_c1] = rift::Vec3::Zero();
+              stored_f_shear[ss[i].orbit1_c3] = rift::Vec3::Zero();
+            }
+            continue;
           }
-          continue;
+          const rift::Slot to_vertex_c0 = m.vertex_c0;
+          const rift::Slot to_vertex_c2 = m.vertex_c2;
+          const rift::Slot to_vertex_c1 = m.vertex_c1;
+          const rift::Slot to_vertex_c3 = m.vertex_c3;
+          f[to_vertex_c0] += r.f_shear_c0.lane(lane);
+          if constexpr (kStore) stored_f_shear[ss[i].orbit1_c0] = r.f_shear_c0.lane(lane);
+          f[to_vertex_c2] -= r.f_shear_c0.lane(lane);
+          if constexpr (kStore) stored_f_shear[ss[i].orbit1_c2] = r.f_shear_c2.lane(lane);
+          f[to_vertex_c1] += r.f_shear_c1.lane(lane);
+          if constexpr (kStore) stored_f_shear[ss[i].orbit1_c1] = r.f_shear_c1.lane(lane);
+          f[to_vertex_c3] -= r.f_shear_c1.lane(lane);
+          if constexpr (kStore) stored_f_shear[ss[i].orbit1_c3] = r.f_shear_c3.lane(lane);
         }
-        const rift::Slot to_vertex_c0 = m.vertex_c0;
-        const rift::Slot to_vertex_c2 = m.vertex_c2;
-        const rift::Slot to_vertex_c1 = m.vertex_c1;
-        const rift::Slot to_vertex_c3 = m.vertex_c3;
-        f[to_vertex_c0] += r.f_shear_c0.lane(lane);
-        if constexpr (kStore) stored_f_shear[ss[i].orbit1_c0] = r.f_shear_c0.lane(lane);
-        f[to_vertex_c2] -= r.f_shear_c0.lane(lane);
-        if constexpr (kStore) stored_f_shear[ss[i].orbit1_c2] = r.f_shear_c2.lane(lane);
-        f[to_vertex_c1] += r.f_shear_c1.lane(lane);
-        if constexpr (kStore) stored_f_shear[ss[i].orbit1_c1] = r.f_shear_c1.lane(lane);
-        f[to_vertex_c3] -= r.f_shear_c1.lane(lane);
-        if constexpr (kStore) stored_f_shear[ss[i].orbit1_c3] = r.f_shear_c3.lane(lane);
       }
     }
     for (std::size_t i = done; i < ms.size(); ++i) {
@@ -861,9 +867,9 @@ void ShearKernel::store_terms_of(std::span<const Match> ms, const Stored* ss, co
 void ShearKernel::add_forces_grouped(std::span<const Match> reps, const rift::Real* counts, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
-  const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {
-    std::size_t done = 0;
-    for (; lanes_ && done + rift::lanes::kWidth <= reps.size(); done += rift::lanes::kWidth) {
+  std::size_t done = 0;
+  if (lanes_) {
+    for (; done + rift::lanes::kWidth <= reps.size(); done += rift::lanes::kWidth) {
       const Match* lane_ms = reps.data() + done;
       ResultLanes r;
       const rift::lanes::Mask active = evaluate_lanes(lane_ms, in, c, r);
@@ -874,7 +880,7 @@ void ShearKernel::add_forces_grouped(std::span<const Match> reps, const rift::Re
         [[maybe_unused]] const std::size_t i = done + static_cast<std::size_t>(lane);
         const Match& m = lane_ms[lane];
         if (!active[lane]) {
-          if constexpr (kTerms) for (int t = 0; t < 4; ++t) terms[i * 4 + t].setZero();
+          if (terms) for (int t = 0; t < 4; ++t) terms[i * 4 + t].setZero();
           continue;
         }
         const rift::Slot to_vertex_c0 = m.vertex_c0;
@@ -885,7 +891,7 @@ void ShearKernel::add_forces_grouped(std::span<const Match> reps, const rift::Re
         f[to_vertex_c2] -= cf0.lane(lane);
         f[to_vertex_c1] += cf2.lane(lane);
         f[to_vertex_c3] -= cf2.lane(lane);
-        if constexpr (kTerms) {
+        if (terms) {
           terms[i * 4 + 0] = r.f_shear_c0.lane(lane);
           terms[i * 4 + 1] = r.f_shear_c2.lane(lane);
           terms[i * 4 + 2] = r.f_shear_c1.lane(lane);
@@ -893,6 +899,8 @@ void ShearKernel::add_forces_grouped(std::span<const Match> reps, const rift::Re
         }
       }
     }
+  }
+  const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {
     for (std::size_t i = done; i < reps.size(); ++i) {
       const Match& m = reps[i];
       Result r;
@@ -2497,50 +2505,52 @@ void VolumeShearKernel::add_forces_all(std::span<const Match> ms, const Stored* 
   rift::Vec3* const stored_f_volume_shear = store ? e_f_volume_shear.values().data() : nullptr;
   auto pass = [&]<bool kStore>() {
     std::size_t done = 0;
-    for (; lanes_ && done + rift::lanes::kWidth <= ms.size(); done += rift::lanes::kWidth) {
-      const Match* lane_ms = ms.data() + done;
-      ResultLanes r;
-      const rift::lanes::Mask active = evaluate_lanes(lane_ms, in, c, r);
-      for (int lane = 0; lane < rift::lanes::kWidth; ++lane) {
-        [[maybe_unused]] const std::size_t i = done + static_cast<std::size_t>(lane);
-        const Match& m = lane_ms[lane];
-        if (!active[lane]) {
-          if constexpr (kStore) {
-            stored_f_volume_shear[ss[i].orbit12_b0] = rift::Vec3::Zero();
-            stored_f_volume_shear[ss[i].orbit12_s22] = rift::Vec3::Zero();
-            stored_f_volume_shear[ss[i].orbit12_b2] = rift::Vec3::Zero();
-            stored_f_volume_shear[ss[i].orbit12_s32] = rift::Vec3::Zero();
-            stored_f_volume_shear[ss[i].orbit12_b4] = rift::Vec3::Zero();
-            stored_f_volume_shear[ss[i].orbit12_s02] = rift::Vec3::Zero();
-            stored_f_volume_shear[ss[i].orbit12_b6] = rift::Vec3::Zero();
-            stored_f_volume_shear[ss[i].orbit12_s12] = rift::Vec3::Zero();
+    if (lanes_) {
+      for (; done + rift::lanes::kWidth <= ms.size(); done += rift::lanes::kWidth) {
+        const Match* lane_ms = ms.data() + done;
+        ResultLanes r;
+        const rift::lanes::Mask active = evaluate_lanes(lane_ms, in, c, r);
+        for (int lane = 0; lane < rift::lanes::kWidth; ++lane) {
+          [[maybe_unused]] const std::size_t i = done + static_cast<std::size_t>(lane);
+          const Match& m = lane_ms[lane];
+          if (!active[lane]) {
+            if constexpr (kStore) {
+              stored_f_volume_shear[ss[i].orbit12_b0] = rift::Vec3::Zero();
+              stored_f_volume_shear[ss[i].orbit12_s22] = rift::Vec3::Zero();
+              stored_f_volume_shear[ss[i].orbit12_b2] = rift::Vec3::Zero();
+              stored_f_volume_shear[ss[i].orbit12_s32] = rift::Vec3::Zero();
+              stored_f_volume_shear[ss[i].orbit12_b4] = rift::Vec3::Zero();
+              stored_f_volume_shear[ss[i].orbit12_s02] = rift::Vec3::Zero();
+              stored_f_volume_shear[ss[i].orbit12_b6] = rift::Vec3::Zero();
+              stored_f_volume_shear[ss[i].orbit12_s12] = rift::Vec3::Zero();
+            }
+            continue;
           }
-          continue;
+          const rift::Slot to_vertex_b0 = m.vertex_b0;
+          const rift::Slot to_vertex_s22 = m.vertex_s22;
+          const rift::Slot to_vertex_b2 = m.vertex_b2;
+          const rift::Slot to_vertex_s32 = m.vertex_s32;
+          const rift::Slot to_vertex_b4 = m.vertex_b4;
+          const rift::Slot to_vertex_s02 = m.vertex_s02;
+          const rift::Slot to_vertex_b6 = m.vertex_b6;
+          const rift::Slot to_vertex_s12 = m.vertex_s12;
+          f[to_vertex_b0] += r.f_volume_shear_b0.lane(lane);
+          if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_b0] = r.f_volume_shear_b0.lane(lane);
+          f[to_vertex_s22] -= r.f_volume_shear_b0.lane(lane);
+          if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s22] = r.f_volume_shear_s22.lane(lane);
+          f[to_vertex_b2] += r.f_volume_shear_b2.lane(lane);
+          if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_b2] = r.f_volume_shear_b2.lane(lane);
+          f[to_vertex_s32] -= r.f_volume_shear_b2.lane(lane);
+          if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s32] = r.f_volume_shear_s32.lane(lane);
+          f[to_vertex_b4] += r.f_volume_shear_b4.lane(lane);
+          if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_b4] = r.f_volume_shear_b4.lane(lane);
+          f[to_vertex_s02] -= r.f_volume_shear_b4.lane(lane);
+          if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s02] = r.f_volume_shear_s02.lane(lane);
+          f[to_vertex_b6] += r.f_volume_shear_b6.lane(lane);
+          if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_b6] = r.f_volume_shear_b6.lane(lane);
+          f[to_vertex_s12] -= r.f_volume_shear_b6.lane(lane);
+          if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s12] = r.f_volume_shear_s12.lane(lane);
         }
-        const rift::Slot to_vertex_b0 = m.vertex_b0;
-        const rift::Slot to_vertex_s22 = m.vertex_s22;
-        const rift::Slot to_vertex_b2 = m.vertex_b2;
-        const rift::Slot to_vertex_s32 = m.vertex_s32;
-        const rift::Slot to_vertex_b4 = m.vertex_b4;
-        const rift::Slot to_vertex_s02 = m.vertex_s02;
-        const rift::Slot to_vertex_b6 = m.vertex_b6;
-        const rift::Slot to_vertex_s12 = m.vertex_s12;
-        f[to_vertex_b0] += r.f_volume_shear_b0.lane(lane);
-        if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_b0] = r.f_volume_shear_b0.lane(lane);
-        f[to_vertex_s22] -= r.f_volume_shear_b0.lane(lane);
-        if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s22] = r.f_volume_shear_s22.lane(lane);
-        f[to_vertex_b2] += r.f_volume_shear_b2.lane(lane);
-        if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_b2] = r.f_volume_shear_b2.lane(lane);
-        f[to_vertex_s32] -= r.f_volume_shear_b2.lane(lane);
-        if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s32] = r.f_volume_shear_s32.lane(lane);
-        f[to_vertex_b4] += r.f_volume_shear_b4.lane(lane);
-        if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_b4] = r.f_volume_shear_b4.lane(lane);
-        f[to_vertex_s02] -= r.f_volume_shear_b4.lane(lane);
-        if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s02] = r.f_volume_shear_s02.lane(lane);
-        f[to_vertex_b6] += r.f_volume_shear_b6.lane(lane);
-        if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_b6] = r.f_volume_shear_b6.lane(lane);
-        f[to_vertex_s12] -= r.f_volume_shear_b6.lane(lane);
-        if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s12] = r.f_volume_shear_s12.lane(lane);
       }
     }
     for (std::size_t i = done; i < ms.size(); ++i) {
@@ -2723,9 +2733,9 @@ void VolumeShearKernel::store_terms_of(std::span<const Match> ms, const Stored* 
 void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const rift::Real* counts, const rift::ForceInput& in_arg, rift::Vec3* f, rift::Vec3* terms) {
   const rift::ForceInput in = in_arg;  // a local: see the targets below
   const Columns c = columns();
-  const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {
-    std::size_t done = 0;
-    for (; lanes_ && done + rift::lanes::kWidth <= reps.size(); done += rift::lanes::kWidth) {
+  std::size_t done = 0;
+  if (lanes_) {
+    for (; done + rift::lanes::kWidth <= reps.size(); done += rift::lanes::kWidth) {
       const Match* lane_ms = reps.data() + done;
       ResultLanes r;
       const rift::lanes::Mask active = evaluate_lanes(lane_ms, in, c, r);
@@ -2738,7 +2748,7 @@ void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const ri
         [[maybe_unused]] const std::size_t i = done + static_cast<std::size_t>(lane);
         const Match& m = lane_ms[lane];
         if (!active[lane]) {
-          if constexpr (kTerms) for (int t = 0; t < 8; ++t) terms[i * 8 + t].setZero();
+          if (terms) for (int t = 0; t < 8; ++t) terms[i * 8 + t].setZero();
           continue;
         }
         const rift::Slot to_vertex_b0 = m.vertex_b0;
@@ -2757,7 +2767,7 @@ void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const ri
         f[to_vertex_s02] -= cf4.lane(lane);
         f[to_vertex_b6] += cf6.lane(lane);
         f[to_vertex_s12] -= cf6.lane(lane);
-        if constexpr (kTerms) {
+        if (terms) {
           terms[i * 8 + 0] = r.f_volume_shear_b0.lane(lane);
           terms[i * 8 + 1] = r.f_volume_shear_s22.lane(lane);
           terms[i * 8 + 2] = r.f_volume_shear_b2.lane(lane);
@@ -2769,6 +2779,8 @@ void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const ri
         }
       }
     }
+  }
+  const auto loop = [&]<bool kTerms>(std::bool_constant<kTerms>) {
     for (std::size_t i = done; i < reps.size(); ++i) {
       const Match& m = reps[i];
       Result r;
