@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "emit/lanes.hpp"
 #include "emit/names.hpp"
 
 namespace rift::emit {
@@ -144,10 +145,7 @@ void BodyRenderer::precompute(ExprId id) {
 }
 
 std::string BodyRenderer::value_type(Type t) const {
-  if (!ctx_.lanes) return cpp_type(t);
-  if (t == Type::Vec3) return "rift::lanes::Vec3";
-  if (t == Type::Bool) return "rift::lanes::Mask";
-  return "rift::lanes::Real";  // the only other type a lanes body has
+  return ctx_.lanes ? lanes_type(t) : cpp_type(t);
 }
 
 std::string BodyRenderer::local_statement(ExprId id, const std::string& name,

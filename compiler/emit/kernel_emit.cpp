@@ -648,14 +648,10 @@ void write_evaluate_lanes(Writer& w, const Kernel& k) {
     const auto i = static_cast<std::size_t>(s.let);
     if (!wanted[i]) continue;
     const ir::Let& l = b.lets[i];
-    const ir::Type t = b.graph[l.value].type;
-    const std::string type = t == ir::Type::Vec3   ? "rift::lanes::Vec3"
-                             : t == ir::Type::Bool ? "rift::lanes::Mask"
-                                                   : "rift::lanes::Real";
-    write_rendered(
-        w, values, l.loc,
-        std::string("const ") + type + " " + let_name(l.name) + " = rift::lanes::as_lanes(",
-        l.value, ");");
+    write_rendered(w, values, l.loc,
+                   std::string("const ") + lanes_type(b.graph[l.value].type) + " " +
+                       let_name(l.name) + " = rift::lanes::as_lanes(",
+                   l.value, ");");
     values.computed(l.value, let_name(l.name));
   }
   for (const ir::Force& f : b.forces) {
@@ -700,7 +696,7 @@ std::vector<std::string> write_force_targets(Writer& w, const Kernel& k, const i
 // What a lanes pass writes besides the forces it adds (write_lanes_pass).
 struct LanesOutputs {
   /// Groups' representatives: `count` times each force is added (counts[]),
-  /// and under kTerms each representative's forces go to terms[].
+  /// and, when `terms` is not null, each representative's forces go to it.
   bool grouped = false;
   /// A pass over matches that may store: the statement prefix that keeps the
   /// stored forces to the storing pass ("if constexpr (kStore) "); empty when

@@ -77,6 +77,12 @@ bool lanes_node(const ir::Graph& g, const Node& n) {
 
 }  // namespace
 
+const char* lanes_type(Type t) {
+  if (t == Type::Vec3) return "rift::lanes::Vec3";
+  if (t == Type::Bool) return "rift::lanes::Mask";
+  return "rift::lanes::Real";  // the only other type a lanes body has
+}
+
 bool renders_in_lanes(const ir::Body& b) {
   if (b.forces.empty() || !b.stores.empty()) return false;
   bool ok = true;

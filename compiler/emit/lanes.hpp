@@ -21,4 +21,7 @@ namespace rift::emit {
 /// A body without forces, or with `store` statements, has none.
 bool renders_in_lanes(const ir::Body& b);
 
+/// The C++ type of a lanes body's value of type t (real, vec3 or bool).
+const char* lanes_type(ir::Type t);
+
 }  // namespace rift::emit
