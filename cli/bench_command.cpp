@@ -10,6 +10,7 @@
 #include <sys/resource.h>
 
 #include "cli/commands.hpp"
+#include "rift/core/memory_report.hpp"
 #include "rift/core/parallel.hpp"
 #include "rift/scene/scene_setup.hpp"
 
@@ -24,7 +25,9 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& options) {
   cmd->add_flag("--json", options.json,
                 "Print one JSON object: ns_per_step (median), ns_per_vertex, steps, tears, "
                 "vertices, threads, setup_ms, "
-                "peak_rss_mb, setup_phases (each set-up phase's name, ms and rss_mb), ...");
+                "peak_rss_mb, setup_phases (each set-up phase's name, ms and rss_mb), "
+                "memory_mb and memory (the arrays held after the last step, largest first: "
+                "owner, what, mb), ...");
   add_threads_option(*cmd, options.threads);
   return cmd;
 }
@@ -68,6 +71,14 @@ int run_bench(const BenchOptions& options, const PackRegistry& packs) {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   const double peak_rss_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;
+  // What holds the memory after the last step, largest first.
+  MemoryReport memory;
+  sim->report_memory(memory);
+  std::vector<MemoryReport::Item> held = memory.items();
+  std::stable_sort(
+      held.begin(), held.end(),
+      [](const MemoryReport::Item& a, const MemoryReport::Item& b) { return a.bytes > b.bytes; });
+  constexpr double kMiB = 1024.0 * 1024.0;
   if (options.json) {
     // Phase names are the runtime's own words and interaction names
     // (identifiers): nothing to escape.
@@ -76,20 +87,36 @@ int run_bench(const BenchOptions& options, const PackRegistry& packs) {
       phases += fmt::format("{}{{\"name\": \"{}\", \"ms\": {:.3f}, \"rss_mb\": {:.1f}}}",
                             phases.empty() ? "" : ", ", p.name, p.ms, p.rss_mb);
     }
+    // Owners and arrays are the runtime's words, embedding and interaction
+    // names (identifiers) and orbits (<0,1>): nothing to escape either.
+    std::string arrays;
+    for (const MemoryReport::Item& i : held) {
+      arrays += fmt::format("{}{{\"owner\": \"{}\", \"what\": \"{}\", \"mb\": {:.3f}}}",
+                            arrays.empty() ? "" : ", ", i.owner, i.what,
+                            static_cast<double>(i.bytes) / kMiB);
+    }
     fmt::print(
         "{{\"scene\": \"{}\", \"ns_per_step\": {:.0f}, \"mean_ns_per_step\": {:.0f}, "
         "\"min_ns_per_step\": {:.0f}, \"ns_per_vertex\": {:.2f}, \"steps\": {}, "
         "\"tears\": {}, \"vertices\": {}, "
         "\"elements\": {}, \"threads\": {}, \"setup_ms\": {:.3f}, \"peak_rss_mb\": {:.1f}, "
-        "\"setup_phases\": [{}]}}\n",
+        "\"setup_phases\": [{}], \"memory_mb\": {:.3f}, \"memory\": [{}]}}\n",
         scene.name, median, mean, sorted.front(), ns_per_vertex, steps, sim->tears(), vertices,
-        elements, thread_count(), setup_ms, peak_rss_mb, phases);
+        elements, thread_count(), setup_ms, peak_rss_mb, phases,
+        static_cast<double>(memory.total()) / kMiB, arrays);
   } else {
     fmt::print(
         "{}: {} steps, median {:.3f} ms/step (mean {:.3f}, min {:.3f}), {} tears, {} "
         "vertices, {} elements, {} threads; set-up {:.1f} ms, peak RSS {:.1f} MiB\n",
         scene.name, steps, median * 1e-6, mean * 1e-6, sorted.front() * 1e-6, sim->tears(),
         vertices, elements, thread_count(), setup_ms, peak_rss_mb);
+    std::string largest;
+    for (std::size_t k = 0; k < std::min<std::size_t>(held.size(), 5); ++k) {
+      largest += fmt::format("{}{} ({}) {:.2f} MiB", k == 0 ? "" : ", ", held[k].owner,
+                             held[k].what, static_cast<double>(held[k].bytes) / kMiB);
+    }
+    fmt::print("arrays held: {:.2f} MiB; largest: {}\n", static_cast<double>(memory.total()) / kMiB,
+               largest);
   }
   return 0;
 }

@@ -142,6 +142,9 @@ void declare_criterion(Writer& w, const lower::CriterionPlan& plan, const PackMo
   w.line("                      std::uint64_t from) override {");
   w.line("  cells_.note_changed(g, touched, from);");
   w.line("}");
+  w.line("void report_memory(rift::MemoryReport& report) const override {");
+  w.line("  cells_.report_memory(report, \"criterion \" + name_);");
+  w.line("}");
   w.line();
   w.middle(" private:");
   w.line("std::string name_ = " + quote(crit.name.text) + ";");

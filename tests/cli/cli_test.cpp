@@ -367,6 +367,20 @@ TEST_F(Cli, BenchJson) {
   // the timers' own reads).
   EXPECT_LE(sum, j["setup_ms"].get<double>() + 0.01);
   EXPECT_GT(sum, 0.5 * j["setup_ms"].get<double>() - 0.05);
+  // The arrays held after the last step, largest first, adding up to
+  // memory_mb (Simulation::report_memory; exact counts: MemoryReport.*).
+  double held = 0, previous = 1e300;
+  bool map_links = false;
+  for (const auto& m : j["memory"]) {
+    const double mb = m["mb"].get<double>();
+    EXPECT_LE(mb, previous);
+    previous = mb;
+    held += mb;
+    map_links |= m["owner"] == "map" && m["what"] == "alpha0 links";
+  }
+  EXPECT_TRUE(map_links);
+  EXPECT_GT(j["memory_mb"].get<double>(), 0);
+  EXPECT_NEAR(held, j["memory_mb"].get<double>(), 0.01 + 0.001 * held);
 }
 
 TEST_F(Cli, BadScenesExitWithFileLineAndReason) {

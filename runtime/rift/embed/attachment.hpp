@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "rift/core/huge_pages.hpp"
+#include "rift/core/memory_report.hpp"
 #include "rift/core/orbit.hpp"
 #include "rift/embed/column.hpp"
 
@@ -58,6 +59,16 @@ class OrbitAttachment {
       if (c->name() == name) return c.get();
     }
     return nullptr;
+  }
+
+  /// Its slot arrays as "attachment <o>", each column's values as "column NAME".
+  void report_memory(MemoryReport& report) const {
+    const std::string owner = "attachment " + orbit_.str();
+    report.add(owner, "slot of each dart", slot_of_dart_);
+    report.add(owner, "darts of each slot", dart_count_);
+    report.add(owner, "free slots", free_slots_);
+    for (const auto& c : columns_)
+      report.add("column " + c->name(), "values", c->bytes());
   }
 
   // ---- used by GMap when topology changes -------------------------------

@@ -56,6 +56,8 @@ class ColumnBase {
   virtual Value get(Slot s) const = 0;
   virtual void set(Slot s, const Value& v) = 0;
   virtual std::unique_ptr<ColumnBase> clone() const = 0;
+  /// Bytes of the values stored (0 while the column has no storage).
+  virtual std::size_t bytes() const = 0;
 
  protected:
   // Atomic, with allocate() under a lock: a withheld column may be allocated
@@ -142,6 +144,7 @@ class Column final : public ColumnBase {
     c->set_withheld(withheld());
     return c;
   }
+  std::size_t bytes() const override { return values_.size() * sizeof(T); }
 
  private:
   void merge(T& a, const T& b) const {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "rift/core/interrupt.hpp"
+#include "rift/core/memory_report.hpp"
 #include "rift/core/parallel.hpp"
 #include "rift/gmap/cell_list.hpp"
 #include "rift/gmap/gmap.hpp"
@@ -76,6 +77,16 @@ class CellCollection {
   /// Rewrites touched these darts since topology version `from` (CellList::note_changed).
   void note_changed(const GMap& g, std::span<const Dart> touched, std::uint64_t from) {
     cells_.note_changed(g, touched, from);
+  }
+
+  /// Its cells and candidate lists, under `owner` (MemoryReport).
+  void report_memory(MemoryReport& report, std::string_view owner) const {
+    report.add(owner, "cells", cells_.list_bytes());
+    report.add(owner, "cell list upkeep", cells_.upkeep_bytes());
+    std::size_t found = 0;
+    for (const auto& list : found_)
+      found += list.capacity() * sizeof(TearCandidate);
+    report.add(owner, "candidate lists", found);
   }
 
   /// The cell list, for tests.

@@ -43,6 +43,14 @@ class CellList {
   std::uint64_t rebuilds() const { return rebuilds_; }
   /// How many times it followed noted changes instead.
   std::uint64_t updates() const { return updates_; }
+  /// Bytes of the list itself.
+  std::size_t list_bytes() const { return cells_.size() * sizeof(Dart); }
+  /// Bytes of what following changes keeps: the pending darts and the scratch.
+  std::size_t upkeep_bytes() const {
+    const std::size_t darts =
+        pending_.size() + walked_.capacity() + smallest_.capacity() + merged_.capacity();
+    return darts * sizeof(Dart) + dropped_.capacity() * sizeof(std::size_t);
+  }
 
  private:
   void rebuild(const GMap& g, Orbit o);

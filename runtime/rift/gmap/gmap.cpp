@@ -498,4 +498,21 @@ std::vector<Dart> GMap::compact() {
   return new_index;
 }
 
+void GMap::report_memory(MemoryReport& report) const {
+  for (std::size_t i = 0; i < alpha_.size(); ++i)
+    report.add("map", "alpha" + std::to_string(i) + " links", alpha_[i]);
+  report.add("map", "alive flags", alive_);
+  report.add("map", "free darts", free_darts_);
+  report.add("map", "marks", mark_bits_);
+  std::size_t scratch = 0;
+  for (const auto& list : scratch_)
+    scratch += list->capacity() * sizeof(Dart);  // cleared after use, filled before
+  report.add("map", "traversal lists", scratch);
+  report.add("map", "sewing partners", partner_);
+  report.add("map", "validity counts", validity_count_);
+  report.add("map", "validity first darts", validity_first_);
+  for (const auto& att : attachments_)
+    att->report_memory(report);
+}
+
 }  // namespace rift

@@ -232,6 +232,9 @@ class GMap {
   /// attachment.hpp): wake it before reading slots, as embedding() does.
   OrbitAttachment* attachment_of(std::string_view name) const;
   const std::vector<std::unique_ptr<OrbitAttachment>>& attachments() const { return attachments_; }
+  /// The map's arrays as "map" (links, marks, lists), then each attachment's
+  /// slots and columns (OrbitAttachment::report_memory).
+  void report_memory(MemoryReport& report) const;
   /// Gives every orbit of the attachment's type that has no slot a fresh one
   /// (default values), splitting orbits whose darts disagree is not attempted.
   /// A dormant attachment (attachment.hpp) stays so.

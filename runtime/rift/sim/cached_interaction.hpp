@@ -407,6 +407,13 @@ class CachedInteraction final : public ForceModel {
   /// True when stored() holds each match's Stored.
   bool keeps_stored_slots() const { return keeps_stored(); }
   const ScatterColouring& colouring() const { return colouring_; }
+  void report_memory(MemoryReport& report) const override {
+    const std::string owner = "interaction " + name();
+    cache_.report_memory(report, owner);
+    report.add(owner, "stored-force slots", stored_);
+    groups_.report_memory(report, owner);
+    colouring_.report_memory(report, owner);
+  }
   /// Matches per block of the coloured scatter; before initialise (tests
   /// use small blocks to have many).
   void set_scatter_block(std::size_t block) { colouring_ = ScatterColouring(block); }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "rift/core/candidate_payload.hpp"
+#include "rift/core/memory_report.hpp"
 #include "rift/gmap/gmap.hpp"
 
 namespace rift {
@@ -54,6 +55,8 @@ class Criterion {
     (void)touched;
     (void)from;
   }
+  /// Its arrays (the cells it visits, ...) under "criterion NAME".
+  virtual void report_memory(MemoryReport& /*report*/) const {}
 };
 
 }  // namespace rift

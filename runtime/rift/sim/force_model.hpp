@@ -6,6 +6,7 @@
 #include <span>
 #include <string>
 
+#include "rift/core/memory_report.hpp"
 #include "rift/gmap/gmap.hpp"
 
 namespace rift {
@@ -78,6 +79,8 @@ class ForceModel {
   /// Evaluate several matches at once where the kernel can (true, the
   /// default; rift/core/lanes.hpp) or each on its own (false): the same bits.
   virtual void set_lanes(bool /*on*/) {}
+  /// Its arrays (matches, groups, colouring, ...) under "interaction NAME".
+  virtual void report_memory(MemoryReport& /*report*/) const {}
 
   // --- Jacobians, for implicit integrators (docs/physics.md, implicit step) ---
   //

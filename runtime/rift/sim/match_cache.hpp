@@ -20,6 +20,7 @@
 
 #include "rift/core/flat_list.hpp"
 #include "rift/core/huge_pages.hpp"
+#include "rift/core/memory_report.hpp"
 #include "rift/core/prefetch.hpp"
 #include "rift/gmap/gmap.hpp"
 #include "rift/sim/reach.hpp"
@@ -242,6 +243,14 @@ class MatchCache {
       map.unmark(x, seen);
     map.free_mark(seen);
     map.free_mark(near);
+  }
+
+  /// Its arrays, under `owner` (MemoryReport).
+  void report_memory(MemoryReport& report, std::string_view owner) const {
+    report.add(owner, "matches", matches_);
+    report.add(owner, "match owners (support darts)", owners_);
+    report.add(owner, "entry of each dart", entry_of_dart_);
+    report.add(owner, "re-match lists", (frontier_.capacity() + seen_.capacity()) * sizeof(Dart));
   }
 
  private:

@@ -41,6 +41,7 @@
 #include <vector>
 
 #include "rift/core/huge_pages.hpp"
+#include "rift/core/memory_report.hpp"
 #include "rift/core/prefetch.hpp"
 #include "rift/core/types.hpp"
 #include "rift/embed/value.hpp"
@@ -295,6 +296,17 @@ class MatchGroups {
       if (find(a) != g) return "group " + std::to_string(g) + " is not found by its key";
     }
     return "";
+  }
+
+  /// Its arrays, under `owner` (MemoryReport).
+  void report_memory(MemoryReport& report, std::string_view owner) const {
+    report.add(owner, "group representatives", reps_);
+    report.add(owner, "group counts", count_);
+    report.add(owner, "group heads", head_);
+    report.add(owner, "group keys", keys_);
+    report.add(owner, "group of each match", group_of_);
+    report.add(owner, "next match of each group", next_);
+    report.add(owner, "group table", table_);
   }
 
  private:

@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "rift/core/huge_pages.hpp"
+#include "rift/core/memory_report.hpp"
 #include "rift/core/types.hpp"
 
 namespace rift {
@@ -136,6 +137,19 @@ class ScatterColouring {
     for (std::size_t e = 0; e < n; ++e)
       targets(e, all.data() + e * static_cast<std::size_t>(k));
     return check_targets(all, k);
+  }
+
+  /// Its arrays, under `owner` (MemoryReport).
+  void report_memory(MemoryReport& report, std::string_view owner) const {
+    std::size_t lists = serial_.size() * sizeof(std::uint32_t);
+    for (const auto& c : by_colour_)
+      lists += c.size() * sizeof(std::uint32_t);
+    report.add(owner, "colouring blocks", blocks_.size() * sizeof(Block) + lists);
+    report.add(owner, "colouring order", order_);
+    report.add(owner, "colouring place of each match", where_);
+    report.add(owner, "colouring pending matches",
+               pending_.size() * sizeof(std::uint32_t) + pending_slots_.size() * sizeof(Slot));
+    report.add(owner, "colouring masks", mask_);
   }
 
  private:

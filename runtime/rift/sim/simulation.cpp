@@ -409,6 +409,24 @@ std::size_t Simulation::per_vertex_bytes() const {
   return bytes;
 }
 
+void Simulation::report_memory(MemoryReport& report) const {
+  map_.report_memory(report);
+  report.add("integrator", "stage arrays", integrator_.buffer_bytes());
+  report.add("simulation", "forces", forces_);
+  report.add("simulation", "start forces", start_forces_);
+  report.add("simulation", "inverse masses", inverse_mass_);
+  report.add("simulation", "free flags (implicit)", is_free_);
+  report.add("simulation", "target velocities (implicit)", target_v_);
+  report.add("simulation", "external forces", external_forces_);
+  report.add("simulation", "positions before the step", x_before_);
+  report.add("simulation", "handle reactions", reactions_);
+  report.add("simulation", "held positions before the step", held_x_before_);
+  for (const auto& model : models_)
+    model->report_memory(report);
+  for (const auto& criterion : criteria_)
+    criterion->report_memory(report);
+}
+
 Real Simulation::kinetic_energy() const {
   Real e = 0;
   map_.for_each_cell(Orbit::cell(0, map_.dimension()),

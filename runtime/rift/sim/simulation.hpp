@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "rift/core/memory_report.hpp"
 #include "rift/gmap/gmap.hpp"
 #include "rift/sim/bdf2.hpp"
 #include "rift/sim/criterion.hpp"
@@ -158,6 +159,9 @@ class Simulation {
   /// the map's columns (positions, velocities, masses) nor the implicit
   /// solver's own.
   std::size_t per_vertex_bytes() const;
+  /// Where its memory goes: the map's links and columns, the per-vertex
+  /// arrays, each interaction's and criterion's arrays (MemoryReport).
+  void report_memory(MemoryReport& report) const;
   /// The implicit integrator, when settings().integrator is implicit_euler.
   const ImplicitEuler* implicit() const { return implicit_.get(); }
   ImplicitEuler* implicit() { return implicit_.get(); }

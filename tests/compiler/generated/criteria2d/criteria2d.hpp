@@ -56,6 +56,9 @@ class StretchStrainCriterion final : public rift::Criterion {
                         std::uint64_t from) override {
     cells_.note_changed(g, touched, from);
   }
+  void report_memory(rift::MemoryReport& report) const override {
+    cells_.report_memory(report, "criterion " + name_);
+  }
 
  private:
   std::string name_ = "stretch_strain";
@@ -85,6 +88,9 @@ class StretchForceCriterion final : public rift::Criterion {
   void topology_changed(const rift::GMap& g, std::span<const rift::Dart> touched,
                         std::uint64_t from) override {
     cells_.note_changed(g, touched, from);
+  }
+  void report_memory(rift::MemoryReport& report) const override {
+    cells_.report_memory(report, "criterion " + name_);
   }
 
  private:
@@ -116,6 +122,9 @@ class SpringSplitCriterion final : public rift::Criterion {
                         std::uint64_t from) override {
     cells_.note_changed(g, touched, from);
   }
+  void report_memory(rift::MemoryReport& report) const override {
+    cells_.report_memory(report, "criterion " + name_);
+  }
 
  private:
   std::string name_ = "spring_split";
@@ -145,6 +154,9 @@ class ShearForceCriterion final : public rift::Criterion {
                         std::uint64_t from) override {
     cells_.note_changed(g, touched, from);
   }
+  void report_memory(rift::MemoryReport& report) const override {
+    cells_.report_memory(report, "criterion " + name_);
+  }
 
  private:
   std::string name_ = "shear_force";
@@ -173,6 +185,9 @@ class BendForceCriterion final : public rift::Criterion {
   void topology_changed(const rift::GMap& g, std::span<const rift::Dart> touched,
                         std::uint64_t from) override {
     cells_.note_changed(g, touched, from);
+  }
+  void report_memory(rift::MemoryReport& report) const override {
+    cells_.report_memory(report, "criterion " + name_);
   }
 
  private:
@@ -204,6 +219,9 @@ class ElementStressCriterion final : public rift::Criterion {
                         std::uint64_t from) override {
     cells_.note_changed(g, touched, from);
   }
+  void report_memory(rift::MemoryReport& report) const override {
+    cells_.report_memory(report, "criterion " + name_);
+  }
 
  private:
   std::string name_ = "element_stress";
@@ -233,6 +251,9 @@ class InteractionForceCriterion final : public rift::Criterion {
   void topology_changed(const rift::GMap& g, std::span<const rift::Dart> touched,
                         std::uint64_t from) override {
     cells_.note_changed(g, touched, from);
+  }
+  void report_memory(rift::MemoryReport& report) const override {
+    cells_.report_memory(report, "criterion " + name_);
   }
 
  private:
@@ -265,6 +286,9 @@ class VertexStressCriterion final : public rift::Criterion {
                         std::uint64_t from) override {
     cells_.note_changed(g, touched, from);
   }
+  void report_memory(rift::MemoryReport& report) const override {
+    cells_.report_memory(report, "criterion " + name_);
+  }
 
  private:
   std::string name_ = "vertex_stress";
@@ -295,6 +319,9 @@ class VertexEnergyCriterion final : public rift::Criterion {
   void topology_changed(const rift::GMap& g, std::span<const rift::Dart> touched,
                         std::uint64_t from) override {
     cells_.note_changed(g, touched, from);
+  }
+  void report_memory(rift::MemoryReport& report) const override {
+    cells_.report_memory(report, "criterion " + name_);
   }
 
  private:
@@ -333,6 +360,9 @@ class VertexSumCriterion final : public rift::Criterion {
                         std::uint64_t from) override {
     cells_.note_changed(g, touched, from);
   }
+  void report_memory(rift::MemoryReport& report) const override {
+    cells_.report_memory(report, "criterion " + name_);
+  }
 
  private:
   std::string name_ = "vertex_sum";
@@ -362,6 +392,9 @@ class AtomicEdgeCriterion final : public rift::Criterion {
   void topology_changed(const rift::GMap& g, std::span<const rift::Dart> touched,
                         std::uint64_t from) override {
     cells_.note_changed(g, touched, from);
+  }
+  void report_memory(rift::MemoryReport& report) const override {
+    cells_.report_memory(report, "criterion " + name_);
   }
 
  private:
@@ -394,6 +427,9 @@ class GlobalEdgeCriterion final : public rift::Criterion {
   void topology_changed(const rift::GMap& g, std::span<const rift::Dart> touched,
                         std::uint64_t from) override {
     cells_.note_changed(g, touched, from);
+  }
+  void report_memory(rift::MemoryReport& report) const override {
+    cells_.report_memory(report, "criterion " + name_);
   }
 
  private:

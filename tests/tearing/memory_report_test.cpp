@@ -1,0 +1,88 @@
+// Simulation::report_memory (what `rift bench --json` reports as `memory`):
+// every large array of a scene under its owner, each counted exactly as the
+// bytes of its elements, following the map through tears; columns without
+// storage and interactions' arrays a scene does not keep are not listed.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "rift/core/memory_report.hpp"
+#include "tearing_support.hpp"
+
+namespace rift::tearing_test {
+namespace {
+
+std::size_t bytes_of(const MemoryReport& report, const std::string& owner,
+                     const std::string& what) {
+  std::size_t found = 0;
+  for (const MemoryReport::Item& i : report.items()) {
+    if (i.owner == owner && i.what == what) found += i.bytes;
+  }
+  return found;
+}
+
+// What the report must say of the map and its columns, counted here from
+// the map itself.
+void expect_map_counted(const Simulation& sim, const MemoryReport& report) {
+  const GMap& map = sim.map();
+  for (int i = 0; i <= map.dimension(); ++i) {
+    EXPECT_EQ(bytes_of(report, "map", "alpha" + std::to_string(i) + " links"),
+              map.capacity() * sizeof(Dart))
+        << i;
+  }
+  const OrbitAttachment& darts = *map.attachment_of("f_stretch");
+  EXPECT_EQ(bytes_of(report, "attachment <>", "slot of each dart"), map.capacity() * sizeof(Slot));
+  EXPECT_EQ(bytes_of(report, "column f_stretch", "values"), darts.slot_capacity() * sizeof(Vec3));
+  const OrbitAttachment& vertices = sim.position().attachment();
+  EXPECT_EQ(bytes_of(report, "column position", "values"), vertices.slot_capacity() * sizeof(Vec3));
+  // atomic_edge reads f_membrane, which no interaction of the scene writes:
+  // it keeps no storage (lean memory), and the report lists none.
+  EXPECT_EQ(report.of("column f_membrane"), 0u);
+}
+
+TEST(MemoryReport, CountsEachArrayOfAQuadClothUnderItsOwnerThroughTears) {
+  const std::string toml = static_scene("grid:quad:8x6", "1.0", 1.0,
+                                        interaction_table("stretch", "stiffness = 60.0") +
+                                            interaction_table("shear", "stiffness = 40.0") +
+                                            interaction_table("bend", "stiffness = 10.0") +
+                                            criterion_table("atomic_edge", 0.05));
+  auto sim = simulate("memory_report", toml);
+  sim->step();
+  MemoryReport before;
+  sim->report_memory(before);
+  expect_map_counted(*sim, before);
+  // The criterion's cells: one dart per edge (after a tear, the list follows
+  // the new edges at the next collection).
+  EXPECT_EQ(bytes_of(before, "criterion atomic_edge", "cells"),
+            sim->map().count_cells_of_dimension(1) * sizeof(Dart));
+  for (const auto& model : sim->force_models()) {
+    const std::string owner = "interaction " + model->name();
+    EXPECT_GT(bytes_of(before, owner, "matches"), 0u) << owner;
+    EXPECT_GT(bytes_of(before, owner, "entry of each dart"), 0u) << owner;
+  }
+  // RK4's four stage arrays, and the loop's forces and start forces.
+  const std::size_t vertex_slots = sim->position().attachment().slot_capacity();
+  EXPECT_EQ(bytes_of(before, "integrator", "stage arrays"), 4 * vertex_slots * sizeof(Vec3));
+  EXPECT_EQ(bytes_of(before, "simulation", "forces"), vertex_slots * sizeof(Vec3));
+  // The total is the sum of the items, and no item is empty.
+  std::size_t sum = 0;
+  for (const MemoryReport::Item& i : before.items()) {
+    EXPECT_GT(i.bytes, 0u) << i.owner << " " << i.what;
+    sum += i.bytes;
+  }
+  EXPECT_EQ(before.total(), sum);
+
+  // Tear it: the vertices the separated faces split are counted too.
+  deform(*sim, [](const Vec3& p) { return Vec3(1.6 * p.x(), p.y(), p.z()); });
+  for (int s = 0; s < 3 && sim->tears() == 0; ++s)
+    sim->step();
+  ASSERT_GT(sim->tears(), 0u);
+  MemoryReport after;
+  sim->report_memory(after);
+  expect_map_counted(*sim, after);
+  EXPECT_GT(bytes_of(after, "column position", "values"),
+            bytes_of(before, "column position", "values"));
+}
+
+}  // namespace
+}  // namespace rift::tearing_test
