@@ -75,9 +75,12 @@ int run_bench(const BenchOptions& options, const PackRegistry& packs) {
   MemoryReport memory;
   sim->report_memory(memory);
   std::vector<MemoryReport::Item> held = memory.items();
-  std::stable_sort(
-      held.begin(), held.end(),
-      [](const MemoryReport::Item& a, const MemoryReport::Item& b) { return a.bytes > b.bytes; });
+  // std::sort with a full order (stable_sort's buffer is deprecated under clang).
+  std::sort(held.begin(), held.end(), [](const MemoryReport::Item& a, const MemoryReport::Item& b) {
+    if (a.bytes != b.bytes) return a.bytes > b.bytes;
+    if (a.owner != b.owner) return a.owner < b.owner;
+    return a.what < b.what;
+  });
   constexpr double kMiB = 1024.0 * 1024.0;
   if (options.json) {
     // Phase names are the runtime's own words and interaction names
