@@ -84,5 +84,46 @@ TEST(MemoryReport, CountsEachArrayOfAQuadClothUnderItsOwnerThroughTears) {
             bytes_of(before, "column position", "values"));
 }
 
+TEST(MemoryReport, CountsTheImplicitSolversArrays) {
+  // A hanging 4x4 cloth on backward Euler with the incomplete Cholesky
+  // preconditioner: each interaction's blocks (k² per match, k vertices),
+  // their vertex slots, and the factor are listed under "implicit".
+  const std::string toml =
+      "[mesh]\nsource = \"grid:quad:4x4\"\nrotate = [90, 0, 0]\n"
+      "[simulation]\nintegrator = \"implicit_euler\"\ndt = 0.001\nsteps = 2\n"
+      "[implicit]\npreconditioner = \"incomplete_cholesky\"\n"
+      "[mass]\ntotal = 0.1\n[pin]\ncorners = [\"top-left\", \"top-right\"]\n" +
+      interaction_table("stretch", "stiffness = 60.0\ndamping = 0.1") +
+      interaction_table("shear", "stiffness = 43.0");
+  auto sim = simulate("memory_report_implicit", toml);
+  sim->step();
+  MemoryReport report;
+  sim->report_memory(report);
+  ASSERT_NE(sim->implicit(), nullptr);
+  std::size_t models = 0;
+  for (const ElementBlocks& e : sim->implicit()->blocks().elements()) {
+    ++models;
+    const std::string of = " (" + e.model->name() + ")";
+    const auto k = static_cast<std::size_t>(e.k);
+    EXPECT_GT(e.matches, 0u) << of;
+    EXPECT_EQ(bytes_of(report, "implicit", "Jacobian blocks" + of),
+              e.matches * k * k * sizeof(Mat3))
+        << of;
+    EXPECT_EQ(bytes_of(report, "implicit", "block vertex slots" + of), e.matches * k * sizeof(Slot))
+        << of;
+  }
+  EXPECT_EQ(models, 2u);
+  EXPECT_GT(bytes_of(report, "implicit", "incomplete Cholesky factor"), 0u);
+  EXPECT_GT(bytes_of(report, "implicit", "conjugate gradient vectors"), 0u);
+  // An explicit scene lists nothing under "implicit".
+  auto explicit_sim = simulate(
+      "memory_report_explicit",
+      static_scene("grid:quad:4x4", "1.0", 0.1, interaction_table("stretch", "stiffness = 60.0")));
+  explicit_sim->step();
+  MemoryReport none;
+  explicit_sim->report_memory(none);
+  EXPECT_EQ(none.of("implicit"), 0u);
+}
+
 }  // namespace
 }  // namespace rift::tearing_test

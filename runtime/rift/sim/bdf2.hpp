@@ -36,6 +36,11 @@ class Bdf2 {
 
   /// Whether the last step was a BDF2 step (false: backward Euler).
   bool last_was_bdf2() const { return last_was_bdf2_; }
+  /// The step before, under "implicit" (MemoryReport).
+  void report_memory(MemoryReport& report) const {
+    report.add("implicit", "BDF2's previous state",
+               (x_previous_.size() + v_previous_.size() + target_v_.size()) * sizeof(Vec3));
+  }
 
  private:
   bool have_previous_ = false;

@@ -8,6 +8,17 @@
 
 namespace rift {
 
+void ElementMatrix::report_memory(MemoryReport& report) const {
+  for (const ElementBlocks& e : elements_) {
+    const std::string of = " (" + e.model->name() + ")";
+    report.add("implicit", "Jacobian blocks" + of, e.blocks);
+    report.add("implicit", "damping blocks" + of, e.dfdv);
+    report.add("implicit", "block vertex slots" + of, e.slots);
+    report.add("implicit", "product terms" + of, e.terms);
+    report.add("implicit", "product gather" + of, e.gather.bytes());
+  }
+}
+
 namespace {
 
 // The symmetric part s = -(J + Jᵀ)/2 of an element's blocks: CG needs a

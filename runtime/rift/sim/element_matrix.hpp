@@ -89,6 +89,8 @@ class ElementMatrix {
   void add_diagonal(Mat3* diag) const;
 
   std::span<const ElementBlocks> elements() const { return elements_; }
+  /// Each interaction's blocks, slots and product terms under "implicit" (MemoryReport).
+  void report_memory(MemoryReport& report) const;
 
   /// Element matrices the last assembly projected (∂f/∂x and ∂f/∂v counted apart).
   std::size_t projected() const { return projected_; }

@@ -218,4 +218,16 @@ void ImplicitEuler::step(const ForceFn& force, const std::vector<Real>& mass,
   times_.total += seconds_since(start);
 }
 
+void ImplicitEuler::report_memory(MemoryReport& report) const {
+  blocks_.report_memory(report);
+  preconditioner_.report_memory(report);
+  std::size_t vectors = 0;
+  for (const std::vector<Vec3>* a :
+       {&f_, &kxv_, &rhs_, &dv_, &x1_, &v1_, &trial_v_, &trial_x_, &scaled_h2_, &scaled_h_})
+    vectors += a->size();
+  report.add("implicit", "Newton vectors", vectors * sizeof(Vec3));
+  report.add("implicit", "conjugate gradient vectors",
+             (pcg_.r.size() + pcg_.z.size() + pcg_.d.size() + pcg_.q.size()) * sizeof(Vec3));
+}
+
 }  // namespace rift

@@ -105,6 +105,11 @@ class ImplicitEuler {
   /// states where the assembled ∂f/∂v is zero.
   void set_potential(PotentialFn potential) { potential_ = std::move(potential); }
 
+  /// Its element blocks, preconditioner and vectors under "implicit" (MemoryReport).
+  void report_memory(MemoryReport& report) const;
+  /// The element blocks of the last assembly.
+  const ElementMatrix& blocks() const { return blocks_; }
+
   /// The matches changed (after a tear): the incomplete-Cholesky pattern is
   /// rebuilt at the next step, and the element blocks' gathers.
   void topology_changed() {

@@ -34,6 +34,31 @@ Preconditioner::Preconditioner(PreconditionerKind kind)
     : kind_(kind), factor_(std::make_unique<Factor>()) {}
 Preconditioner::~Preconditioner() = default;
 
+namespace {
+
+// Values, inner indices and outer starts of a compressed sparse matrix.
+std::size_t sparse_bytes(const Eigen::SparseMatrix<Real>& m) {
+  return static_cast<std::size_t>(m.nonZeros()) * (sizeof(Real) + sizeof(int)) +
+         static_cast<std::size_t>(m.outerSize() + 1) * sizeof(int);
+}
+
+}  // namespace
+
+void Preconditioner::report_memory(MemoryReport& report) const {
+  report.add("implicit", "preconditioner diagonal", inverse_diagonal_);
+  report.add("implicit", "preconditioner matrix", sparse_bytes(a_));
+  report.add("implicit", "preconditioner scatter", scatter_);
+  report.add("implicit", "preconditioner diagonal index", diagonal_index_);
+  report.add("implicit", "preconditioner pattern", pairs_);
+  report.add("implicit", "preconditioner pattern columns", first_pair_);
+  report.add("implicit", "preconditioner vectors",
+             static_cast<std::size_t>(rhs_.size() + sol_.size()) * sizeof(Real));
+  if (kind_ == PreconditionerKind::kIncompleteCholesky && factor_->ic.info() == Eigen::Success &&
+      factor_->ic.matrixL().rows() > 0) {
+    report.add("implicit", "incomplete Cholesky factor", sparse_bytes(factor_->ic.matrixL()));
+  }
+}
+
 void Preconditioner::update(const ElementMatrix* blocks, const std::vector<Real>& mass,
                             const std::vector<char>& is_free, bool pattern_changed) {
   const std::size_t n = mass.size();

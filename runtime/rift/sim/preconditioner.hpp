@@ -41,6 +41,8 @@ class Preconditioner {
               const std::vector<char>& is_free, bool pattern_changed);
 
   void apply(const Vec3* r, Vec3* z) const;
+  /// Its diagonal, matrix and factor under "implicit" (MemoryReport).
+  void report_memory(MemoryReport& report) const;
 
  private:
   void build_pattern(const ElementMatrix& blocks, std::size_t n);

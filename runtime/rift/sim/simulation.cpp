@@ -412,6 +412,8 @@ std::size_t Simulation::per_vertex_bytes() const {
 void Simulation::report_memory(MemoryReport& report) const {
   map_.report_memory(report);
   report.add("integrator", "stage arrays", integrator_.buffer_bytes());
+  if (implicit_) implicit_->report_memory(report);
+  bdf2_.report_memory(report);
   report.add("simulation", "forces", forces_);
   report.add("simulation", "start forces", start_forces_);
   report.add("simulation", "inverse masses", inverse_mass_);

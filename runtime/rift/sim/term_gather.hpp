@@ -50,6 +50,9 @@ class TermGather {
     });
   }
 
+  /// Bytes of its offsets and entries.
+  std::size_t bytes() const { return (offsets_.size() + entries_.size()) * sizeof(std::uint32_t); }
+
   /// Slots that receive a term: max target + 1.
   std::size_t slots() const { return offsets_.empty() ? 0 : offsets_.size() - 1; }
 
