@@ -108,7 +108,7 @@ Dart GMap::create_dart() {
     for (int i = 0; i <= dimension_; ++i)
       push_back_huge(alpha_[i], d);
     push_back_huge(alive_, std::uint8_t{1});
-    push_back_huge(mark_bits_, std::uint32_t{0});
+    push_back_huge(mark_bits_, MarkBits{0});
     for (auto& att : attachments_)
       att->resize_darts(alive_.size());
   }
@@ -128,7 +128,7 @@ Dart GMap::create_darts(std::size_t count) {
       alpha_[i][d] = static_cast<Dart>(d);
   }
   grow_huge(alive_, end, std::uint8_t{1});
-  grow_huge(mark_bits_, end, std::uint32_t{0});
+  grow_huge(mark_bits_, end, MarkBits{0});
   for (auto& att : attachments_)
     att->resize_darts(end);
   return static_cast<Dart>(first);
@@ -166,7 +166,10 @@ void GMap::unlink(Dart a, int i) {
 // ---- marks ------------------------------------------------------------------------
 
 Mark GMap::reserve_mark() const {
-  if (used_marks_ == ~0u) throw std::runtime_error("G-map: all 32 marks are in use");
+  if (used_marks_ == (1u << kMaxMarks) - 1) {
+    throw std::runtime_error("G-map: all " + std::to_string(kMaxMarks) +
+                             " marks are in use (orbit walks nested more deeply than that)");
+  }
   const Mark m = __builtin_ctz(~used_marks_);
   used_marks_ |= (1u << m);
   assert(mark_count_[m] == 0);
@@ -180,8 +183,8 @@ void GMap::free_mark(Mark m) const {
 
 void GMap::unmark_all(Mark m) const {
   if (mark_count_[m] == 0) return;
-  const std::uint32_t keep = ~(1u << m);
-  for (auto& bits : mark_bits_)
+  const auto keep = static_cast<MarkBits>(~(1u << m));
+  for (MarkBits& bits : mark_bits_)
     bits &= keep;
   mark_count_[m] = 0;
 }
@@ -197,8 +200,8 @@ void GMap::mark_orbit(Dart d, Orbit o, Mark m) const {
   // Every cell pass (for_each_cell) runs this once per cell over the whole
   // map: the links of the orbit are looked up once, and the mark's count is
   // added once at the end rather than per dart.
-  const std::uint32_t bit = 1u << m;
-  std::uint32_t* bits = mark_bits_.data();
+  const auto bit = static_cast<MarkBits>(1u << m);
+  MarkBits* bits = mark_bits_.data();
   std::size_t marked = 0;
   const auto claim = [&](Dart y) {
     if ((bits[y] & bit) != 0) return false;

@@ -79,7 +79,12 @@ class Embedding {
 
 class GMap {
  public:
-  static constexpr int kMaxMarks = 32;
+  /// Marks reserved at once, at most: one byte of mark bits per dart. The
+  /// deepest nesting of orbit walks in the runtime, the packs' rules,
+  /// criteria and scripts and the test suite is 4 (measured); a 32-bit word
+  /// per dart was 178 MB of a 4.7·10^7-dart hexahedral block, and the walks
+  /// around a tear read the marks at random (rift bench --json, `memory`).
+  static constexpr int kMaxMarks = 8;
 
   explicit GMap(int dimension);
   GMap(GMap&&) noexcept = default;
@@ -152,16 +157,16 @@ class GMap {
   Mark reserve_mark() const;
   /// Releases a mark; darts still marked with it are unmarked first.
   void free_mark(Mark m) const;
-  bool is_marked(Dart d, Mark m) const { return (mark_bits_[d] >> m) & 1u; }
+  bool is_marked(Dart d, Mark m) const { return ((mark_bits_[d] >> m) & 1u) != 0; }
   void mark(Dart d, Mark m) const {
     if (!is_marked(d, m)) {
-      mark_bits_[d] |= (1u << m);
+      mark_bits_[d] = static_cast<MarkBits>(mark_bits_[d] | (1u << m));
       ++mark_count_[m];
     }
   }
   void unmark(Dart d, Mark m) const {
     if (is_marked(d, m)) {
-      mark_bits_[d] &= ~(1u << m);
+      mark_bits_[d] = static_cast<MarkBits>(mark_bits_[d] & ~(1u << m));
       --mark_count_[m];
     }
   }
@@ -279,7 +284,9 @@ class GMap {
   std::vector<std::uint8_t> alive_;
   std::vector<Dart> free_darts_;
 
-  mutable std::vector<std::uint32_t> mark_bits_;
+  using MarkBits = std::uint8_t;  ///< bit m: marked with mark m
+  static_assert(kMaxMarks == 8 * sizeof(MarkBits));
+  mutable std::vector<MarkBits> mark_bits_;
   mutable std::array<std::size_t, kMaxMarks> mark_count_{};
   mutable std::uint32_t used_marks_ = 0;
 
