@@ -190,6 +190,12 @@ TEST(Grouping, MatchesWithKeysOfTheirOwnAreNotGrouped) {
     } else if (auto* s = dynamic_cast<Stretch3d*>(model.get())) {
       EXPECT_TRUE(s->grouped());
       EXPECT_LT(s->evaluated_matches(), s->active_matches());
+      // Its key table is sized for the groups (about one per eight matches
+      // here), not for half the matches (MatchGroups::expected_groups).
+      ASSERT_GT(s->cache().size(),
+                MatchGroups<std::decay_t<decltype(s->cache().matches()[0])>>::kSample);
+      EXPECT_LT(s->groups().table_size(), s->cache().size());
+      EXPECT_GE(s->groups().table_size(), 2 * s->groups().size() + 2);
       ++seen;
     }
   }
@@ -628,6 +634,39 @@ TEST(Grouping, MoreGroupsThanTheTableExpectsKeepFirstAppearanceOrder) {
     for (std::uint32_t g = 0; g < firsts.size(); ++g)
       EXPECT_EQ(groups.counts()[g], Real(counts[g])) << "group " << g << " of " << n << " matches";
   }
+}
+
+// The table is sized for the groups its first kSample matches announce: a
+// first part with few keys and a rest with many makes it grow while it
+// builds, and the groups are still those of a plain search, in order of
+// first appearance.
+TEST(Grouping, AnEstimateShortOfTheGroupsGrowsTheTable) {
+  struct Pair {
+    std::uint32_t a, b;
+  };
+  constexpr std::size_t kSample = MatchGroups<Pair>::kSample;
+  std::vector<Pair> matches;
+  for (std::uint32_t i = 0; i < 2 * kSample; ++i)
+    matches.push_back({i % 4, 7});  // four keys only
+  constexpr std::uint32_t kDistinct = 30000;
+  for (std::uint32_t i = 0; i < kDistinct; ++i)
+    matches.push_back({100 + i, i * 2654435761u});
+  auto key = [](const Pair& m, std::uint64_t* out) {
+    out = key_words(m.a, out);
+    key_words(m.b, out);
+  };
+  MatchGroups<Pair> groups;
+  MatchGroups<Pair>::NoObserver none;
+  groups.build(matches, 2, key, none);
+  ASSERT_EQ(groups.check(matches, key), "");
+  ASSERT_EQ(groups.size(), 4u + kDistinct);
+  for (std::uint32_t e = 0; e < 4; ++e)
+    EXPECT_EQ(groups.group_of(e), e);
+  for (std::uint32_t i = 0; i < kDistinct; ++i)
+    ASSERT_EQ(groups.group_of(static_cast<std::uint32_t>(2 * kSample + i)), 4 + i) << i;
+  EXPECT_EQ(groups.counts()[0], Real(kSample / 2));
+  // Grown past what the first matches announced (about 12 groups).
+  EXPECT_GE(groups.table_size(), 2 * groups.size() + 2);
 }
 
 // The table homes a key by its first word (a vertex slot, near which the

@@ -86,6 +86,8 @@ class MatchGroups {
   static constexpr int kMaxKey = 64;
   /// How many matches ahead build computes keys and asks for their table slots.
   static constexpr std::uint32_t kAhead = 16;
+  /// How many first matches build reads to size its table (expected_groups).
+  static constexpr std::size_t kSample = std::size_t{1} << 16;
 
   /// What build keeps besides the representatives and their counts.
   enum class Keep {
@@ -109,6 +111,8 @@ class MatchGroups {
   /// force pass multiplies each group's forces by (see count_).
   std::span<const Real> counts() const { return count_; }
   std::uint32_t group_of(std::uint32_t entry) const { return group_of_[entry]; }
+  /// Positions of the key table (tests: it is sized for the groups).
+  std::size_t table_size() const { return table_.size(); }
   /// What the last build kept.
   Keep keeps() const { return keep_; }
   /// Whether the table still homes keys by their first word (see hash).
@@ -145,10 +149,10 @@ class MatchGroups {
     reserve_huge(count_, matches.size());
     if (keep_ != Keep::kCounts) reserve_huge(head_, matches.size());
     reserve_huge(keys_, matches.size() * static_cast<std::size_t>(words));
-    // Sized for half as many groups as matches (the usual case: an interior
-    // edge's two faces) rather than grown by rehashing; add still grows it
-    // for more. Group ids come in order of first match whatever the table's
-    // size, so the groups are the same.
+    // Sized for the groups the first matches announce (expected_groups)
+    // rather than grown by rehashing; add still grows it for more. Group
+    // ids come in order of first match whatever the table's size, so the
+    // groups are the same.
     // As many positions per first word as a table for as many groups as
     // matches has for each (the table itself starts at half that and may
     // wrap around): a vertex that is the first word of many keys (a
@@ -158,7 +162,7 @@ class MatchGroups {
                                : std::clamp<std::uint64_t>(
                                      std::bit_floor(table_size_for(matches.size()) / first_words),
                                      1, kMaxSpread);
-    fresh_table(table_size_for(matches.size() / 2));
+    fresh_table(table_size_for(expected_groups(matches, words, key)));
     // At 10^6 vertices the table and the keys are far larger than the caches
     // and a match's probe reads both at random: nearly all of the grouping's
     // time was those two misses. The keys of the next kAhead matches are
@@ -353,6 +357,44 @@ class MatchGroups {
     return "";
   }
 
+  /// The groups `matches` will form, from the distinct keys of their first
+  /// kSample (exact when there are no more), scaled to all of them with a
+  /// quarter more: the table is sized for those rather than for half the
+  /// matches. A hexahedral block's stretch springs form a group per eight
+  /// matches, and its table for half of them was 128 MB where 32 MB do
+  /// (rift bench --json, `memory`). The first matches are a mesh's border,
+  /// where fewer matches share a key, so the estimate errs high; one short
+  /// of the groups only makes add grow the table.
+  template <class KeyFn>
+  static std::size_t expected_groups(std::span<const Match> matches, int words, KeyFn& key) {
+    const std::size_t sample = std::min(matches.size(), kSample);
+    std::vector<std::uint64_t> hashes(sample);
+    std::uint64_t k[kMaxKey];
+    for (std::size_t e = 0; e < sample; ++e) {
+      key(matches[e], k);
+      hashes[e] = whole_key_hash(k, words);
+    }
+    std::sort(hashes.begin(), hashes.end());
+    const auto distinct =
+        static_cast<std::size_t>(std::unique(hashes.begin(), hashes.end()) - hashes.begin());
+    if (sample == matches.size()) return distinct;
+    const auto scaled =
+        static_cast<std::size_t>(static_cast<double>(distinct) *
+                                 static_cast<double>(matches.size()) / static_cast<double>(sample));
+    return std::min(matches.size(), scaled + scaled / 4);
+  }
+
+  /// A hash of all `words` words of a key.
+  static std::uint64_t whole_key_hash(const std::uint64_t* k, int words) {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for (int i = 0; i < words; ++i) {
+      h ^= k[i] + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+      h *= 0xbf58476d1ce4e5b9ull;
+      h ^= h >> 31;
+    }
+    return h;
+  }
+
   static std::size_t table_size_for(std::size_t n) {
     std::size_t size = 16;
     while (size < 2 * n + 2)
@@ -384,13 +426,7 @@ class MatchGroups {
       const std::uint64_t within = (rest * 0x9e3779b97f4a7c15ull) >> (64 - kWindowBits);
       return static_cast<std::size_t>(k[0] * spread_ + within) & (table_.size() - 1);
     }
-    std::uint64_t h = 0x9e3779b97f4a7c15ull;
-    for (int i = 0; i < words_; ++i) {
-      h ^= k[i] + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-      h *= 0xbf58476d1ce4e5b9ull;
-      h ^= h >> 31;
-    }
-    return static_cast<std::size_t>(h) & (table_.size() - 1);
+    return static_cast<std::size_t>(whole_key_hash(k, words_)) & (table_.size() - 1);
   }
 
   /// Places group g (key k) at the end of its run. False when the run was
