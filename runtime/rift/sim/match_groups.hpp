@@ -154,8 +154,8 @@ class MatchGroups {
     // ids come in order of first match whatever the table's size, so the
     // groups are the same.
     // As many positions per first word as a table for as many groups as
-    // matches has for each (the table itself starts at half that and may
-    // wrap around): a vertex that is the first word of many keys (a
+    // matches has for each (the table itself, sized for the groups, is
+    // smaller, and the homes wrap around): a vertex that is the first word of many keys (a
     // hexahedral block's vertex heads up to 24 face diagonals, none shared)
     // then keeps its run to itself, however many groups there turn out to be.
     spread_ = first_words == 0 ? kSpread
