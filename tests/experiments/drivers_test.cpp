@@ -9,6 +9,7 @@
 
 #include "experiment_support.hpp"
 #include "rift/core/input_error.hpp"
+#include "rift/io/load_map.hpp"
 #include "rift/io/read_mesh.hpp"
 #include "rift/mesh/assemble.hpp"
 #include "rift/mesh/generators.hpp"
@@ -86,6 +87,63 @@ TEST(Handles, ReleasedHandleLetsGo) {
   });
 }
 
+TEST(Handles, PinsKeepNoRestPositionsAndHoldTheirVerticesExactlyThroughTears) {
+  // A pin holds its vertices where they are: its target is their position,
+  // so no rest position is kept; tears that split a pinned vertex leave
+  // both halves pinned, exactly where they were.
+  auto sim = simulate(scene_of(
+      "pins_tear", cloth("[pin]\nbox = [{ min = [-1, -1, 0.99], max = [2, 1, 1.01] "
+                         "}]\n[[criterion]]\nname = \"spring_split\"\nthreshold = 0.02\n")));
+  EXPECT_FALSE(sim->handles()->keeps_rest());
+  EXPECT_FALSE(sim->map().embedding<Vec3>("handle_rest"));
+  std::vector<Vec3> pinned_at;
+  sim->map().for_each_cell(Orbit::cell(0, 2), [&](Dart d) {
+    if (sim->handles()->handle_of(d) == 0) pinned_at.push_back(sim->position()[d]);
+  });
+  ASSERT_EQ(pinned_at.size(), 7u);
+  std::size_t tears = 0;
+  for (int k = 0; k < 300; ++k) {
+    sim->step();
+    tears += sim->tears_last_step();
+  }
+  EXPECT_GT(tears, 0u);
+  EXPECT_TRUE(sim->map().is_valid());
+  std::size_t held = 0;
+  sim->map().for_each_cell(Orbit::cell(0, 2), [&](Dart d) {
+    if (sim->handles()->handle_of(d) != 0) return;
+    ++held;
+    const Vec3& x = sim->position()[d];
+    EXPECT_TRUE(
+        std::any_of(pinned_at.begin(), pinned_at.end(), [&](const Vec3& p) { return p == x; }))
+        << "a pinned vertex moved to " << x.transpose();
+  });
+  EXPECT_GE(held, pinned_at.size());
+}
+
+TEST(Handles, MovingHandlesAndHoldsAwayFromTheVertexKeepRestPositions) {
+  // A moving handle needs each vertex's rest position.
+  auto moving = simulate(
+      scene_of("moving", cloth("[pin]\ncorners = [\"top-left\"]\n"
+                               "[[handle]]\nselect = \"top-right\"\nvelocity = [0.1, 0, 0]\n")));
+  EXPECT_TRUE(moving->handles()->keeps_rest());
+  // A fixed handle told to hold a vertex elsewhere puts it there.
+  rift::GMap map = rift::load_map("grid:quad:2x2");
+  const Embedding<Vec3> x = map.embedding<Vec3>("position");
+  ASSERT_TRUE(x);
+  Handles handles(map);
+  const int h = handles.add(HandleMotion{});
+  EXPECT_FALSE(handles.keeps_rest());
+  const Dart d = 0;
+  ASSERT_TRUE(handles.hold(d, h, x[d]));
+  EXPECT_FALSE(handles.keeps_rest());
+  const Vec3 elsewhere = x[d] + Vec3(0, 0, 0.5);
+  const Dart other = map.alpha(d, 0);
+  ASSERT_TRUE(handles.hold(other, h, elsewhere));
+  EXPECT_TRUE(handles.keeps_rest());
+  EXPECT_EQ(handles.target(x.attachment().slot(other), 1.0), elsewhere);
+  // The vertex held before keeps its place.
+  EXPECT_EQ(handles.target(x.attachment().slot(d), 1.0), x[d]);
+}
 TEST(Handles, ImplicitStepSolvesBackwardEulerWithTheHandlesMotion) {
   // A moving handle is a Dirichlet degree of freedom of the implicit solve:
   // its vertices land exactly on the prescribed path, and the free vertices'

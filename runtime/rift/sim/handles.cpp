@@ -6,6 +6,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "rift/core/state_embeddings.hpp"
+
 namespace rift {
 
 namespace {
@@ -41,30 +43,49 @@ Vec3 HandleMotion::place(const Vec3& rest, Real t) const {
   return pivot + rotation_of(rotate) * (rest - pivot) + translate + velocity * t;
 }
 
-Handles::Handles(GMap& map) {
+Handles::Handles(GMap& map) : map_(map) {
   const Orbit vertex = Orbit::cell(0, map.dimension());
   handle_ = map.embedding<std::int64_t>("handle");
   if (!handle_)
     handle_ = map.add_embedding<std::int64_t>("handle", vertex, MergePolicy::kKeepFirst, -1);
+  position_ = map.embedding<Vec3>(state::kPosition);
+  // A map that brings its rest positions (or has no positions to stand in
+  // for them) keeps them.
   rest_ = map.embedding<Vec3>("handle_rest");
-  if (!rest_)
-    rest_ = map.add_embedding<Vec3>("handle_rest", vertex, MergePolicy::kMean, Vec3::Zero());
-  if (handle_.orbit() != vertex || rest_.orbit() != vertex) {
-    throw std::invalid_argument("the embeddings 'handle' and 'handle_rest' must live on vertices");
+  if (!position_) keep_rest();
+  if (handle_.orbit() != vertex || (rest_ && rest_.orbit() != vertex) ||
+      (position_ && position_.orbit() != vertex)) {
+    throw std::invalid_argument(
+        "the embeddings 'handle', 'handle_rest' and 'position' must live on vertices");
+  }
+}
+
+void Handles::keep_rest() {
+  if (rest_) return;
+  const Orbit vertex = Orbit::cell(0, map_.dimension());
+  rest_ = map_.add_embedding<Vec3>("handle_rest", vertex, MergePolicy::kMean, Vec3::Zero());
+  // Every vertex held so far stands where its fixed handle holds it.
+  if (position_) {
+    std::vector<Vec3>& rest = rest_.values();
+    const std::vector<Vec3>& x = position_.values();
+    std::copy(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(std::min(x.size(), rest.size())),
+              rest.begin());
   }
 }
 
 int Handles::add(HandleMotion motion) {
   std::sort(motion.keyframes.begin(), motion.keyframes.end(),
             [](const auto& a, const auto& b) { return a.time < b.time; });
+  if (!motion.fixed()) keep_rest();
   motions_.push_back(std::move(motion));
   return static_cast<int>(motions_.size() - 1);
 }
 
 bool Handles::hold(Dart d, int index, const Vec3& rest) {
   if (handle_[d] >= 0 && handle_[d] != index) return false;
+  if (!rest_ && rest != position_[d]) keep_rest();
   handle_[d] = index;
-  rest_[d] = rest;
+  if (rest_) rest_[d] = rest;
   held_stale_ = true;
   return true;
 }
@@ -75,6 +96,7 @@ bool Handles::releases_between(Real t0, Real t1) const {
 }
 
 Vec3 Handles::target(Slot s, Real t) const {
+  if (!rest_) return position_.values()[s];
   return motions_[static_cast<std::size_t>(handle_.values()[s])].place(rest_.values()[s], t);
 }
 
