@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <random>
 #include <set>
 
@@ -264,6 +265,96 @@ TEST(MatchCache, AnOwnerIndexMadeAtTheFirstTearEqualsOneMadeAtTheBuild) {
   });
   EXPECT_GT(rematches, 50);
   EXPECT_NE(lazy.size(), 0u);
+}
+
+// The owner index is an array by dart or, for an interaction owning few
+// darts, a hash table (owner_index.hpp). Through the same tears and sews, a
+// cache of each kind holds the same matches, with the same owners, in the
+// same order: the kind changes memory, never the matches.
+TEST(MatchCache, AHashedOwnerIndexGivesTheMatchesOfAnArrayIndex) {
+  GMap map = assemble_gmap(make_generated_mesh("grid:quad:8x8"));
+  Hinge hinge;
+  hinge.initialise(map);
+  auto match = [&](const GMap& m, Dart x, HingeKernel::Match& out) {
+    return hinge.kernel().match(m, x, out);
+  };
+  auto lost = [](const HingeKernel::Match&, bool) {};
+  MatchCache<HingeKernel::Match> array, hashed;
+  array.force_sparse_index(false);
+  hashed.force_sparse_index(true);
+  array.build(map, Orbit{2}, match);
+  hashed.build(map, Orbit{2}, match);
+  array.index_owners(map);
+  hashed.index_owners(map);
+  EXPECT_FALSE(array.sparse_index());
+  EXPECT_TRUE(hashed.sparse_index());
+  // Hinges own one dart in four or so: the cache's own choice is the array.
+  EXPECT_FALSE(hinge.cache().sparse_index());
+  int rematches = 0;
+  tear_and_mend_at_random(map, 31, 150, [&](int step, const std::vector<Dart>& region) {
+    array.rematch(map, Orbit{2}, HingeKernel::kRadius, region, match, lost);
+    hashed.rematch(map, Orbit{2}, HingeKernel::kRadius, region, match, lost);
+    ++rematches;
+    ASSERT_EQ(hashed.size(), array.size()) << "step " << step;
+    for (std::size_t e = 0; e < array.size(); ++e) {
+      ASSERT_EQ(hashed.owners()[e], array.owners()[e]) << "step " << step << " entry " << e;
+      ASSERT_EQ(std::memcmp(&hashed.matches()[e], &array.matches()[e], sizeof(HingeKernel::Match)),
+                0)
+          << "step " << step << " entry " << e;
+    }
+  });
+  EXPECT_GT(rematches, 50);
+  EXPECT_NE(array.size(), 0u);
+}
+
+// The index itself against a plain map, through random owners, moves and
+// erasures that wrap around the table and shift probe chains back.
+TEST(OwnerIndex, FindsWhatWasSetThroughErasuresInBothKinds) {
+  for (const bool sparse : {false, true}) {
+    std::mt19937 rng(7);
+    std::vector<Dart> owners;
+    for (Dart d = 0; d < 300; d += 3)
+      owners.push_back(d);
+    OwnerIndex index;
+    index.build(owners, 2000, sparse);
+    EXPECT_EQ(index.sparse(), sparse);
+    std::map<Dart, std::uint32_t> expected;
+    for (std::size_t e = 0; e < owners.size(); ++e)
+      expected[owners[e]] = static_cast<std::uint32_t>(e);
+    std::uniform_int_distribution<Dart> dart(0, 1999);
+    for (int k = 0; k < 20000; ++k) {
+      const Dart d = dart(rng);
+      switch (rng() % 3) {
+        case 0:
+          index.set(d, static_cast<std::uint32_t>(k));
+          expected[d] = static_cast<std::uint32_t>(k);
+          break;
+        case 1:
+          index.erase(d);
+          expected.erase(d);
+          break;
+        default: {
+          const auto it = expected.find(d);
+          ASSERT_EQ(index.find(d), it == expected.end() ? OwnerIndex::kNone : it->second)
+              << (sparse ? "hashed" : "array") << ", operation " << k << ", dart " << d;
+        }
+      }
+    }
+    ASSERT_EQ(index.size(), expected.size());
+    for (Dart d = 0; d < 2000; ++d) {
+      const auto it = expected.find(d);
+      ASSERT_EQ(index.find(d), it == expected.end() ? OwnerIndex::kNone : it->second) << d;
+    }
+  }
+  // Left to choose, the smaller kind: 16 cells of 8 bytes against 4 bytes a dart.
+  OwnerIndex few, many;
+  const std::vector<Dart> one{5};
+  few.build(one, 33);
+  many.build(one, 32);
+  EXPECT_TRUE(few.sparse());
+  EXPECT_FALSE(many.sparse());
+  EXPECT_TRUE(OwnerIndex::hashes(1000, 8193));  // a table of 2048 cells
+  EXPECT_FALSE(OwnerIndex::hashes(1000, 4096));
 }
 
 TEST(MatchCache, LostMatchesResetTheirStoredForces) {

@@ -4,12 +4,13 @@
 // is lost is dropped (its stored forces reset by the caller), a support orbit
 // that appears (a split) gets a new match.
 //
-// Re-matching needs the entry each owner dart holds (entry_of_dart_, 4 bytes
-// per dart of the map). A scene that never rewrites never reads it: it is
-// made at the first rematch, from owners_, which build keeps exact, so a
-// 10^6-vertex scene that does not tear does not pay 4 bytes per dart per
-// interaction (96 MB for three interactions of a quad cloth, 560 MB for a
-// hexahedral block), and the first tear pays one pass over the matches.
+// Re-matching needs the entry each owner dart holds (owner_index.hpp: 4 bytes
+// per dart of the map, or a hash table of the owners where they are few). A
+// scene that never rewrites never reads it: it is made at the first rematch,
+// from owners_, which build keeps exact, so a 10^6-vertex scene that does not
+// tear does not pay 4 bytes per dart per interaction (96 MB for three
+// interactions of a quad cloth), and the first tear pays one pass over the
+// matches.
 // A cache built for a map that is never rewritten (keep_owners(false))
 // keeps no owners either: rematch then refuses.
 #pragma once
@@ -23,6 +24,7 @@
 #include "rift/core/memory_report.hpp"
 #include "rift/core/prefetch.hpp"
 #include "rift/gmap/gmap.hpp"
+#include "rift/sim/owner_index.hpp"
 #include "rift/sim/reach.hpp"
 
 namespace rift {
@@ -53,6 +55,12 @@ class MatchCache {
     }
     give_back(matches_);
   }
+  /// Forces the owner index to a hash table (true) or an array (false)
+  /// whatever the share of owners, before the index is made (tests compare
+  /// both kinds on the same rewrites).
+  void force_sparse_index(bool sparse) { sparse_index_ = sparse ? 1 : 0; }
+  /// Whether the owner index is a hash table (owner_index.hpp).
+  bool sparse_index() const { return entry_of_.sparse(); }
   /// Indexes the owners now instead of at the first rematch (tests compare
   /// both ways).
   void index_owners(const GMap& map) {
@@ -61,10 +69,11 @@ class MatchCache {
       throw std::logic_error(
           "MatchCache: re-matching a cache built for a map that is never rewritten");
     }
-    entry_of_dart_.clear();
-    grow_huge(entry_of_dart_, map.capacity(), kNone);
-    for (std::size_t e = 0; e < owners_.size(); ++e)
-      entry_of_dart_[owners_[e]] = static_cast<std::uint32_t>(e);
+    if (sparse_index_ < 0) {
+      entry_of_.build(owners_, map.capacity());
+    } else {
+      entry_of_.build(owners_, map.capacity(), sparse_index_ > 0);
+    }
     indexed_ = true;
     // rematch's lists, with room for the darts around a tear now (a few
     // hundred), so that tears do not grow them one high-water mark at a
@@ -103,7 +112,7 @@ class MatchCache {
     if (keeps_owners_) reserve_huge(owners_, map.capacity());
     // Not indexed until a rematch needs it (index_owners); the memory of an
     // earlier index is given back.
-    give_back(entry_of_dart_);
+    entry_of_.clear();
     indexed_ = false;
   }
   template <class MatchFn>
@@ -153,12 +162,14 @@ class MatchCache {
   void rematch(const GMap& map, Orbit support, const Reach& reach, std::span<const Dart> region,
                MatchFn&& match, LostFn&& lost, Observer& observer, ChooseFn&& choose) {
     index_owners(map);
-    if (entry_of_dart_.size() < map.capacity()) grow_huge(entry_of_dart_, map.capacity(), kNone);
+    entry_of_.cover(map.capacity());
     // Deleted owners first: their matches are gone for good.
     for (Dart d : region) {
-      if (d < entry_of_dart_.size() && entry_of_dart_[d] != kNone && !map.is_alive(d)) {
-        lost(matches_[entry_of_dart_[d]], false);
-        erase(entry_of_dart_[d], observer);
+      if (map.is_alive(d)) continue;
+      const std::uint32_t e = entry_of_.find(d);
+      if (e != kNone) {
+        lost(matches_[e], false);
+        erase(e, observer);
       }
     }
     // The darts whose support orbits may hold a match reading a region dart
@@ -197,7 +208,7 @@ class MatchCache {
         begin = end;
       }
     }
-    if (entry_of_dart_.size() >= kPrefetchFromDarts) prefetch_entries(observer);
+    if (map.capacity() >= kPrefetchFromDarts) prefetch_entries(observer);
     // Each support orbit meeting that neighbourhood: keep one owner, match again.
     const Mark seen = map.reserve_mark();
     seen_.clear();
@@ -207,7 +218,7 @@ class MatchCache {
       map.for_each_in_orbit(d, support, [&](Dart x) {
         map.mark(x, seen);
         seen_.push_back(x);
-        const std::uint32_t e = entry_of_dart_[x];
+        const std::uint32_t e = entry_of_.find(x);
         if (e == kNone) return;
         if (owner == kNoDart) {
           owner = x;
@@ -221,7 +232,7 @@ class MatchCache {
       Match m{};
       const bool matched = match(map, from, m);
       if (owner != kNoDart) {
-        const std::uint32_t e = entry_of_dart_[owner];
+        const std::uint32_t e = entry_of_.find(owner);
         if (matched) {
           observer.replaced(e, matches_[e], m);
           matches_[e] = m;
@@ -249,7 +260,7 @@ class MatchCache {
   void report_memory(MemoryReport& report, std::string_view owner) const {
     report.add(owner, "matches", matches_);
     report.add(owner, "match owners (support darts)", owners_);
-    report.add(owner, "entry of each dart", entry_of_dart_);
+    entry_of_.report_memory(report, owner);
     report.add(owner, "re-match lists", (frontier_.capacity() + seen_.capacity()) * sizeof(Dart));
   }
 
@@ -263,9 +274,9 @@ class MatchCache {
   template <class Observer>
   void prefetch_entries(Observer& observer) const {
     for (Dart d : frontier_)
-      prefetch(&entry_of_dart_[d]);
+      entry_of_.prefetch_owner(d);
     for (Dart d : frontier_) {
-      const std::uint32_t e = entry_of_dart_[d];
+      const std::uint32_t e = entry_of_.find(d);
       if (e == kNone) continue;
       prefetch(&matches_[e]);
       prefetch(&owners_[e]);
@@ -273,17 +284,14 @@ class MatchCache {
     }
     if constexpr (requires(std::uint32_t e) { observer.prefetch_group(e); }) {
       for (Dart d : frontier_) {
-        const std::uint32_t e = entry_of_dart_[d];
+        const std::uint32_t e = entry_of_.find(d);
         if (e != kNone) observer.prefetch_group(e);
       }
     }
   }
 
   void insert(Dart owner, const Match& m) {
-    if (indexed_) {
-      if (entry_of_dart_.size() <= owner) grow_huge(entry_of_dart_, owner + 1, kNone);
-      entry_of_dart_[owner] = static_cast<std::uint32_t>(matches_.size());
-    }
+    if (indexed_) entry_of_.set(owner, static_cast<std::uint32_t>(matches_.size()));
     // Within the headroom of huge_pages.hpp: a tear appends in place.
     push_back_huge(matches_, m);
     if (keeps_owners_) push_back_huge(owners_, owner);
@@ -293,11 +301,11 @@ class MatchCache {
   void erase(std::uint32_t e, Observer& observer) {
     const std::uint32_t last = static_cast<std::uint32_t>(matches_.size() - 1);
     observer.erased(e, last);
-    entry_of_dart_[owners_[e]] = kNone;
+    entry_of_.erase(owners_[e]);
     if (e != last) {
       matches_[e] = matches_[last];
       owners_[e] = owners_[last];
-      entry_of_dart_[owners_[e]] = e;
+      entry_of_.set(owners_[e], e);
     }
     matches_.pop_back();
     owners_.pop_back();
@@ -305,7 +313,8 @@ class MatchCache {
 
   std::vector<Match> matches_;
   std::vector<Dart> owners_;
-  std::vector<std::uint32_t> entry_of_dart_;  ///< empty until indexed_
+  OwnerIndex entry_of_;    ///< empty until indexed_
+  int sparse_index_ = -1;  ///< -1: as OwnerIndex chooses; 0 / 1: forced (tests)
   bool indexed_ = false;
   bool keeps_owners_ = true;  ///< false: never re-matched, owners_ stays empty
   /// Darts rematch's lists have room for from the first re-match on.
