@@ -33,11 +33,11 @@ std::string where_is(const Vec3& p) {
 
 // The selected vertices, or an InputError naming the scene line when the
 // selection holds none.
-std::vector<Dart> selected(const Scene& scene, const GMap& map, const Selection& sel,
-                           const std::string& what) {
+std::vector<Dart> selected(const Scene& scene, const GMap& map, VertexSelector& selector,
+                           const Selection& sel, const std::string& what) {
   std::vector<Dart> found;
   try {
-    found = select_vertices(map, sel, up_of(scene));
+    found = selector.select(sel);
   } catch (const std::invalid_argument& e) {
     throw InputError(scene.path, sel.line, what + ": " + e.what());
   }
@@ -64,7 +64,7 @@ const Pack* pack_with_rule(const PackRegistry& packs, const std::string& rule, i
   return nullptr;
 }
 
-void add_handles(const Scene& scene, Simulation& sim, SetupReport& rep) {
+void add_handles(const Scene& scene, Simulation& sim, VertexSelector& selector, SetupReport& rep) {
   if (scene.handles.empty() && scene.pins.corners.empty() && scene.pins.vertices.empty() &&
       scene.pins.boxes.empty()) {
     return;
@@ -104,7 +104,7 @@ void add_handles(const Scene& scene, Simulation& sim, SetupReport& rep) {
       pins.push_back(s);
     }
     for (const Selection& s : pins) {
-      for (Dart d : selected(scene, m, s, "[pin]")) {
+      for (Dart d : selected(scene, m, selector, s, "[pin]")) {
         if (handles->handle_of(d) < 0) ++rep.pinned_vertices;
         handles->hold(d, h, position[d]);
       }
@@ -112,7 +112,7 @@ void add_handles(const Scene& scene, Simulation& sim, SetupReport& rep) {
   }
   for (const SceneHandle& sh : scene.handles) {
     const std::string what = "[[handle]] '" + sh.motion.name + "'";
-    const std::vector<Dart> vertices = selected(scene, m, sh.select, what);
+    const std::vector<Dart> vertices = selected(scene, m, selector, sh.select, what);
     HandleMotion motion = sh.motion;
     if (!sh.pivot_given) {
       motion.pivot = Vec3::Zero();
@@ -137,7 +137,7 @@ void add_handles(const Scene& scene, Simulation& sim, SetupReport& rep) {
   sim.set_handles(std::move(handles));
 }
 
-void add_loads(const Scene& scene, Simulation& sim) {
+void add_loads(const Scene& scene, Simulation& sim, VertexSelector& selector) {
   GMap& m = sim.map();
   std::shared_ptr<VertexGroups> groups;
   for (const SceneLoad& l : scene.loads) {
@@ -145,7 +145,7 @@ void add_loads(const Scene& scene, Simulation& sim) {
     if (l.select.kind != Selection::Kind::kAll) {
       if (!groups) groups = std::make_shared<VertexGroups>(m);
       const std::vector<Dart> vertices =
-          selected(scene, m, l.select, "[[load]] '" + l.spec.name + "'");
+          selected(scene, m, selector, l.select, "[[load]] '" + l.spec.name + "'");
       try {
         spec.group = groups->add_group();
       } catch (const std::invalid_argument& e) {
@@ -165,7 +165,7 @@ void add_loads(const Scene& scene, Simulation& sim) {
   }
   Embedding<Vec3>& velocity = sim.velocity();
   for (const SceneInitialVelocity& iv : scene.initial_velocities) {
-    for (Dart d : selected(scene, m, iv.select, "[[initial_velocity]]"))
+    for (Dart d : selected(scene, m, selector, iv.select, "[[initial_velocity]]"))
       velocity[d] = iv.velocity;
   }
   if (!scene.obstacles.empty()) {
@@ -361,8 +361,10 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, const PackRegis
   rep.phases.end("masses");
   // Notches first: handles and loads select among the cut mesh's vertices.
   cut_notches(scene, packs, used, *sim, rep);
-  add_handles(scene, *sim, rep);
-  add_loads(scene, *sim);
+  // After the notches: the selections' vertices do not change from here on.
+  VertexSelector selector(sim->map(), up_of(scene));
+  add_handles(scene, *sim, selector, rep);
+  add_loads(scene, *sim, selector);
 
   for (const ComponentUse& u : scene.interactions) {
     auto model = packs.pack_of_interaction(u.name, n)->make_interaction(u);

@@ -12,11 +12,7 @@ namespace rift {
 
 namespace {
 
-struct Frame {
-  Vec3 lo, hi;
-  Vec3 up, right, front;
-  Real scale;
-};
+using Frame = VertexSelector::Frame;
 
 // One dart per vertex, the one and in the order GMap::for_each_cell gives:
 // each vertex's smallest dart, in increasing order. Found as the first dart
@@ -110,13 +106,34 @@ std::string Selection::describe() const {
 }
 
 std::vector<Dart> select_vertices(const GMap& map, const Selection& sel, const Vec3& up) {
-  const Embedding<Vec3> position = map.embedding<Vec3>("position");
+  return VertexSelector(map, up).select(sel);
+}
+
+const std::vector<Dart>& VertexSelector::vertices() {
+  if (!have_vertices_) {
+    vertices_ = vertex_cells(map_, map_.embedding<Vec3>(state::kPosition));
+    have_vertices_ = true;
+  }
+  return vertices_;
+}
+
+const Frame& VertexSelector::frame() {
+  if (!have_frame_) {
+    frame_ = frame_of(vertices(), map_.embedding<Vec3>(state::kPosition), up_);
+    have_frame_ = true;
+  }
+  return frame_;
+}
+
+std::vector<Dart> VertexSelector::select(const Selection& sel) {
+  const GMap& map = map_;
+  const Embedding<Vec3> position = map.embedding<Vec3>(state::kPosition);
   const Orbit vertex = Orbit::cell(0, map.dimension());
   std::vector<Dart> found;
-  // The vertices, listed once for the selection's sweeps (the group's walk
-  // lists its own).
-  std::vector<Dart> vertices;
-  if (sel.kind != Selection::Kind::kGroup) vertices = vertex_cells(map, position);
+  // The vertices, listed once for every selection's sweeps (the group's
+  // walk lists its own).
+  const std::vector<Dart> none;
+  const std::vector<Dart>& vertices = sel.kind != Selection::Kind::kGroup ? this->vertices() : none;
   auto take_where = [&](auto&& pred) {
     for (const Dart d : vertices) {
       if (pred(d)) found.push_back(d);
@@ -178,7 +195,7 @@ std::vector<Dart> select_vertices(const GMap& map, const Selection& sel, const V
     }
     case Selection::Kind::kSide:
     case Selection::Kind::kCorner: {
-      const Frame f = frame_of(vertices, position, up);
+      const Frame& f = frame();
       if (sel.kind == Selection::Kind::kSide) {
         Vec3 axis = f.up;
         if (sel.name == "bottom") axis = -f.up;
