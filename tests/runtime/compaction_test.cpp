@@ -38,6 +38,47 @@ TEST(Compaction, RenumbersDartsAndKeepsTopologyAndValues) {
   EXPECT_EQ(pos.attachment().slot_capacity(), pos.attachment().live_slots());
 }
 
+// Values per dart (<>) live at the dart's own index (attachment.hpp, by
+// dart): compaction moves each to its dart's new index, and a dart index
+// taken again after a deletion starts from the default, not from the value
+// its dead predecessor left.
+TEST(Compaction, ValuesPerDartFollowTheirDarts) {
+  GMap map = assemble_gmap(make_grid(GridKind::Quad, 3, 2));
+  auto tag = map.add_embedding<Real>("tag", Orbit{}, MergePolicy::kKeepFirst, -1.0);
+  ASSERT_TRUE(tag.attachment().by_dart());
+  for (std::size_t k = 0; k < map.capacity(); ++k)
+    tag[static_cast<Dart>(k)] = 100.0 + static_cast<Real>(k);
+  std::vector<Dart> face;
+  map.for_each_in_orbit(0, Orbit{0, 1}, [&](Dart d) { face.push_back(d); });
+  for (Dart d : face) {
+    if (!map.is_free(d, 2)) map.unsew(d, 2);
+  }
+  for (Dart d : face)
+    map.delete_dart(d);
+  ASSERT_TRUE(map.is_valid());
+  EXPECT_EQ(tag.attachment().live_slots(), map.size());
+  const std::size_t old_capacity = map.capacity();
+  const std::vector<Dart> new_index = map.compact();
+  ASSERT_TRUE(map.is_valid());
+  EXPECT_EQ(tag.attachment().slot_capacity(), map.capacity());
+  for (std::size_t old = 0; old < old_capacity; ++old) {
+    if (new_index[old] == kNoDart) continue;
+    EXPECT_EQ(tag[new_index[old]], 100.0 + static_cast<Real>(old)) << "dart " << old;
+  }
+  // A deleted dart's index taken again: its value is the default.
+  const Dart gone = 5;
+  for (int i = 0; i <= 2; ++i) {
+    if (!map.is_free(gone, i)) map.unlink(gone, i);
+  }
+  map.delete_dart(gone);
+  EXPECT_EQ(tag.attachment().slot(gone), kNoSlot);
+  const Dart again = map.create_dart();
+  ASSERT_EQ(again, gone);
+  EXPECT_EQ(tag.attachment().slot(again), kNoSlot);
+  map.assign_missing_slots(*map.attachment_of("tag"));
+  EXPECT_EQ(tag[again], -1.0);
+}
+
 TEST(Compaction, RefusedWhileAMarkIsReserved) {
   GMap map = assemble_gmap(make_grid(GridKind::Quad, 1, 1));
   const Mark m = map.reserve_mark();

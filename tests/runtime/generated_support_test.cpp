@@ -203,10 +203,11 @@ TEST(SlotUpkeep, ANewOrbitGetsTheDefault) {
   EXPECT_EQ(slots.size(), 4u);  // one per vertex of the quad
 }
 
-// Per-dart attachments (<>) have a path of their own in the upkeep (no orbit
-// walk): a dart sharing its slot with a dart met before it takes a copy, a
-// dart without a slot gets the default, every other dart keeps its slot, and
-// a dart listed twice is upkept once.
+// Per-dart attachments (<>) are by dart (attachment.hpp): a dart's slot is
+// the dart itself, never shared. A dart given another's slot takes a copy of
+// its values at once; in the upkeep (no orbit walk) a dart without its value
+// gets the default, every other dart keeps its own, and a dart listed twice
+// is upkept once.
 TEST(SlotUpkeep, PerDartSlotsStayOnePerDart) {
   GMap g(2);
   auto f = g.add_embedding<Real>("f", Orbit{}, MergePolicy::kKeepFirst, -1.0);
@@ -217,23 +218,29 @@ TEST(SlotUpkeep, PerDartSlotsStayOnePerDart) {
   for (std::size_t i = 0; i < darts.size(); ++i)
     f[darts[i]] = static_cast<Real>(i);
   // Darts 1 and 2 given dart 0's slot, as a rewrite copying a dart would
-  // leave them; dart 3 loses its slot.
+  // do: they take copies of its value in their own slots. Dart 3 loses its slot.
   OrbitAttachment* att = nullptr;
   for (const auto& a : g.attachments())
     if (a->orbit().empty()) att = a.get();
   ASSERT_NE(att, nullptr);
   const Slot shared = f.slot(darts[0]);
   const Slot kept = f.slot(darts[4]);
+  ASSERT_TRUE(att->by_dart());
+  EXPECT_EQ(att->slot_data(), nullptr);
   att->assign(darts[1], shared);
   att->assign(darts[2], shared);
+  EXPECT_EQ(f.slot(darts[1]), darts[1]);
   att->release(darts[3]);
+  EXPECT_EQ(f.slot(darts[3]), kNoSlot);
   const std::vector<Dart> listed = {darts[0], darts[1], darts[0], darts[2],
                                     darts[3], darts[4], darts[4]};
   std::vector<Dart> touched;
   update_embedding_slots(g, listed.data(), listed.size(), scratch(), &touched);
   EXPECT_TRUE(g.is_valid());
-  EXPECT_EQ(f.slot(darts[0]), shared);  // met first: keeps it
+  EXPECT_EQ(f.slot(darts[0]), shared);
   EXPECT_EQ(f.slot(darts[4]), kept);
+  for (std::size_t i = 0; i < 5; ++i)
+    EXPECT_EQ(f.slot(darts[i]), darts[i]) << "dart " << i << ": its own slot";
   std::set<Slot> slots;
   for (std::size_t i = 0; i < 5; ++i) {
     ASSERT_NE(f.slot(darts[i]), kNoSlot) << "dart " << i;
@@ -246,7 +253,7 @@ TEST(SlotUpkeep, PerDartSlotsStayOnePerDart) {
   EXPECT_EQ(f[darts[3]], -1.0);  // a new slot: the default
   EXPECT_EQ(f[darts[4]], 4.0);
   const std::set<Dart> moved(touched.begin(), touched.end());
-  EXPECT_EQ(moved, (std::set<Dart>{darts[1], darts[2], darts[3]}));
+  EXPECT_EQ(moved, (std::set<Dart>{darts[3]}));  // the only one given a slot
   EXPECT_EQ(touched.size(), moved.size()) << "a dart touched twice";
 }
 

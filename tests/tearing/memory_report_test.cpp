@@ -31,7 +31,11 @@ void expect_map_counted(const Simulation& sim, const MemoryReport& report) {
         << i;
   }
   const OrbitAttachment& darts = *map.attachment_of("f_stretch");
-  EXPECT_EQ(bytes_of(report, "attachment <>", "slot of each dart"), map.capacity() * sizeof(Slot));
+  // <> is by dart: one bit a dart, no slot of each dart, no darts of each slot.
+  EXPECT_EQ(bytes_of(report, "attachment <>", "darts holding their value (bits)"),
+            (map.capacity() + 63) / 64 * sizeof(std::uint64_t));
+  EXPECT_EQ(bytes_of(report, "attachment <>", "slot of each dart"), 0u);
+  EXPECT_EQ(bytes_of(report, "attachment <>", "darts of each slot"), 0u);
   EXPECT_EQ(bytes_of(report, "column f_stretch", "values"), darts.slot_capacity() * sizeof(Vec3));
   const OrbitAttachment& vertices = sim.position().attachment();
   EXPECT_EQ(bytes_of(report, "column position", "values"), vertices.slot_capacity() * sizeof(Vec3));

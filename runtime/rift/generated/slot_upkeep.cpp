@@ -47,43 +47,20 @@ class ClaimedSlots {
   std::size_t mask_ = 0;
 };
 
-// update_embedding_slots for a per-dart attachment (<>): each dart is its
-// own orbit, so the general case's orbit walk, lists and merges reduce to
-// "keep the dart's slot unless another dart of the rewrite kept it first".
-// The same slots and copies as the general case, without its orbit walk,
-// lists and search of the orbit's slots per dart. Only rewrites that create
-// or delete darts come here (the others skip per-dart attachments, whose
-// orbits they cannot change); before that skip it was 6 % of the upkeep of
-// a spring split.
+// update_embedding_slots for a per-dart attachment (<>), which is by dart
+// (attachment.hpp): each dart is its own orbit and its slot is the dart, so
+// the general case's orbit walk, lists and merges reduce to giving each dart
+// without its value (new, or an index taken again) its own slot with the
+// defaults. Only rewrites that create or delete darts come here (the others
+// skip per-dart attachments, whose orbits they cannot change).
 void update_dart_slots(GMap& g, OrbitAttachment& att, const Dart* darts, std::size_t count,
-                       Scratch& s, std::vector<Dart>* touched) {
-  const Mark m = g.reserve_mark();  // a dart listed twice is upkept once
-  ClaimedSlots claimed(s.claimed, count);
-  s.marked.clear();
+                       std::vector<Dart>* touched) {
   for (std::size_t k = 0; k < count; ++k) {
     const Dart x = darts[k];
-    if (g.is_marked(x, m)) continue;
-    g.mark(x, m);
-    s.marked.push_back(x);
-    const Slot slot = att.slot(x);
-    Slot keep = slot;
-    if (slot == kNoSlot) {
-      keep = att.allocate_slot();
-    } else if (claimed.contains(slot)) {
-      // Shared with a dart met before: split off, this dart takes a copy.
-      keep = att.allocate_slot();
-      for (const auto& column : att.columns())
-        column->copy_slot(slot, keep);
-    }
-    claimed.insert(keep);
-    if (keep != slot) {
-      att.assign(x, keep);
-      if (touched) touched->push_back(x);
-    }
+    if (!g.is_alive(x) || att.slot(x) != kNoSlot) continue;
+    att.hold(x);  // a dart listed twice is held at its first listing
+    if (touched) touched->push_back(x);
   }
-  for (Dart x : s.marked)
-    g.unmark(x, m);
-  g.free_mark(m);
 }
 
 }  // namespace
@@ -97,6 +74,7 @@ void update_embedding_slots(GMap& g, const Dart* darts, std::size_t count, Scrat
     for (const auto& attachment : g.attachments()) {
       if (attachment->dormant() || !changes.may_change(attachment->orbit())) continue;
       const Slot* slots = attachment->slot_data();
+      if (!slots) continue;  // by dart: nothing to read
       for (std::size_t k = 0; k < count; ++k)
         prefetch(slots + darts[k]);
     }
@@ -109,7 +87,7 @@ void update_embedding_slots(GMap& g, const Dart* darts, std::size_t count, Scrat
     // of a cloth's six attachments after a tear.
     if (!changes.may_change(att.orbit())) continue;
     if (att.orbit().empty()) {
-      update_dart_slots(g, att, darts, count, s, touched);
+      update_dart_slots(g, att, darts, count, touched);
       continue;
     }
     const Mark m = g.reserve_mark();

@@ -313,6 +313,13 @@ void GMap::assign_missing_slots(OrbitAttachment& att) const {
   // that out (15 such passes were half a second of a 10^6-vertex block's
   // set-up, issue 12). Only live darts hold slots (release), so the count says it.
   if (att.slotted_darts() == size()) return;
+  if (att.by_dart()) {
+    // Each dart its own slot: no walk, no numbering.
+    for (std::size_t k = 0; k < alive_.size(); ++k) {
+      if (alive_[k]) att.hold(static_cast<Dart>(k));
+    }
+    return;
+  }
   const Orbit o = att.orbit();
   if (att.live_slots() == 0) {
     // A fresh attachment: each orbit takes the next slot when the sweep in
@@ -417,6 +424,20 @@ std::vector<std::string> GMap::check_validity(std::size_t limit) const {
     if (full()) break;
     if (att->dormant()) continue;  // no slots to check
     const Orbit o = att->orbit();
+    if (att->by_dart()) {
+      // Each live dart holds its own slot, which no other dart can share.
+      for (std::size_t k = 0; k < n && !full(); ++k) {
+        if (alive_[k] && att->slot(static_cast<Dart>(k)) == kNoSlot) {
+          problems.push_back("embedding on <>: dart " + std::to_string(k) + " has no value");
+        }
+      }
+      if (problems.empty() && att->slotted_darts() != size()) {
+        problems.push_back("embedding on <>: counts " + std::to_string(att->slotted_darts()) +
+                           " darts with a value, the map has " + std::to_string(size()));
+      }
+      if (!problems.empty()) break;
+      continue;
+    }
     const Slot* slot = att->slot_data();
     const std::size_t slots = att->slot_capacity();
     validity_count_.assign(slots, 0);

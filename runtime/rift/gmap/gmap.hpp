@@ -35,8 +35,9 @@ class EmbeddingReader {
   EmbeddingReader(const Slot* slots, const T* values, Slot mask)
       : slots_(slots), values_(values), mask_(mask) {}
 
-  const T& operator[](Dart d) const { return values_[slots_[d] & mask_]; }
-  Slot slot(Dart d) const { return slots_[d]; }
+  // No slot array: an attachment by dart (<>), where a live dart's slot is itself.
+  const T& operator[](Dart d) const { return values_[slot(d) & mask_]; }
+  Slot slot(Dart d) const { return slots_ ? slots_[d] : d; }
 
  private:
   const Slot* slots_;
