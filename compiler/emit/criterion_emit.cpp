@@ -209,9 +209,13 @@ void emit_criterion(Writer& w, const lower::CriterionPlan& plan, const PackModel
   // The map does not change during collect: each embedding's arrays are
   // taken once per block (EmbeddingReader), locals of the block that the
   // cells' loop keeps in registers, not checked again at every read.
+  // Each reader knows how its attachment holds slots (ReadBy): a value on
+  // <> is read by dart, the others through the slot array, no test per read.
   for (const std::string& name : criterion_embeddings(plan)) {
-    w.line("[[maybe_unused]] const rift::EmbeddingReader<" + embedding_storage(model, name) + "> " +
-           reader_var(name) + " = " + embedding_var(name) + ".reader();");
+    const std::string by =
+        model.plan->per_dart.count(name) ? "rift::ReadBy::kDart" : "rift::ReadBy::kSlot";
+    w.line("[[maybe_unused]] const rift::EmbeddingReader<" + embedding_storage(model, name) + ", " +
+           by + "> " + reader_var(name) + " = " + embedding_var(name) + ".reader<" + by + ">();");
   }
   // The cell's body is a lambda (it leaves a cell by `return`), inlined into
   // the loop.

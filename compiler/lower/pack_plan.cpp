@@ -30,8 +30,10 @@ PackPlan plan_pack(const ast::Program& program, const std::vector<check::Checked
                    const std::vector<check::CheckedInteraction>& interactions,
                    const resolve::Symbols& symbols, const check::ExprTypes& types) {
   PackPlan plan;
-  for (const auto& [name, e] : symbols.embeddings)
+  for (const auto& [name, e] : symbols.embeddings) {
     plan.embedding_types.emplace(name, e->type);
+    if (e->orbit.dims.empty()) plan.per_dart.insert(name);
+  }
   for (const ast::File& file : program.files) {
     for (const ast::Embedding& e : file.embeddings) {
       if (symbols.embedding(e.name.text) != &e) continue;

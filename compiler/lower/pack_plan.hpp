@@ -5,6 +5,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,9 @@ struct PackPlan {
   std::vector<ScriptPlan> imported_scripts;
   /// The type of every embedding a name can refer to.
   std::map<std::string, ast::Type, std::less<>> embedding_types;
+  /// The embeddings of those on <>: the runtime keeps their values by dart
+  /// (rift/embed/attachment.hpp), and generated readers read them so.
+  std::set<std::string, std::less<>> per_dart;
 };
 
 PackPlan plan_pack(const ast::Program& program, const std::vector<check::CheckedRule>& rules,

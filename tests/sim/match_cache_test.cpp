@@ -63,6 +63,22 @@ struct HingeKernel {
 
 using Hinge = CachedInteraction<HingeKernel>;
 
+// An 8×8 quad grid with its hinges set up, and the match and lost callbacks
+// of MatchCache for caches built beside the interaction's own.
+struct HingeGrid {
+  GMap map = assemble_gmap(make_generated_mesh("grid:quad:8x8"));
+  Hinge hinge;
+  HingeGrid() { hinge.initialise(map); }
+  auto match() {
+    return [this](const GMap& m, Dart x, HingeKernel::Match& out) {
+      return hinge.kernel().match(m, x, out);
+    };
+  }
+  static auto lost() {
+    return [](const HingeKernel::Match&, bool) {};
+  }
+};
+
 // The same kernel with its force targets: CachedInteraction scatters it in
 // the order of a ScatterColouring.
 struct ColouredHingeKernel : HingeKernel {
@@ -227,13 +243,11 @@ TEST(MatchCache, TheScatterColouringFollowsLocalRematches) {
 // the same tears and sews, a cache indexed at its build and one indexed at its
 // first rematch hold the same matches, with the same owners, in the same order.
 TEST(MatchCache, AnOwnerIndexMadeAtTheFirstTearEqualsOneMadeAtTheBuild) {
-  GMap map = assemble_gmap(make_generated_mesh("grid:quad:8x8"));
-  Hinge hinge;
-  hinge.initialise(map);
-  auto match = [&](const GMap& m, Dart x, HingeKernel::Match& out) {
-    return hinge.kernel().match(m, x, out);
-  };
-  auto lost = [](const HingeKernel::Match&, bool) {};
+  HingeGrid grid;
+  GMap& map = grid.map;
+  const Hinge& hinge = grid.hinge;
+  auto match = grid.match();
+  auto lost = HingeGrid::lost();
   MatchCache<HingeKernel::Match> eager, lazy;
   eager.build(map, Orbit{2}, match);
   eager.index_owners(map);
@@ -272,13 +286,11 @@ TEST(MatchCache, AnOwnerIndexMadeAtTheFirstTearEqualsOneMadeAtTheBuild) {
 // cache of each kind holds the same matches, with the same owners, in the
 // same order: the kind changes memory, never the matches.
 TEST(MatchCache, AHashedOwnerIndexGivesTheMatchesOfAnArrayIndex) {
-  GMap map = assemble_gmap(make_generated_mesh("grid:quad:8x8"));
-  Hinge hinge;
-  hinge.initialise(map);
-  auto match = [&](const GMap& m, Dart x, HingeKernel::Match& out) {
-    return hinge.kernel().match(m, x, out);
-  };
-  auto lost = [](const HingeKernel::Match&, bool) {};
+  HingeGrid grid;
+  GMap& map = grid.map;
+  const Hinge& hinge = grid.hinge;
+  auto match = grid.match();
+  auto lost = HingeGrid::lost();
   MatchCache<HingeKernel::Match> array, hashed;
   array.force_sparse_index(false);
   hashed.force_sparse_index(true);

@@ -8,6 +8,7 @@
 #include <array>
 #include <cassert>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,23 +22,36 @@ namespace rift {
 /// Handle to one mark; at most kMaxMarks are reserved at a time.
 using Mark = int;
 
+/// How an EmbeddingReader finds a dart's slot: through the attachment's slot
+/// array (kSlot), as the dart itself (kDart: an attachment on <>, by dart,
+/// attachment.hpp), or either, told at each read (kAny). Generated code knows
+/// each embedding's orbit and asks for kSlot or kDart: no test per read.
+enum class ReadBy { kAny, kSlot, kDart };
+
 /// Reads of one embedding for a pass that neither adds darts nor gives the
 /// column storage (a criterion's collect): the slot and value arrays are
-/// taken once, so each read is two plain loads that the compiler may share
-/// and reorder. Embedding's own reads check the column's storage with an
-/// acquire load each, which keeps the compiler from reusing any address
-/// across them. A column without storage reads its default: every slot is
-/// masked to 0 and the values point at the default.
-template <class T>
+/// taken once, so each read is two plain loads (one by dart) that the
+/// compiler may share and reorder. Embedding's own reads check the column's
+/// storage with an acquire load each, which keeps the compiler from reusing
+/// any address across them. A column without storage reads its default:
+/// every slot is masked to 0 and the values point at the default.
+template <class T, ReadBy kBy = ReadBy::kAny>
 class EmbeddingReader {
  public:
   using value_type = T;
   EmbeddingReader(const Slot* slots, const T* values, Slot mask)
       : slots_(slots), values_(values), mask_(mask) {}
 
-  // No slot array: an attachment by dart (<>), where a live dart's slot is itself.
   const T& operator[](Dart d) const { return values_[slot(d) & mask_]; }
-  Slot slot(Dart d) const { return slots_ ? slots_[d] : d; }
+  Slot slot(Dart d) const {
+    if constexpr (kBy == ReadBy::kDart) {
+      return d;
+    } else if constexpr (kBy == ReadBy::kSlot) {
+      return slots_[d];
+    } else {
+      return slots_ ? slots_[d] : d;  // no slot array: by dart
+    }
+  }
 
  private:
   const Slot* slots_;
@@ -60,8 +74,17 @@ class Embedding {
   const T& operator[](Dart d) const { return column_->read(attachment_->slot(d)); }
   Slot slot(Dart d) const { return attachment_->slot(d); }
   /// Reads for one pass over an unchanging map (EmbeddingReader); valid
-  /// until a dart is created or the column gets storage.
-  EmbeddingReader<T> reader() const {
+  /// until a dart is created or the column gets storage. kBy kSlot or kDart
+  /// must say how the attachment holds its slots (checked here, once).
+  template <ReadBy kBy = ReadBy::kAny>
+  EmbeddingReader<T, kBy> reader() const {
+    if constexpr (kBy != ReadBy::kAny) {
+      if (attachment_->by_dart() != (kBy == ReadBy::kDart)) {
+        throw std::logic_error("embedding '" + column_->name() + "' on " +
+                               attachment_->orbit().str() + " read " +
+                               (kBy == ReadBy::kDart ? "by dart" : "by slot"));
+      }
+    }
     if (const T* values = column_->storage()) return {attachment_->slot_data(), values, ~Slot{0}};
     return {attachment_->slot_data(), &column_->default_value(), 0};
   }

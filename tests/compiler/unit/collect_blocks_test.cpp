@@ -51,7 +51,8 @@ TEST(CollectBlocks, ReadersAreTakenPerBlockAndTheCellsLoopedInside) {
         rift::compiler_test::function_text(code, std::string(name) + "Criterion::collect(");
     ASSERT_FALSE(collect.empty()) << name << ":\n" << code;
     const std::size_t block = collect.find("std::span<const rift::Dart> cells");
-    const std::size_t reader = collect.find("= e_f_dart.reader();");
+    // f_dart lives on <>: read by dart, without a slot array or a test per read.
+    const std::size_t reader = collect.find("= e_f_dart.reader<rift::ReadBy::kDart>();");
     const std::size_t loop = collect.find(" : cells) {");
     const std::size_t body = collect.find("[&]() RIFT_CELL_BODY {");
     ASSERT_NE(block, std::string::npos) << name << ":\n" << collect;

@@ -266,8 +266,8 @@ void StretchStrainCriterion::initialise(rift::GMap& g) {
 
 void StretchStrainCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   cells_.collect(g, rift::Orbit{0}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Real> r_stretch_rest = e_stretch_rest.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kSlot> r_position = e_position.reader<rift::ReadBy::kSlot>();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Real, rift::ReadBy::kSlot> r_stretch_rest = e_stretch_rest.reader<rift::ReadBy::kSlot>();
     for (const rift::Dart d_a : cells) {
       [&]() RIFT_CELL_BODY {
         const rift::Real l_l = ((r_position[g.alpha(d_a, 0)] - r_position[d_a])).norm();
@@ -300,7 +300,7 @@ void StretchForceCriterion::initialise(rift::GMap& g) {
 
 void StretchForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   cells_.collect(g, rift::Orbit{0}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_stretch = e_f_stretch.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kDart> r_f_stretch = e_f_stretch.reader<rift::ReadBy::kDart>();
     for (const rift::Dart d_a : cells) {
       [&]() RIFT_CELL_BODY {
         const rift::Real measure = (r_f_stretch[d_a]).norm();
@@ -332,7 +332,7 @@ void SpringSplitCriterion::initialise(rift::GMap& g) {
 
 void SpringSplitCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   cells_.collect(g, rift::Orbit{0}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_stretch = e_f_stretch.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kDart> r_f_stretch = e_f_stretch.reader<rift::ReadBy::kDart>();
     for (const rift::Dart d_a : cells) {
       [&]() RIFT_CELL_BODY {
         const rift::Real measure = (r_f_stretch[d_a]).norm();
@@ -368,7 +368,7 @@ void ShearForceCriterion::initialise(rift::GMap& g) {
 
 void ShearForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   cells_.collect(g, rift::Orbit{0, 1}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_shear = e_f_shear.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kSlot> r_f_shear = e_f_shear.reader<rift::ReadBy::kSlot>();
     for (const rift::Dart d_f : cells) {
       [&]() RIFT_CELL_BODY {
         rift::throw_if_interrupted();
@@ -402,8 +402,8 @@ void BendForceCriterion::initialise(rift::GMap& g) {
 
 void BendForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   cells_.collect(g, rift::Orbit{2}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_abend = e_f_abend.reader();
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_bend = e_f_bend.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kDart> r_f_abend = e_f_abend.reader<rift::ReadBy::kDart>();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kDart> r_f_bend = e_f_bend.reader<rift::ReadBy::kDart>();
     for (const rift::Dart d_d : cells) {
       [&]() RIFT_CELL_BODY {
         if (g.is_free(d_d, 2)) return;
@@ -439,8 +439,8 @@ void ElementStressCriterion::initialise(rift::GMap& g) {
 
 void ElementStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   cells_.collect(g, rift::Orbit{0, 1}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_membrane = e_f_membrane.reader();
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kSlot> r_f_membrane = e_f_membrane.reader<rift::ReadBy::kSlot>();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kSlot> r_position = e_position.reader<rift::ReadBy::kSlot>();
     for (const rift::Dart d_f : cells) {
       [&]() RIFT_CELL_BODY {
         rift::throw_if_interrupted();
@@ -477,9 +477,9 @@ void InteractionForceCriterion::initialise(rift::GMap& g) {
 
 void InteractionForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_membrane = e_f_membrane.reader();
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_shear = e_f_shear.reader();
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_stretch = e_f_stretch.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kSlot> r_f_membrane = e_f_membrane.reader<rift::ReadBy::kSlot>();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kSlot> r_f_shear = e_f_shear.reader<rift::ReadBy::kSlot>();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kDart> r_f_stretch = e_f_stretch.reader<rift::ReadBy::kDart>();
     for (const rift::Dart d_v : cells) {
       [&]() RIFT_CELL_BODY {
         rift::throw_if_interrupted();
@@ -514,9 +514,9 @@ void VertexStressCriterion::initialise(rift::GMap& g) {
 
 void VertexStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Real> r_stress_mass = e_stress_mass.reader();
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Mat3> r_stress_weighted = e_stress_weighted.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kSlot> r_position = e_position.reader<rift::ReadBy::kSlot>();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Real, rift::ReadBy::kSlot> r_stress_mass = e_stress_mass.reader<rift::ReadBy::kSlot>();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Mat3, rift::ReadBy::kSlot> r_stress_weighted = e_stress_weighted.reader<rift::ReadBy::kSlot>();
     for (const rift::Dart d_v : cells) {
       [&]() RIFT_CELL_BODY {
         const rift::Real l_mass = r_stress_mass[d_v];
@@ -559,11 +559,11 @@ void VertexEnergyCriterion::initialise(rift::GMap& g) {
 void VertexEnergyCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   memo0_.begin(g, rift::Orbit{0, 1});
   cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kOneThread, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Real> r_corner_mass = e_corner_mass.reader();
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_membrane = e_f_membrane.reader();
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Real> r_membrane_lambda = e_membrane_lambda.reader();
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Real> r_membrane_mu = e_membrane_mu.reader();
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Real, rift::ReadBy::kSlot> r_corner_mass = e_corner_mass.reader<rift::ReadBy::kSlot>();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kSlot> r_f_membrane = e_f_membrane.reader<rift::ReadBy::kSlot>();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Real, rift::ReadBy::kSlot> r_membrane_lambda = e_membrane_lambda.reader<rift::ReadBy::kSlot>();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Real, rift::ReadBy::kSlot> r_membrane_mu = e_membrane_mu.reader<rift::ReadBy::kSlot>();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kSlot> r_position = e_position.reader<rift::ReadBy::kSlot>();
     for (const rift::Dart d_v : cells) {
       [&]() RIFT_CELL_BODY {
         rift::throw_if_interrupted();
@@ -608,8 +608,8 @@ void VertexSumCriterion::initialise(rift::GMap& g) {
 
 void VertexSumCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   cells_.collect(g, rift::Orbit{1, 2}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_vertex_force = e_vertex_force.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kSlot> r_position = e_position.reader<rift::ReadBy::kSlot>();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kSlot> r_vertex_force = e_vertex_force.reader<rift::ReadBy::kSlot>();
     for (const rift::Dart d_v : cells) {
       [&]() RIFT_CELL_BODY {
         const rift::Real measure = (r_vertex_force[d_v]).norm();
@@ -648,10 +648,10 @@ void AtomicEdgeCriterion::initialise(rift::GMap& g) {
 
 void AtomicEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   cells_.collect(g, rift::Orbit{0, 2}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_membrane = e_f_membrane.reader();
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_shear = e_f_shear.reader();
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_f_stretch = e_f_stretch.reader();
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kSlot> r_f_membrane = e_f_membrane.reader<rift::ReadBy::kSlot>();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kSlot> r_f_shear = e_f_shear.reader<rift::ReadBy::kSlot>();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kDart> r_f_stretch = e_f_stretch.reader<rift::ReadBy::kDart>();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kSlot> r_position = e_position.reader<rift::ReadBy::kSlot>();
     for (const rift::Dart d_a : cells) {
       [&]() RIFT_CELL_BODY {
         if (g.is_free(d_a, 2)) return;
@@ -697,8 +697,8 @@ void GlobalEdgeCriterion::initialise(rift::GMap& g) {
 
 void GlobalEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCandidate>& out) const {
   cells_.collect(g, rift::Orbit{0, 2}, rift::generated::CollectOn::kEveryCore, out, [&](std::span<const rift::Dart> cells, std::vector<rift::TearCandidate>& found) {
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_position = e_position.reader();
-    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3> r_vertex_force = e_vertex_force.reader();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kSlot> r_position = e_position.reader<rift::ReadBy::kSlot>();
+    [[maybe_unused]] const rift::EmbeddingReader<rift::Vec3, rift::ReadBy::kSlot> r_vertex_force = e_vertex_force.reader<rift::ReadBy::kSlot>();
     for (const rift::Dart d_a : cells) {
       [&]() RIFT_CELL_BODY {
         if (g.is_free(d_a, 2)) return;
