@@ -5,9 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 #include "rift/core/huge_pages.hpp"
+#include "rift/core/parallel.hpp"
 
 namespace rift {
 namespace {
@@ -17,6 +23,11 @@ struct FactorGuard {
   std::size_t saved = headroom_factor();
   std::size_t saved_min = headroom_min_bytes();
   ~FactorGuard() { set_headroom_factor(saved, saved_min); }
+};
+
+/// Restores the thread count when a test ends.
+struct ThreadsGuard {
+  ~ThreadsGuard() { set_thread_count(0); }
 };
 
 // Large enough to be advised for huge pages (2^21 x 4 bytes = 8 MiB).
@@ -108,6 +119,104 @@ TEST(HugeArrays, ASmallArrayGetsExactlyWhatItAsksFor) {
   reserve_huge(large, kLarge);
   EXPECT_GE(large.capacity(), 2 * kLarge);
 }
+
+#if defined(__linux__)
+#ifndef MADV_POPULATE_WRITE
+#define MADV_POPULATE_WRITE 23
+#endif
+
+/// A fresh anonymous mapping of `bytes`, none of its pages resident.
+struct FreshPages {
+  explicit FreshPages(std::size_t n) : bytes(n) {
+    void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    data = p == MAP_FAILED ? nullptr : static_cast<char*>(p);
+    // Pages of 4 KiB whatever the system's huge page setting: a write then
+    // makes exactly its own page resident.
+    if (data) madvise(data, bytes, MADV_NOHUGEPAGE);
+  }
+  ~FreshPages() {
+    if (data) munmap(data, bytes);
+  }
+  FreshPages(const FreshPages&) = delete;
+  FreshPages& operator=(const FreshPages&) = delete;
+  /// Resident pages among [from, from + n) (mincore).
+  std::size_t resident(std::size_t from, std::size_t n) const {
+    const std::size_t page = 4096;
+    std::vector<unsigned char> in((n + page - 1) / page);
+    if (mincore(data + from, n, in.data()) != 0) return 0;
+    std::size_t count = 0;
+    for (unsigned char c : in)
+      count += c & 1u;
+    return count;
+  }
+  std::size_t bytes;
+  char* data = nullptr;
+};
+
+bool kernel_populates() {
+  const FreshPages probe(4096);
+  return probe.data && madvise(probe.data, 4096, MADV_POPULATE_WRITE) == 0;
+}
+
+// The first write of a large array faults its pages in on every thread
+// (populate_for_write), and only faults them in: bytes written before, in
+// the pages at either end of an unaligned range, keep their values.
+TEST(HugeArrays, PopulatingFaultsInEveryPageOfTheRangeAndWritesNothing) {
+  if (!kernel_populates()) GTEST_SKIP() << "no MADV_POPULATE_WRITE (Linux < 5.14)";
+  const ThreadsGuard guard;
+  const std::size_t page = 4096;
+  const std::size_t bytes = kPopulateMinBytes + 6 * page;
+  FreshPages fresh(bytes);
+  ASSERT_NE(fresh.data, nullptr);
+  fresh.data[page + 10] = 'a';          // in the range's first page
+  fresh.data[bytes - page - 20] = 'z';  // in its last page
+  fresh.data[bytes - 5] = 'q';          // a page after it
+  const std::size_t from = page + 100, to = bytes - page - 10;
+  ASSERT_EQ(fresh.resident(2 * page, bytes - 4 * page), 0u);
+
+  set_thread_count(1);
+  populate_for_write(fresh.data + from, to - from);
+  EXPECT_EQ(fresh.resident(2 * page, bytes - 4 * page), 0u) << "one thread: left to the write";
+
+  set_thread_count(2);
+  populate_for_write(fresh.data + from, to - from);
+  const std::size_t inside = (bytes - 2 * page) / page;  // pages [page, bytes - page)
+  EXPECT_EQ(fresh.resident(page, bytes - 2 * page), inside);
+  EXPECT_EQ(fresh.data[page + 10], 'a');
+  EXPECT_EQ(fresh.data[bytes - page - 20], 'z');
+  EXPECT_EQ(fresh.data[bytes - 5], 'q');
+  EXPECT_EQ(fresh.data[from], 0);
+
+  // Below the threshold nothing is done.
+  FreshPages small(kPopulateMinBytes / 2);
+  ASSERT_NE(small.data, nullptr);
+  populate_for_write(small.data, small.bytes);
+  EXPECT_EQ(small.resident(0, small.bytes), 0u);
+}
+
+// A large array grown on two threads holds what it would on one.
+TEST(HugeArrays, GrowthOnTwoThreadsKeepsAndFillsTheValues) {
+  const ThreadsGuard guard;
+  set_thread_count(2);
+  const std::size_t n = 3 * kPopulateMinBytes / sizeof(std::uint64_t) + 5;
+  std::vector<std::uint64_t> v;
+  grow_huge(v, 1000, std::uint64_t{3});
+  for (std::size_t i = 0; i < v.size(); ++i)
+    v[i] = i;
+  grow_huge(v, n, std::uint64_t{7});  // a new buffer: populated, copied, filled
+  ASSERT_EQ(v.size(), n);
+  for (std::size_t i = 0; i < 1000; ++i)
+    ASSERT_EQ(v[i], i);
+  for (std::size_t i = 1000; i < n; ++i)
+    ASSERT_EQ(v[i], 7u) << i;
+  const std::uint64_t* before = v.data();
+  grow_huge(v, n + n / 2, std::uint64_t{9});  // within the headroom: populated, filled
+  EXPECT_EQ(v.data(), before);
+  EXPECT_EQ(v[n - 1], 7u);
+  EXPECT_EQ(v[n], 9u);
+  EXPECT_EQ(v.back(), 9u);
+}
+#endif
 
 }  // namespace
 }  // namespace rift

@@ -290,7 +290,7 @@ OrbitAttachment* GMap::attachment_of(std::string_view name) const {
 void GMap::wake(OrbitAttachment& att) const {
   if (!att.dormant()) return;
   att.wake(alive_.size());
-  assign_missing_slots(att);
+  give_missing_slots(att, true);
 }
 
 // A fresh attachment (every embedding declared at set-up) has no slot on any
@@ -301,22 +301,33 @@ void GMap::wake(OrbitAttachment& att) const {
 // assignment (issue 12). Slots are numbered by each orbit's smallest dart, as
 // the general walk numbers them, so both give the same slots.
 void GMap::assign_missing_slots(OrbitAttachment& att) const {
-  if (att.dormant()) {
+  const bool woken = att.dormant();
+  if (woken) {
     // A sum of two non-zero defaults is not the default: sews and rewrites
     // must merge such a column's values, so its attachment keeps slots from
     // its declaration on.
     if (!merges_away_from_default(att)) return;
     att.wake(alive_.size());
   }
+  give_missing_slots(att, woken);
+}
+
+void GMap::give_missing_slots(OrbitAttachment& att, bool just_woken) const {
   // Every live dart holds a slot already (a pack declaring one more column on
   // an awake attachment): nothing to do, and no pass over the darts to find
   // that out (15 such passes were half a second of a 10^6-vertex block's
   // set-up, issue 12). Only live darts hold slots (release), so the count says it.
   if (att.slotted_darts() == size()) return;
   if (att.by_dart()) {
-    // Each dart its own slot: no walk, no numbering.
+    // Each dart its own slot: no walk, no numbering. Columns just woken
+    // hold their defaults everywhere already.
     for (std::size_t k = 0; k < alive_.size(); ++k) {
-      if (alive_[k]) att.hold(static_cast<Dart>(k));
+      if (!alive_[k]) continue;
+      if (just_woken) {
+        att.hold_as_grown(static_cast<Dart>(k));
+      } else {
+        att.hold(static_cast<Dart>(k));
+      }
     }
     return;
   }

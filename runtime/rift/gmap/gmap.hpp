@@ -293,6 +293,9 @@ class GMap {
   std::vector<Dart> compact();
 
  private:
+  /// assign_missing_slots on an awake attachment; `just_woken`: its columns
+  /// hold their defaults everywhere (wake grew them from nothing).
+  void give_missing_slots(OrbitAttachment& attachment, bool just_woken) const;
   OrbitAttachment& attachment_for(Orbit orbit);
   /// Fills `pairs` (x0, y0, x1, y1, ...) with the darts sew(a, b, i) links;
   /// returns the reason when the two orbits cannot be paired.
