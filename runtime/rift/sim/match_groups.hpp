@@ -140,8 +140,9 @@ class MatchGroups {
     keys_.clear();
     give_back(group_of_);
     give_back(next_);
-    if (keep_ == Keep::kEverything) group_of_.assign(matches.size(), kNone);
-    if (keep_ != Keep::kCounts) next_.assign(matches.size(), kNone);
+    // Filled at once: large ones in huge pages, faulted in on every thread.
+    if (keep_ == Keep::kEverything) grow_huge(group_of_, matches.size(), kNone);
+    if (keep_ != Keep::kCounts) grow_huge(next_, matches.size(), kNone);
     // Never more groups than matches: reserved once (advised for huge pages),
     // the per-group arrays neither move nor fault in 4 KiB at a time, and
     // only what the groups fill becomes resident (issue 12's set-up).
