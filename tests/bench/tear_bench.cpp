@@ -11,6 +11,8 @@
 
 #include <sys/resource.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <map>
 
@@ -115,6 +117,21 @@ TearingCloth inner_tears(rift::GridKind kind, int n) {
   return c;
 }
 
+// Profiling the tears alone (docs/performance.md, "Profiling one tear"):
+// with RIFT_PERF_CTL naming the control FIFO of `perf record -D -1
+// --control=fifo:...`, sampling is on only while the loop below tears, not
+// while cloths are built (a 10^6-vertex build takes seconds, 4000 tears a
+// fifth of one).
+void profile_tears(bool on) {
+  static FILE* const control = [] {
+    const char* path = std::getenv("RIFT_PERF_CTL");
+    return path ? std::fopen(path, "w") : nullptr;
+  }();
+  if (!control) return;
+  std::fputs(on ? "enable\n" : "disable\n", control);
+  std::fflush(control);
+}
+
 void BM_OneTear(benchmark::State& state, rift::GridKind kind, bool inner) {
   const int n = static_cast<int>(state.range(0));
   const auto make = [&] { return inner ? inner_tears(kind, n) : stretched_cloth(kind, n); };
@@ -132,10 +149,15 @@ void BM_OneTear(benchmark::State& state, rift::GridKind kind, bool inner) {
   long faults = 0;
   double faulting_spent = 0;
   std::size_t faulting_tears = 0;
+  profile_tears(true);
   for (auto _ : state) {
     double spent = 0;
     for (;;) {
-      if (c.next == c.candidates.size()) c = make();
+      if (c.next == c.candidates.size()) {
+        profile_tears(false);
+        c = make();
+        profile_tears(true);
+      }
       const rift::TearCandidate& cand = c.candidates[c.next++];
       if (!c.sim->map().is_alive(cand.at)) continue;
       touched.clear();
@@ -158,6 +180,7 @@ void BM_OneTear(benchmark::State& state, rift::GridKind kind, bool inner) {
     total_spent += spent;
     state.SetIterationTime(spent);
   }
+  profile_tears(false);
   state.counters["vertices"] = static_cast<double>(c.sim->map().count_cells(rift::Orbit{1, 2}));
   // How many darts a tear rewrites, on average: its work, which should not
   // depend on the cloth's size (46 at 10x10, 42 at 1000x1000 in one run), so
@@ -188,8 +211,18 @@ void BM_OneTear(benchmark::State& state, rift::GridKind kind, bool inner) {
 // whose tear counts followed the machine's speed), so with a count of its
 // own each binary and each run of a binary tears the same candidates, in the
 // same order, and two binaries compare at equal work.
+// RIFT_TEAR_ITERS sets another count (a profile wants more tears: 20000 inner
+// tears fit in one 10^6-vertex cloth).
 static void tear_runs(benchmark::internal::Benchmark* b) {
-  b->Arg(10)->Arg(100)->Arg(1000)->Iterations(4000)->UseManualTime()->Unit(benchmark::kMicrosecond);
+  const char* count = std::getenv("RIFT_TEAR_ITERS");
+  char* end = nullptr;
+  long tears = count ? std::strtol(count, &end, 10) : 4000;
+  if (count && (*end != '\0' || tears <= 0)) {
+    std::fprintf(stderr, "RIFT_TEAR_ITERS=%s is not a positive count: 4000 tears\n", count);
+    tears = 4000;
+  }
+  b->Arg(10)->Arg(100)->Arg(1000)->Iterations(tears)->UseManualTime()->Unit(
+      benchmark::kMicrosecond);
 }
 BENCHMARK_CAPTURE(BM_OneTear, quads, rift::GridKind::Quad, false)->Apply(tear_runs);
 // The same tear at every size: a spring between two inner vertices of an

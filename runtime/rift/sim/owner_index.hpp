@@ -157,15 +157,24 @@ class OwnerIndex {
   }
 
  private:
+  /// At least two runs of cells (home keeps bits_ - kRunBits >= 1).
   static std::size_t table_size_for(std::size_t owners) {
     return std::bit_ceil(std::max<std::size_t>(2 * owners, 16));
   }
   std::size_t mask() const { return table_.size() - 1; }
-  /// Fibonacci hashing: consecutive darts (the owners of a build) land far
-  /// apart, and the top bits are the ones kept.
+  /// Darts in runs of 2^kRunBits consecutive indices keep their run's cells
+  /// together: a run's place in the table is hashed, a dart's offset in its
+  /// run kept. A tear re-matches the darts of a few faces, created together
+  /// and so mostly consecutive; with each dart hashed on its own, every
+  /// lookup of a 10^6-vertex cloth's tear missed the cache (a tenth of the
+  /// tear's time), where a run's lookups now share one line of 8 cells.
+  static constexpr int kRunBits = 3;
+  /// Fibonacci hashing of the run: consecutive runs (the owners of a build)
+  /// land far apart, and the top bits are the ones kept.
   std::size_t home(Dart d) const {
-    const std::uint64_t h = std::uint64_t{d} * 0x9E3779B97F4A7C15ull;
-    return static_cast<std::size_t>(h >> (64 - bits_));
+    const std::uint64_t h = std::uint64_t{d >> kRunBits} * 0x9E3779B97F4A7C15ull;
+    const std::size_t run = static_cast<std::size_t>(h >> (64 - (bits_ - kRunBits)));
+    return run << kRunBits | (d & ((Dart{1} << kRunBits) - 1));
   }
   void rehash(std::size_t size) {
     std::vector<Cell> old;
