@@ -123,13 +123,13 @@ TearingCloth inner_tears(rift::GridKind kind, int n) {
 // while cloths are built (a 10^6-vertex build takes seconds, 4000 tears a
 // fifth of one).
 void profile_tears(bool on) {
-  static FILE* const control = [] {
+  static FILE* const kControl = [] {
     const char* path = std::getenv("RIFT_PERF_CTL");
     return path ? std::fopen(path, "w") : nullptr;
   }();
-  if (!control) return;
-  std::fputs(on ? "enable\n" : "disable\n", control);
-  std::fflush(control);
+  if (!kControl) return;
+  std::fputs(on ? "enable\n" : "disable\n", kControl);
+  std::fflush(kControl);
 }
 
 void BM_OneTear(benchmark::State& state, rift::GridKind kind, bool inner) {
