@@ -60,10 +60,9 @@ void populate_for_write([[maybe_unused]] const void* data, [[maybe_unused]] std:
   // their contents.
   constexpr std::uintptr_t kPage = 4096;
   constexpr std::uintptr_t kChunk = std::uintptr_t{2} << 20;
-  const auto begin =
-      reinterpret_cast<std::uintptr_t>(data) & ~(kPage - 1);  // NOLINT(performance-no-int-to-ptr)
-  const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(data) + bytes + kPage - 1) &
-                             ~(kPage - 1);  // NOLINT(performance-no-int-to-ptr)
+  const auto at = reinterpret_cast<std::uintptr_t>(data);
+  const std::uintptr_t begin = at & ~(kPage - 1);
+  const std::uintptr_t end = (at + bytes + kPage - 1) & ~(kPage - 1);
   const std::uintptr_t first_chunk = begin & ~(kChunk - 1);
   const std::size_t chunks = (end - first_chunk + kChunk - 1) / kChunk;
   auto populate = [&](std::size_t a, std::size_t b) {
