@@ -77,6 +77,17 @@ struct HingeGrid {
   static auto lost() {
     return [](const HingeKernel::Match&, bool) {};
   }
+  /// Two caches of the grid's hinges hold the same matches, with the same
+  /// owners, in the same order (`step`: where, in the failure's message).
+  static void expect_same(const MatchCache<HingeKernel::Match>& a,
+                          const MatchCache<HingeKernel::Match>& b, int step) {
+    ASSERT_EQ(a.size(), b.size()) << "step " << step;
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      ASSERT_EQ(a.owners()[e], b.owners()[e]) << "step " << step << " entry " << e;
+      ASSERT_EQ(std::memcmp(&a.matches()[e], &b.matches()[e], sizeof(HingeKernel::Match)), 0)
+          << "step " << step << " entry " << e;
+    }
+  }
 };
 
 // The same kernel with its force targets: CachedInteraction scatters it in
@@ -260,22 +271,14 @@ TEST(MatchCache, AnOwnerIndexMadeAtTheFirstTearEqualsOneMadeAtTheBuild) {
   frozen.set_rewrites(false);
   frozen.initialise(still);
   EXPECT_FALSE(frozen.cache().indexes_owners()) << "a map never rewritten needs no index";
-  auto same = [&](int step) {
-    ASSERT_EQ(lazy.size(), eager.size()) << "step " << step;
-    for (std::size_t e = 0; e < eager.size(); ++e) {
-      ASSERT_EQ(lazy.owners()[e], eager.owners()[e]) << "step " << step << " entry " << e;
-      ASSERT_EQ(std::memcmp(&lazy.matches()[e], &eager.matches()[e], sizeof(HingeKernel::Match)), 0)
-          << "step " << step << " entry " << e;
-    }
-  };
-  same(-1);
+  HingeGrid::expect_same(lazy, eager, -1);
   int rematches = 0;
   tear_and_mend_at_random(map, 23, 150, [&](int step, const std::vector<Dart>& region) {
     eager.rematch(map, Orbit{2}, HingeKernel::kRadius, region, match, lost);
     lazy.rematch(map, Orbit{2}, HingeKernel::kRadius, region, match, lost);
     ++rematches;
     EXPECT_TRUE(lazy.indexes_owners());
-    same(step);
+    HingeGrid::expect_same(lazy, eager, step);
   });
   EXPECT_GT(rematches, 50);
   EXPECT_NE(lazy.size(), 0u);
@@ -307,13 +310,7 @@ TEST(MatchCache, AHashedOwnerIndexGivesTheMatchesOfAnArrayIndex) {
     array.rematch(map, Orbit{2}, HingeKernel::kRadius, region, match, lost);
     hashed.rematch(map, Orbit{2}, HingeKernel::kRadius, region, match, lost);
     ++rematches;
-    ASSERT_EQ(hashed.size(), array.size()) << "step " << step;
-    for (std::size_t e = 0; e < array.size(); ++e) {
-      ASSERT_EQ(hashed.owners()[e], array.owners()[e]) << "step " << step << " entry " << e;
-      ASSERT_EQ(std::memcmp(&hashed.matches()[e], &array.matches()[e], sizeof(HingeKernel::Match)),
-                0)
-          << "step " << step << " entry " << e;
-    }
+    HingeGrid::expect_same(hashed, array, step);
   });
   EXPECT_GT(rematches, 50);
   EXPECT_NE(array.size(), 0u);
