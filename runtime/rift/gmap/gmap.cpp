@@ -149,13 +149,6 @@ void GMap::delete_dart(Dart d) {
 
 // ---- links ------------------------------------------------------------------------
 
-void GMap::link(Dart a, Dart b, int i) {
-  assert(is_free(a, i) && is_free(b, i));
-  ++topology_version_;
-  alpha_[i][a] = b;
-  alpha_[i][b] = a;
-}
-
 void GMap::unlink(Dart a, int i) {
   ++topology_version_;
   const Dart b = alpha_[i][a];
@@ -350,24 +343,23 @@ void GMap::give_missing_slots(OrbitAttachment& att, bool just_woken) const {
       // A dart alone (<>) or a dart and its i-neighbour, without a walk.
       const Dart* link = o.size() == 1 ? alpha_[o.first()].data() : nullptr;
       number_orbits([&](Dart d, Slot s) {
-        att.assign(d, s);
-        if (link && link[d] != d) att.assign(link[d], s);
+        att.claim(d, s);
+        if (link && link[d] != d) att.claim(link[d], s);
       });
     } else if (o.size() == 2) {
       // A path or a cycle (a vertex of a surface, a face's edge loop): walked
       // along it, without a flood's stack and its second look at each dart.
       number_orbits([&](Dart d, Slot s) {
-        for_each_in_two_link_orbit(d, o.first(), o.second(),
-                                   [&](Dart x, int) { att.assign(x, s); });
+        for_each_in_two_link_orbit(d, o.first(), o.second(), [&](Dart x, int) { att.claim(x, s); });
       });
     } else {
       const OrbitLinks links = orbit_links(alpha_, dimension_, o);
       std::vector<Dart>& stack = acquire_scratch();
       number_orbits([&](Dart d, Slot s) {
-        att.assign(d, s);
+        att.claim(d, s);
         flood_orbit(d, links, stack, [&](Dart y) {
           if (att.slot(y) != kNoSlot) return false;
-          att.assign(y, s);
+          att.claim(y, s);
           return true;
         });
       });

@@ -159,8 +159,14 @@ class GMap {
   bool is_free(Dart d, int i) const { return alpha_[i][d] == d; }
 
   /// Raw link: alpha_i(a) = b and alpha_i(b) = a. No embedding is updated;
-  /// builders use this and attach embeddings afterwards.
-  void link(Dart a, Dart b, int i);
+  /// builders use this and attach embeddings afterwards. Inline: a mesh's
+  /// assembly makes one call per dart and link.
+  void link(Dart a, Dart b, int i) {
+    assert(is_free(a, i) && is_free(b, i));
+    ++topology_version_;
+    alpha_[i][a] = b;
+    alpha_[i][b] = a;
+  }
   /// Raw unlink of a and its i-neighbour.
   void unlink(Dart a, int i);
 
