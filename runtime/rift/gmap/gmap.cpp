@@ -343,24 +343,30 @@ void GMap::give_missing_slots(OrbitAttachment& att, bool just_woken) const {
       // A dart alone (<>) or a dart and its i-neighbour, without a walk.
       const Dart* link = o.size() == 1 ? alpha_[o.first()].data() : nullptr;
       number_orbits([&](Dart d, Slot s) {
-        att.claim(d, s);
-        if (link && link[d] != d) att.claim(link[d], s);
+        att.claim_orbit(s, [&](auto&& claim) {
+          claim(d);
+          if (link && link[d] != d) claim(link[d]);
+        });
       });
     } else if (o.size() == 2) {
       // A path or a cycle (a vertex of a surface, a face's edge loop): walked
       // along it, without a flood's stack and its second look at each dart.
       number_orbits([&](Dart d, Slot s) {
-        for_each_in_two_link_orbit(d, o.first(), o.second(), [&](Dart x, int) { att.claim(x, s); });
+        att.claim_orbit(s, [&](auto&& claim) {
+          for_each_in_two_link_orbit(d, o.first(), o.second(), [&](Dart x, int) { claim(x); });
+        });
       });
     } else {
       const OrbitLinks links = orbit_links(alpha_, dimension_, o);
       std::vector<Dart>& stack = acquire_scratch();
       number_orbits([&](Dart d, Slot s) {
-        att.claim(d, s);
-        flood_orbit(d, links, stack, [&](Dart y) {
-          if (att.slot(y) != kNoSlot) return false;
-          att.claim(y, s);
-          return true;
+        att.claim_orbit(s, [&](auto&& claim) {
+          claim(d);
+          flood_orbit(d, links, stack, [&](Dart y) {
+            if (att.slot(y) != kNoSlot) return false;
+            claim(y);
+            return true;
+          });
         });
       });
       release_scratch();

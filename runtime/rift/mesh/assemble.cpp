@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <span>
+#include <stdexcept>
 #include <string>
 
 #include "rift/core/huge_pages.hpp"
@@ -14,67 +15,99 @@ namespace rift {
 
 namespace {
 
-// One side of a shared entity (an edge in 2D, a face in 3D) waiting for its twin.
-struct Side {
-  std::array<std::uint32_t, 4> key;  // sorted vertex ids, unused entries = max
-  Dart first_dart;                   // first of the entity's consecutive darts
-  std::uint32_t darts;               // 2 for an edge (2D), 2 * vertices for a face (3D)
-};
-
-// Buckets sides by their smallest vertex (counting sort, O(n)) so that twins
-// are found by comparing a handful of neighbours instead of hashing. Each
-// bucket entry carries the rest of its side's key: twins are then found by
-// reading the bucket in order, not by a read of each side's record at random
-// (a sixth of a 10^6-vertex cloth's assembly, issue 12).
-template <class Sew>
-std::size_t match_sides(const std::vector<Side>& sides, std::size_t point_count, Sew&& sew) {
-  struct Entry {
-    std::array<std::uint32_t, 3> rest;  // key[1..3]
-    std::uint32_t side;                 // index in `sides`; kUsed once paired
+// The sides of the shared entities (edges in 2D, faces in 3D) waiting for
+// their twins, bucketed by their smallest vertex (a counting sort, O(n)) as
+// they are made: twins are then found by comparing a handful of neighbours,
+// read in order, instead of hashing. Each side is counted first
+// (count(smallest vertex)), then placed in the same order.
+//
+// A bucket entry carries the rest of its side's key and its first dart:
+// there is no side record to write and read back (4 M records of 24 bytes
+// at 10^6 quads, the assembly's largest temporary), nor to read at random
+// from the buckets (a sixth of that assembly's time, issue 12).
+class SideBuckets {
+ public:
+  struct Side {
+    std::array<std::uint32_t, 3> rest;  // the sorted key but its smallest id; unused = ~0u
+    Dart first_dart;                    // first of the entity's consecutive darts
+    /// The entity's vertex count.
+    std::uint32_t ids() const { return 1 + (rest[0] != ~0u) + (rest[1] != ~0u) + (rest[2] != ~0u); }
     // Field by field: std::array's operator== called memcmp per pair.
-    bool same_rest(const Entry& o) const {
+    bool same_rest(const Side& o) const {
       return rest[0] == o.rest[0] && rest[1] == o.rest[1] && rest[2] == o.rest[2];
     }
   };
-  constexpr std::uint32_t kUsed = ~0u;
-  std::vector<std::uint32_t> start(point_count + 1, 0);
-  for (const Side& s : sides)
-    ++start[s.key[0] + 1];
-  for (std::size_t p = 0; p < point_count; ++p)
-    start[p + 1] += start[p];
-  // As large as the map's links: advised for huge pages before its first
-  // touch, like them (rift/core/huge_pages.hpp).
-  std::vector<Entry> entries;
-  grow_huge(entries, sides.size(), Entry{});
-  {
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (std::uint32_t k = 0; k < sides.size(); ++k) {
-      const Side& s = sides[k];
-      entries[fill[s.key[0]]++] = {{s.key[1], s.key[2], s.key[3]}, k};
-    }
+
+  explicit SideBuckets(std::size_t point_count) : start_(point_count + 1, 0) {}
+
+  void count(std::uint32_t smallest) { ++start_[smallest + 1]; }
+
+  /// After every count: room for the sides, each bucket empty.
+  void start_placing() {
+    for (std::size_t p = 0; p + 1 < start_.size(); ++p)
+      start_[p + 1] += start_[p];
+    fill_.assign(start_.begin(), start_.end() - 1);
+    // As large as the map's links: advised for huge pages before its first
+    // touch, like them (rift/core/huge_pages.hpp).
+    grow_huge(sides_, start_.back(), Side{});
   }
-  std::size_t nonmanifold = 0;
-  for (std::size_t p = 0; p < point_count; ++p) {
-    for (std::uint32_t a = start[p]; a < start[p + 1]; ++a) {
-      Entry& ea = entries[a];
-      if (ea.side == kUsed) continue;
-      bool paired = false;
-      for (std::uint32_t b = a + 1; b < start[p + 1]; ++b) {
-        Entry& eb = entries[b];
-        if (eb.side == kUsed || !eb.same_rest(ea)) continue;
-        if (!paired) {
-          sew(sides[ea.side], sides[eb.side]);
-          paired = true;
-        } else {
-          ++nonmanifold;  // a third element on the same edge/face stays free there
-        }
-        eb.side = kUsed;
+
+  /// The side of `count` (at most four) vertex ids whose darts start at `first`.
+  void place(const std::uint32_t* ids, std::uint32_t count, Dart first) {
+    std::array<std::uint32_t, 4> key = {~0u, ~0u, ~0u, ~0u};
+    // Insertion sort of at most four ids (std::sort trips GCC 12's
+    // array-bounds analysis here).
+    for (std::uint32_t i = 0; i < count; ++i) {
+      std::uint32_t j = i;
+      while (j > 0 && key[j - 1] > ids[i]) {
+        key[j] = key[j - 1];
+        --j;
       }
-      ea.side = kUsed;
+      key[j] = ids[i];
     }
+    // A side placed that was not counted would spill into the next bucket.
+    if (fill_[key[0]] == start_[key[0] + 1]) {
+      throw std::logic_error("assemble_gmap: a side was placed that was not counted");
+    }
+    Side& s = sides_[fill_[key[0]]++];
+    s.rest = {key[1], key[2], key[3]};
+    s.first_dart = first;
   }
-  return nonmanifold;
-}
+
+  /// Calls sew(a, b) for each pair of twins, in order of their smallest
+  /// vertex, then of placing; returns the sides left free because a third
+  /// one had the same key (a non-manifold edge or face).
+  template <class Sew>
+  std::size_t pair(Sew&& sew) {
+    std::size_t nonmanifold = 0;
+    for (std::size_t p = 0; p + 1 < start_.size(); ++p) {
+      for (std::uint32_t a = start_[p]; a < start_[p + 1]; ++a) {
+        Side& sa = sides_[a];
+        if (sa.first_dart == kPaired) continue;
+        bool paired = false;
+        for (std::uint32_t b = a + 1; b < start_[p + 1]; ++b) {
+          Side& sb = sides_[b];
+          if (sb.first_dart == kPaired || !sb.same_rest(sa)) continue;
+          if (!paired) {
+            sew(sa, sb);
+            paired = true;
+          } else {
+            ++nonmanifold;  // a third element on the same edge/face stays free there
+          }
+          sb.first_dart = kPaired;
+        }
+        sa.first_dart = kPaired;
+      }
+    }
+    return nonmanifold;
+  }
+
+ private:
+  static constexpr Dart kPaired = kNoDart;  // a placed side's dart once it is paired
+  std::vector<std::uint32_t> start_;        // bucket p: sides_[start_[p], start_[p + 1])
+  std::vector<std::uint32_t> fill_;         // next free entry of each bucket
+  std::vector<Side> sides_;
+};
 
 // Local alpha_2 pairing inside one solid: dart k (0-based over its faces'
 // darts) is 2-linked with pairing[k]. Computed once per element type.
@@ -269,28 +302,6 @@ std::string example(const ElementExample& e) {
   return s;
 }
 
-/// Appends the side of `count` vertex ids to `sides`, written in place: a
-/// Side built on the stack and copied was stored field by field and read
-/// back 16 bytes at once, a failed store-to-load forward per side (a quarter
-/// of assemble_gmap's own time on a 100² grid).
-void add_side(std::vector<Side>& sides, const std::uint32_t* ids, std::uint32_t count, Dart first,
-              std::uint32_t darts) {
-  Side& s = sides.emplace_back();
-  s.key = {~0u, ~0u, ~0u, ~0u};
-  s.first_dart = first;
-  s.darts = darts;
-  // Insertion sort of at most four ids (std::sort trips GCC 12's array-bounds
-  // analysis here).
-  for (std::uint32_t i = 0; i < count; ++i) {
-    std::uint32_t j = i;
-    while (j > 0 && s.key[j - 1] > ids[i]) {
-      s.key[j] = s.key[j - 1];
-      --j;
-    }
-    s.key[j] = ids[i];
-  }
-}
-
 }  // namespace
 
 std::vector<std::string> assembly_warnings(const AssemblyReport& r, int dimension) {
@@ -344,23 +355,36 @@ GMap assemble_gmap(const MeshData& mesh, AssemblyReport* report) {
     for (std::size_t k = 0; k < mesh.elements.size(); ++k)
       validate_element(mesh, mesh.elements[k], k, seen);
   }
-  std::size_t side_count = 0;
+  // The darts, and each side counted in its bucket: a side's smallest vertex
+  // does not depend on the order of its vertices, which a reoriented solid
+  // changes below.
+  SideBuckets sides(mesh.points.size());
   for (const MeshElement& e : mesh.elements) {
-    dart_count +=
-        mesh.dimension == 2 ? 2 * std::size_t{e.count} : layout_of(e.type).dart_vertex.size();
-    side_count += mesh.dimension == 2 ? std::size_t{e.count} : element_faces(e.type).size();
+    const std::uint32_t* v = mesh.vertices_of(e);
+    if (mesh.dimension == 2) {
+      dart_count += 2 * std::size_t{e.count};
+      for (std::uint32_t i = 0; i < e.count; ++i)
+        sides.count(std::min(v[i], v[i + 1 == e.count ? 0 : i + 1]));
+      continue;
+    }
+    dart_count += layout_of(e.type).dart_vertex.size();
+    for (const LocalFace& f : element_faces(e.type)) {
+      std::uint32_t smallest = v[f.v[0]];
+      for (int i = 1; i < f.count; ++i)
+        smallest = std::min(smallest, v[f.v[i]]);
+      sides.count(smallest);
+    }
   }
+  sides.start_placing();
 
   const int n = mesh.dimension;
   GMap map(n);
   const Dart first = map.create_darts(dart_count);
-  // Per-dart and per-side scratch, advised for huge pages before the first
-  // touch: faulted in 4 KiB at a time they were a tenth of a large set-up's
-  // page faults (issue 12).
+  // Per-dart scratch, advised for huge pages before the first touch: faulted
+  // in 4 KiB at a time it was a tenth of a large set-up's page faults
+  // (issue 12).
   std::vector<std::uint32_t> dart_point;
   grow_huge(dart_point, dart_count, 0u);
-  std::vector<Side> sides;
-  reserve_huge(sides, side_count);
 
   Dart next = first;
   std::array<std::uint32_t, 8> ids{};
@@ -379,7 +403,7 @@ GMap assemble_gmap(const MeshData& mesh, AssemblyReport* report) {
         dart_point[d0 - first] = v[i];
         dart_point[d1 - first] = v[after];
         const std::uint32_t edge[2] = {v[i], v[after]};
-        add_side(sides, edge, 2, d0, 2);
+        sides.place(edge, 2, d0);
       }
       next += 2 * k;
       continue;
@@ -414,7 +438,7 @@ GMap assemble_gmap(const MeshData& mesh, AssemblyReport* report) {
       std::uint32_t face_ids[4];
       for (std::uint32_t i = 0; i < c; ++i)
         face_ids[i] = ids[faces[f].v[i]];
-      add_side(sides, face_ids, c, fd, 2 * c);
+      sides.place(face_ids, c, fd);
     }
     for (std::size_t k = 0; k < layout.dart_vertex.size(); ++k) {
       dart_point[next + k - first] = ids[layout.dart_vertex[k]];
@@ -424,35 +448,36 @@ GMap assemble_gmap(const MeshData& mesh, AssemblyReport* report) {
   }
 
   const int sew_dim = n;  // 2-sew edges in 2D, 3-sew faces in 3D
-  rep.nonmanifold_shared =
-      match_sides(sides, mesh.points.size(), [&](const Side& a, const Side& b) {
-        if (n == 2) {
-          // An edge's two darts: same first vertex, or the edge runs the
-          // other way in b's face.
-          const bool same = dart_point[a.first_dart - first] == dart_point[b.first_dart - first];
-          map.link(a.first_dart, b.first_dart + (same ? 0 : 1), sew_dim);
-          map.link(a.first_dart + 1, b.first_dart + (same ? 1 : 0), sew_dim);
-          return;
+  using Side = SideBuckets::Side;
+  rep.nonmanifold_shared = sides.pair([&](const Side& a, const Side& b) {
+    if (n == 2) {
+      // An edge's two darts: same first vertex, or the edge runs the
+      // other way in b's face.
+      const bool same = dart_point[a.first_dart - first] == dart_point[b.first_dart - first];
+      map.link(a.first_dart, b.first_dart + (same ? 0 : 1), sew_dim);
+      map.link(a.first_dart + 1, b.first_dart + (same ? 1 : 0), sew_dim);
+      return;
+    }
+    // Pair darts by (vertex, other end of their edge): that respects alpha_0
+    // and alpha_1 whatever the two elements' orientations.
+    const std::uint32_t darts = 2 * a.ids();  // a face's, on either side
+    for (std::uint32_t i = 0; i < darts; ++i) {
+      const Dart da = a.first_dart + i;
+      const std::uint32_t pa = dart_point[da - first];
+      const std::uint32_t qa = dart_point[map.alpha(da, 0) - first];
+      for (std::uint32_t j = 0; j < darts; ++j) {
+        const Dart db = b.first_dart + j;
+        if (dart_point[db - first] == pa && dart_point[map.alpha(db, 0) - first] == qa) {
+          map.link(da, db, sew_dim);
+          break;
         }
-        // Pair darts by (vertex, other end of their edge): that respects alpha_0
-        // and alpha_1 whatever the two elements' orientations.
-        for (std::uint32_t i = 0; i < a.darts; ++i) {
-          const Dart da = a.first_dart + i;
-          const std::uint32_t pa = dart_point[da - first];
-          const std::uint32_t qa = dart_point[map.alpha(da, 0) - first];
-          for (std::uint32_t j = 0; j < b.darts; ++j) {
-            const Dart db = b.first_dart + j;
-            if (dart_point[db - first] == pa && dart_point[map.alpha(db, 0) - first] == qa) {
-              map.link(da, db, sew_dim);
-              break;
-            }
-          }
-        }
-      });
+      }
+    }
+  });
 
-  // The side records are the largest temporary: free them before the
-  // embeddings allocate their slot arrays, to keep the peak memory low.
-  std::vector<Side>().swap(sides);
+  // The sides are the largest temporary: freed before the embeddings
+  // allocate their slot arrays, to keep the peak memory low.
+  sides = SideBuckets(0);
 
   Embedding<Vec3> position = state_embedding<Vec3>(map, state::kPosition);
   Embedding<std::int64_t> point_index = state_embedding<std::int64_t>(map, state::kPointIndex);
