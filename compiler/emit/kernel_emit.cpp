@@ -239,7 +239,7 @@ std::vector<std::string> vertex_fields(const Kernel& k) {
 }
 
 /// An untagged kernel with forces chooses the dart its support orbit is
-/// matched from by its vertices (rift::generated::smallest_support_dart).
+/// matched from by its vertices (rift::generated::smallest_support_match).
 bool chooses_support_dart(const Kernel& k) {
   return !k.inter->tagged && !k.plan->body.forces.empty() && !vertex_fields(k).empty();
 }
@@ -417,15 +417,18 @@ void write_initialise(Writer& w, const Kernel& k, const PackModel& model) {
     }
     w.line("// init " + what + ", once per match");
     if (chooses_support_dart(k)) {
+      // The choice found the chosen dart's pattern already: not found again.
       w.open("g.for_each_cell(kSupport, [&](rift::Dart cell) {");
-      w.line("const rift::Dart support = support_dart(g, cell);");
+      w.line("rift::Dart darts[" + n + "];");
+      w.line("const rift::Dart support = support_match(g, cell, darts);");
+      w.line("if (support == rift::kNoDart) return;");
     } else {
       w.open("g.for_each_cell(kSupport, [&](rift::Dart support) {");
+      if (k.inter->tagged && first_pass)
+        w.line("if (rewrites_) tag_[support] = true;  // the orbit's first dart");
+      w.line("rift::Dart darts[" + n + "];");
+      w.line("if (!find(g, support, darts)) return;");
     }
-    if (k.inter->tagged && first_pass)
-      w.line("if (rewrites_) tag_[support] = true;  // the orbit's first dart");
-    w.line("rift::Dart darts[" + n + "];");
-    w.line("if (!find(g, support, darts)) return;");
     if (hands_out_supports(k) && first_pass) w.line("if (sink) sink(support, darts);");
     first_pass = false;
     for (std::size_t v = 0; v < used.size(); ++v) {
@@ -483,17 +486,27 @@ void write_match(Writer& w, const Kernel& k) {
 
 // The dart a support orbit is matched from, the same for the inits and the
 // simulator's match cache: the one binding the smallest vertex slots first.
+// support_match also gives the pattern's darts found from it, which the inits
+// would otherwise find a third time.
 void write_support_dart(Writer& w, const Kernel& k) {
   const std::vector<std::string> fields = vertex_fields(k);
-  w.open("rift::Dart " + k.cls + "::support_dart(const rift::GMap& g, rift::Dart d) const {");
-  w.open("return smallest_support_dart<" + std::to_string(fields.size()) +
-         ">(g, d, kSupport, [&](rift::Dart x, rift::Slot* key) {");
+  const std::string n = std::to_string(k.plan->kernel.nodes.size());
+  w.open("rift::Dart " + k.cls +
+         "::support_match(const rift::GMap& g, rift::Dart d, rift::Dart* darts) const {");
+  w.open("return smallest_support_match<" + std::to_string(fields.size()) + ", " + n +
+         ">(g, d, kSupport, darts, [&](rift::Dart x, rift::Slot* key, rift::Dart* found) {");
   w.line("Match m{};");
-  w.line("if (!match(g, x, m)) return false;");
+  w.line("if (!find(g, x, found) || !match_found(g, found, m)) return false;");
   for (std::size_t i = 0; i < fields.size(); ++i)
     w.line("key[" + std::to_string(i) + "] = m." + fields[i] + ";");
   w.line("return true;");
   w.close("});");
+  w.close();
+  w.line();
+  w.open("rift::Dart " + k.cls + "::support_dart(const rift::GMap& g, rift::Dart d) const {");
+  w.line("rift::Dart darts[" + n + "];");
+  w.line("const rift::Dart support = support_match(g, d, darts);");
+  w.line("return support == rift::kNoDart ? d : support;");
   w.close();
   w.line();
 }
@@ -1446,6 +1459,11 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
     w.line("/// The dart of d's support orbit to match from: the one binding the smallest vertex");
     w.line("/// slots first (the inits use it, and so does the simulator for a new orbit).");
     w.line("rift::Dart support_dart(const rift::GMap& g, rift::Dart d) const;");
+    w.line("/// The same, with the pattern's darts found from it in `darts`; kNoDart when no");
+    w.line("/// dart of the orbit matches.");
+    w.line(
+        "rift::Dart support_match(const rift::GMap& g, rift::Dart d, rift::Dart* darts) "
+        "const;");
   }
   w.line("/// The force pass over every match: adds each force to f (and stores it when `store`,");
   w.line("/// at the slots of ss[i], parallel to ms).");

@@ -42,30 +42,34 @@ inline Dart tagged_dart(const GMap& g, const Embedding<Bool>& tag, Dart d, Orbit
 
 /// The support dart of an untagged interaction on <o>(d): the dart of the
 /// orbit whose match binds the smallest vertex slots first (lexicographic
-/// order of the N vertex slots that key(Dart, Slot*) -> bool writes for a
-/// dart that matches; ties go to the smaller dart). The language lets an
+/// order of the N vertex slots that key(Dart x, Slot* key, Dart* found) ->
+/// bool writes for a dart that matches, with the D darts of the pattern
+/// found from x; ties go to the smaller dart). The language lets an
 /// untagged interaction be matched from any dart of its support orbit; this
 /// one makes the choice a function of the vertices, so two matches on the
 /// same vertices (the two half-edges of an edge, one per face) bind them in
 /// the same order and can be evaluated once (rift/sim/match_groups.hpp).
 /// The inits and the simulator's match cache use the same dart, once per
 /// orbit: the dart is chosen when the orbit is first matched and kept after.
-/// d when no dart of the orbit matches.
-template <int N, class KeyFn>
-Dart smallest_support_dart(const GMap& g, Dart d, Orbit o, KeyFn&& key) {
-  static_assert(N > 0);
+/// `darts` gets the pattern's darts found from the chosen dart, which the
+/// inits then need not find again. kNoDart when no dart of the orbit matches.
+template <int N, int D, class KeyFn>
+Dart smallest_support_match(const GMap& g, Dart d, Orbit o, Dart* darts, KeyFn&& key) {
+  static_assert(N > 0 && D > 0);
   Dart best = kNoDart;
   Slot best_key[N] = {};
   Slot k[N] = {};
+  Dart found[D];
   g.for_each_in_orbit(d, o, [&](Dart x) {
-    if (!key(x, k)) return;
+    if (!key(x, k, found)) return;
     if (best == kNoDart || std::lexicographical_compare(k, k + N, best_key, best_key + N) ||
         (std::equal(k, k + N, best_key) && x < best)) {
       best = x;
       std::copy(k, k + N, best_key);
+      std::copy(found, found + D, darts);
     }
   });
-  return best == kNoDart ? d : best;
+  return best;
 }
 
 /// The map's embedding `name` of type T; `user` (e.g. "interaction 'stretch'")

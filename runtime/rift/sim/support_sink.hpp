@@ -2,7 +2,7 @@
 //
 // A kernel's inits walk every support orbit, choose the dart it is matched
 // from (an untagged kernel by its vertices, rift::generated::
-// smallest_support_dart, which matches every dart of the orbit) and find the
+// smallest_support_match, which matches every dart of the orbit) and find the
 // pattern's darts from it. The simulator's match cache, right after them,
 // made the same choices and found the same darts again, for the same orbits
 // in the same order: a sixth of a 10^6-vertex cloth's set-up was the

@@ -182,9 +182,9 @@ void StretchKernel::initialise(rift::GMap& g, rift::SupportSink sink) {
   e_stretch_rest = require_embedding<rift::Real>(g, "stretch_rest", "interaction 'stretch'");
   // init stretch_k(a), stretch_rest(a), once per match
   g.for_each_cell(kSupport, [&](rift::Dart cell) {
-    const rift::Dart support = support_dart(g, cell);
     rift::Dart darts[2];
-    if (!find(g, support, darts)) return;
+    const rift::Dart support = support_match(g, cell, darts);
+    if (support == rift::kNoDart) return;
     if (sink) sink(support, darts);
     const rift::Dart d_a = darts[0];
     const rift::Dart d_b = darts[1];
@@ -214,14 +214,20 @@ bool StretchKernel::match_found([[maybe_unused]] const rift::GMap& g, const rift
   return true;
 }
 
-rift::Dart StretchKernel::support_dart(const rift::GMap& g, rift::Dart d) const {
-  return smallest_support_dart<2>(g, d, kSupport, [&](rift::Dart x, rift::Slot* key) {
+rift::Dart StretchKernel::support_match(const rift::GMap& g, rift::Dart d, rift::Dart* darts) const {
+  return smallest_support_match<2, 2>(g, d, kSupport, darts, [&](rift::Dart x, rift::Slot* key, rift::Dart* found) {
     Match m{};
-    if (!match(g, x, m)) return false;
+    if (!find(g, x, found) || !match_found(g, found, m)) return false;
     key[0] = m.vertex_a;
     key[1] = m.vertex_b;
     return true;
   });
+}
+
+rift::Dart StretchKernel::support_dart(const rift::GMap& g, rift::Dart d) const {
+  rift::Dart darts[2];
+  const rift::Dart support = support_match(g, d, darts);
+  return support == rift::kNoDart ? d : support;
 }
 
 StretchKernel::Columns StretchKernel::columns() const {

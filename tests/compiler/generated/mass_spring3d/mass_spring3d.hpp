@@ -80,6 +80,9 @@ class StretchKernel {
   /// The dart of d's support orbit to match from: the one binding the smallest vertex
   /// slots first (the inits use it, and so does the simulator for a new orbit).
   rift::Dart support_dart(const rift::GMap& g, rift::Dart d) const;
+  /// The same, with the pattern's darts found from it in `darts`; kNoDart when no
+  /// dart of the orbit matches.
+  rift::Dart support_match(const rift::GMap& g, rift::Dart d, rift::Dart* darts) const;
   /// The force pass over every match: adds each force to f (and stores it when `store`,
   /// at the slots of ss[i], parallel to ms).
   void add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in, rift::Vec3* f, bool store);
