@@ -197,12 +197,13 @@ namespace {
 
 // One dart of each element (its smallest), in for_each_cell's order, its
 // measure and its corners' count. Both mass set-ups measure the elements
-// once, in three flat passes over the darts: labelling each dart with its
-// element, then summing corners, then faces (a surface's corners are
-// counted on its labelling walk, and its faces measured by polygon_area). Walking each element's
-// corners and faces with marks (48 darts a hexahedron, each sub-orbit walked separately) took 1.8 s
-// of the set-up of 10^6 hexahedra (issue 12). The labels (4 bytes a dart) are given back on return,
-// unless kept for the corner masses.
+// once, in flat passes over the darts: labelling each dart with its element,
+// then summing corners, then faces. Walking each element's corners and faces
+// with marks (48 darts a hexahedron, each sub-orbit walked separately) took
+// 1.8 s of the set-up of 10^6 hexahedra (issue 12). A surface's corners are
+// counted on the labelling walk instead, and its faces measured by
+// polygon_area. The labels (4 bytes a dart) are given back on return, unless
+// kept for the corner masses.
 struct MeasuredElements {
   std::vector<Dart> darts;
   std::vector<Real> measures;
@@ -214,35 +215,18 @@ MeasuredElements measure_elements(const GMap& map, const Embedding<Vec3>& positi
   const std::size_t n = map.capacity();
   MeasuredElements out;
   grow_huge(out.element_of, n, kNoElement);
-  if (map.dimension() == 2) {
-    // A face's corners <1> are counted on the walk that labels its darts:
-    // pairs {x, alpha_1 x}, and darts whose alpha_1 is free alone. That saves
-    // the corner pass's look at every dart and its bits (a fifth of a
-    // 10^6-vertex cloth's masses, issue 12); the counts are the same.
-    for (std::size_t i = 0; i < n; ++i) {
-      const auto d = static_cast<Dart>(i);
-      if (!map.is_alive(d) || out.element_of[i] != kNoElement) continue;
-      const auto k = static_cast<std::uint32_t>(out.darts.size());
-      out.darts.push_back(d);
-      std::uint32_t darts = 0, alone = 0;
-      map.for_each_in_two_link_orbit(d, 0, 1, [&](Dart x, int) {
-        out.element_of[x] = k;
-        ++darts;
-        alone += map.is_free(x, 1);
-      });
-      out.corners.push_back((darts + alone) / 2);
-    }
-    out.measures.resize(out.darts.size());
-    for (std::size_t k = 0; k < out.darts.size(); ++k)
-      out.measures[k] = polygon_area(map, out.darts[k], position);
-    return out;
-  }
+  // A surface's corners <1> are counted on the walk that labels its darts:
+  // pairs {x, alpha_1 x}, and darts whose alpha_1 is free alone. That saves
+  // the corner pass's look at every dart and its bits (a fifth of a
+  // 10^6-vertex cloth's masses, issue 12); the counts are the same.
+  const bool surface = map.dimension() == 2;
   std::vector<Dart> stack;
   for (std::size_t i = 0; i < n; ++i) {
     const auto d = static_cast<Dart>(i);
     if (!map.is_alive(d) || out.element_of[i] != kNoElement) continue;
     const auto k = static_cast<std::uint32_t>(out.darts.size());
     out.darts.push_back(d);
+    std::uint32_t darts = 0, alone = 0;
     flood_element(
         map, d, stack,
         [&](Dart x) {
@@ -250,7 +234,17 @@ MeasuredElements measure_elements(const GMap& map, const Embedding<Vec3>& positi
           out.element_of[x] = k;
           return true;
         },
-        [](Dart) {});
+        [&](Dart x) {
+          ++darts;
+          alone += map.is_free(x, 1);
+        });
+    if (surface) out.corners.push_back((darts + alone) / 2);
+  }
+  if (surface) {
+    out.measures.resize(out.darts.size());
+    for (std::size_t k = 0; k < out.darts.size(); ++k)
+      out.measures[k] = polygon_area(map, out.darts[k], position);
+    return out;
   }
   ElementSums sums(out.darts.size());
   const std::vector<std::uint32_t>& element_of = out.element_of;
