@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "rift/mesh/assemble.hpp"
+#include "rift/mesh/generators.hpp"
 #include "rift/mesh/map_statistics.hpp"
 #include "rift/mesh/mesh_error.hpp"
 
@@ -74,6 +75,47 @@ TEST(Assemble, InvertedTetrahedronIsReoriented) {
   EXPECT_EQ(report.reoriented_solids, 1u);
   EXPECT_TRUE(map.is_valid());
   EXPECT_EQ(compute_statistics(map).faces, 4u);
+}
+
+// The assembly numbers its elements by their runs of darts
+// (GMap::number_orbits_by_runs) instead of walking them: the slots must be the
+// walk's, slot k on the orbit whose smallest dart comes k-th, and element k.
+TEST(Assemble, ElementsNumberedByTheirDartsAsAWalkWouldNumberThem) {
+  MeshData mixed = make_grid(GridKind::Mix, 5, 4);
+  MeshData hex = make_block(BlockKind::Hex, 3, 2, 2);
+  MeshData tet = make_block(BlockKind::Tet, 2, 2, 1);
+  // A bow tie: elements of one point in two fans, and a lone element.
+  MeshData bow = triangles({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(-1, 0, 0),
+                            Vec3(-1, -1, 0), Vec3(5, 5, 0), Vec3(6, 5, 0), Vec3(5, 6, 0)},
+                           {{0, 1, 2}, {0, 3, 4}, {5, 6, 7}});
+  for (const MeshData* mesh : {&mixed, &hex, &tet, &bow}) {
+    GMap map = assemble_gmap(*mesh);
+    ASSERT_TRUE(map.is_valid()) << map.check_validity().front();
+    const Orbit element = Orbit::all(mesh->dimension - 1);
+    const Embedding<std::int64_t> index = map.embedding<std::int64_t>("element_index");
+    ASSERT_EQ(index.attachment().orbit(), element);
+    Slot expected = 0;
+    map.for_each_cell(element, [&](Dart d) {
+      map.for_each_in_orbit(d, element, [&](Dart x) {
+        EXPECT_EQ(index.slot(x), expected) << "dart " << x;
+        EXPECT_EQ(index[x], std::int64_t{expected});
+      });
+      ++expected;
+    });
+    EXPECT_EQ(expected, mesh->elements.size());
+    EXPECT_EQ(index.attachment().live_slots(), mesh->elements.size());
+  }
+}
+
+TEST(Assemble, RunsAreRefusedWhereTheOrbitHasSlotsOrTheyMissDarts) {
+  GMap map = assemble_gmap(make_grid(GridKind::Quad, 2, 1));
+  const std::vector<Dart> starts = {0, 8};
+  EXPECT_THROW(map.number_orbits_by_runs(Orbit{0, 1}, starts), std::logic_error);  // numbered
+  GMap bare(2);
+  bare.create_darts(16);
+  // Darts 0 to 3 in no run; runs out of order.
+  EXPECT_THROW(bare.number_orbits_by_runs(Orbit{0, 1}, std::vector<Dart>{4}), std::logic_error);
+  EXPECT_THROW(bare.number_orbits_by_runs(Orbit{1}, std::vector<Dart>{8, 0}), std::logic_error);
 }
 
 std::string error_of(const MeshData& m) {

@@ -305,6 +305,39 @@ void GMap::assign_missing_slots(OrbitAttachment& att) const {
   give_missing_slots(att, woken);
 }
 
+void GMap::number_orbits_by_runs(Orbit orbit, std::span<const Dart> starts) {
+  OrbitAttachment& att = attachment_for(orbit);
+  if (att.by_dart() || (!att.dormant() && att.slotted_darts() != 0) || att.live_slots() != 0 ||
+      !free_darts_.empty()) {
+    throw std::logic_error("number_orbits_by_runs: orbit " + orbit.str() +
+                           " already has slots, or the map has dead darts");
+  }
+  att.wake(alive_.size());
+  att.reserve_slots(att.slot_capacity() + starts.size());
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    const Dart end = k + 1 < starts.size() ? starts[k + 1] : static_cast<Dart>(alive_.size());
+    if (starts[k] >= end) throw std::logic_error("number_orbits_by_runs: runs out of order");
+    const Slot s = att.reserve_slot();
+    att.claim_orbit(s, [&](auto&& claim) {
+      for (Dart d = starts[k]; d < end; ++d)
+        claim(d);
+    });
+  }
+  att.grow_columns();
+  if (att.slotted_darts() != size())
+    throw std::logic_error("number_orbits_by_runs: the runs do not cover every dart");
+#ifndef NDEBUG
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    std::size_t in_orbit = 0;
+    for_each_in_orbit(starts[k], orbit, [&](Dart x) {
+      assert(att.slot(x) == static_cast<Slot>(k));
+      ++in_orbit;
+    });
+    assert(in_orbit == att.darts_in_slot(static_cast<Slot>(k)));
+  }
+#endif
+}
+
 void GMap::give_missing_slots(OrbitAttachment& att, bool just_woken) const {
   // Every live dart holds a slot already (a pack declaring one more column on
   // an awake attachment): nothing to do, and no pass over the darts to find

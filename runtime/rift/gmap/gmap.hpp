@@ -8,6 +8,7 @@
 #include <array>
 #include <cassert>
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -278,6 +279,16 @@ class GMap {
   /// by its smallest dart as at declaration. embedding() calls it: whoever
   /// holds a handle reads slots.
   void wake(OrbitAttachment& attachment) const;
+  /// Numbers the orbits of `orbit` from runs of consecutive darts that the
+  /// caller knows to be one orbit each: run k is [starts[k], starts[k + 1]),
+  /// the last one ending at capacity(), and it takes slot k. A builder knows
+  /// this of its elements (each element's darts are made together, and only
+  /// the element's own links join them below its dimension), and numbering
+  /// them so spares the walk of every orbit: the same slots as that walk
+  /// gives (runs in increasing order), without reading a link. Only on a
+  /// map whose darts are all alive and hold no slot of `orbit` yet (throws
+  /// std::logic_error otherwise); a Debug build checks each run against a walk.
+  void number_orbits_by_runs(Orbit orbit, std::span<const Dart> starts);
   /// An awake attachment of orbit o that gives every live dart a slot, or
   /// null (none is awake, or darts made by hand have no slot yet). O(1):
   /// for_each_cell asks it on every call.
