@@ -220,25 +220,48 @@ MeasuredElements measure_elements(const GMap& map, const Embedding<Vec3>& positi
   // the corner pass's look at every dart and its bits (a fifth of a
   // 10^6-vertex cloth's masses, issue 12); the counts are the same.
   const bool surface = map.dimension() == 2;
-  std::vector<Dart> stack;
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto d = static_cast<Dart>(i);
-    if (!map.is_alive(d) || out.element_of[i] != kNoElement) continue;
-    const auto k = static_cast<std::uint32_t>(out.darts.size());
-    out.darts.push_back(d);
-    std::uint32_t darts = 0, alone = 0;
-    flood_element(
-        map, d, stack,
-        [&](Dart x) {
-          if (out.element_of[x] != kNoElement) return false;
-          out.element_of[x] = k;
-          return true;
-        },
-        [&](Dart x) {
-          ++darts;
-          alone += map.is_free(x, 1);
-        });
-    if (surface) out.corners.push_back((darts + alone) / 2);
+  const OrbitAttachment* elements =
+      surface ? nullptr : map.slotted_attachment(element_orbit(map.dimension()));
+  if (elements) {
+    // A solid whose elements have slots (an assembled mesh's element_index):
+    // the labels come from one sweep over the darts, each element labelled
+    // when its smallest dart is met, as the walk below labels them. At 10^6
+    // hexahedra the walk looked at each of 4.7·10^7 darts and its three
+    // links. (A surface's walk along each face costs about what the sweep
+    // does, and counts the corners on the way.)
+    const Slot* slot = elements->slot_data();
+    std::vector<std::uint32_t> label(elements->slot_capacity(), kNoElement);
+    out.darts.reserve(elements->live_slots());
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!map.is_alive(static_cast<Dart>(i))) continue;
+      std::uint32_t& k = label[slot[i]];
+      if (k == kNoElement) {
+        k = static_cast<std::uint32_t>(out.darts.size());
+        out.darts.push_back(static_cast<Dart>(i));
+      }
+      out.element_of[i] = k;
+    }
+  } else {
+    std::vector<Dart> stack;
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto d = static_cast<Dart>(i);
+      if (!map.is_alive(d) || out.element_of[i] != kNoElement) continue;
+      const auto k = static_cast<std::uint32_t>(out.darts.size());
+      out.darts.push_back(d);
+      std::uint32_t darts = 0, alone = 0;
+      flood_element(
+          map, d, stack,
+          [&](Dart x) {
+            if (out.element_of[x] != kNoElement) return false;
+            out.element_of[x] = k;
+            return true;
+          },
+          [&](Dart x) {
+            ++darts;
+            alone += map.is_free(x, 1);
+          });
+      if (surface) out.corners.push_back((darts + alone) / 2);
+    }
   }
   if (surface) {
     out.measures.resize(out.darts.size());
