@@ -4,6 +4,7 @@
 
 #include "check/kernels.hpp"
 #include "check/topology.hpp"
+#include "lower/distinct_pairs.hpp"
 
 namespace rift::lower {
 
@@ -114,6 +115,7 @@ KernelPlan plan_kernel(const check::CheckedInteraction& ci, const resolve::Symbo
   for (const auto& n : g.left.nodes)
     plan.nodes.push_back(n.name());
   plan.match = plan_match(g);
+  plan.distinct = distinct_pairs(static_cast<int>(plan.nodes.size()), plan.match);
   plan.depth.assign(g.left.nodes.size(), 0);
   plan.node_order = plan.match.hooks;
   for (const Follow& f : plan.match.follows) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lower/checked.hpp"
@@ -31,8 +32,11 @@ struct ForceStore {
 struct KernelPlan {
   std::vector<std::string> nodes;  // pattern node names, hook first
   MatchPlan match;                 // follows and arc checks (node indices as in the pattern)
-  std::vector<int> node_order;     // pattern node indices in the order they are reached
-  std::vector<int> depth;          // links from the support dart, per pattern node
+  /// The pairs of nodes whose darts find compares for an injective match
+  /// (distinct_pairs.hpp), one per class of pairs that collide together.
+  std::vector<std::pair<int, int>> distinct;
+  std::vector<int> node_order;  // pattern node indices in the order they are reached
+  std::vector<int> depth;       // links from the support dart, per pattern node
   std::vector<SlotUse> slots;
   std::vector<ForceStore> forces;  // parallel to the interaction's `force` statements
   std::vector<int> stores;         // the slot of each `store =`, then of each `store +=`
