@@ -389,6 +389,33 @@ void GMap::give_missing_slots(OrbitAttachment& att, bool just_woken) const {
           for_each_in_two_link_orbit(d, o.first(), o.second(), [&](Dart x, int) { claim(x); });
         });
       });
+    } else if (o.size() == 3) {
+      // Three links (a solid's vertex <1,2,3>): the orbit is paths or cycles
+      // of its first two links (a vertex's corners, one per element) joined
+      // by the third. Each is walked along, and only a dart whose third link
+      // leads to a dart not numbered yet goes on the stack, rather than
+      // every dart with its three links (the flood below: 0.35 s of a
+      // 10^6-vertex hexahedral block's set-up).
+      const int i = o.first(), j = o.second();
+      const Dart* ak = alpha_[o.without(i).without(j).first()].data();
+      std::vector<Dart>& stack = acquire_scratch();
+      number_orbits([&](Dart d, Slot s) {
+        att.claim_orbit(s, [&](auto&& claim) {
+          stack.clear();
+          stack.push_back(d);
+          while (!stack.empty()) {
+            const Dart e = stack.back();
+            stack.pop_back();
+            if (att.slot(e) != kNoSlot) continue;  // its path or cycle is numbered
+            for_each_in_two_link_orbit(e, i, j, [&](Dart x, int) {
+              claim(x);
+              const Dart y = ak[x];
+              if (y != x && att.slot(y) == kNoSlot) stack.push_back(y);
+            });
+          }
+        });
+      });
+      release_scratch();
     } else {
       const OrbitLinks links = orbit_links(alpha_, dimension_, o);
       std::vector<Dart>& stack = acquire_scratch();
