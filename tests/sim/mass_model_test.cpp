@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 #include <vector>
 
 #include "jittered_mesh.hpp"
@@ -110,6 +112,68 @@ TEST(MassModel, AllVertexMassesAreEachVertexsCornerSums) {
       EXPECT_GT(*std::max_element(masses.begin(), masses.end()),
                 1.01 * *std::min_element(masses.begin(), masses.end()));
       EXPECT_GT(vertices, 10u);
+    }
+  }
+}
+
+// A vertex's mass from the darts its walk listed (what a tear's update
+// passes) is the walk's sum, bit for bit: every corner once, in the walk's
+// order. Meshes whose elements all differ, split or not, and a fan of 40
+// triangles around one vertex, more corners than the list keeps, which
+// falls back to the walk.
+MeshData fan_of_triangles(int count) {
+  MeshData mesh;
+  mesh.dimension = 2;
+  mesh.points.push_back(Vec3::Zero());
+  for (int k = 0; k < count; ++k) {
+    const Real a = 2 * 3.141592653589793 * k / count;
+    // Uneven radii: every triangle's area, hence every corner's mass, differs.
+    const Real r = 1 + 0.01 * k;
+    mesh.points.push_back(Vec3(r * std::cos(a), r * std::sin(a), 0));
+  }
+  for (int k = 0; k < count; ++k) {
+    const auto next = static_cast<std::uint32_t>(1 + (k + 1) % count);
+    mesh.add_element(ElementType::Polygon, {0u, static_cast<std::uint32_t>(1 + k), next});
+  }
+  return mesh;
+}
+
+TEST(MassModel, AVertexsWalkedDartsGiveTheWalksSum) {
+  for (const char* spec : {"grid:mix:7x5", "block:tet:3x2x2", "block:hex:3x3x2", "fan"}) {
+    for (bool split : {false, true}) {
+      GMap map = assemble_gmap(std::string(spec) == "fan" ? fan_of_triangles(40)
+                                                          : make_generated_mesh(spec));
+      const int n = map.dimension();
+      test::jitter_vertices(map, 7, 0.1);
+      if (split) {
+        std::vector<Dart> inner;
+        map.for_each_in_orbit(0, element_orbit(n), [&](Dart d) { inner.push_back(d); });
+        for (Dart d : inner) {
+          if (!map.is_free(d, n)) map.unsew(d, n);
+        }
+        ASSERT_TRUE(map.is_valid());
+      }
+      auto pos = map.embedding<Vec3>("position");
+      auto corner = map.add_embedding<Real>("corner_mass", corner_orbit(n));
+      auto walked = map.add_embedding<Real>("walked_mass", Orbit::cell(0, n), MergePolicy::kSum);
+      auto listed = map.add_embedding<Real>("listed_mass", Orbit::cell(0, n), MergePolicy::kSum);
+      assign_corner_masses_by_total(map, 2.0, corner, pos);
+      std::size_t largest = 0;
+      // From every dart of each vertex, not only its first: each start is
+      // its own walk order.
+      map.for_each_dart([&](Dart d) {
+        std::vector<Dart> darts;
+        map.for_each_in_orbit(d, Orbit::cell(0, n), [&](Dart x) { darts.push_back(x); });
+        largest = std::max(largest, darts.size());
+        update_vertex_mass(map, d, corner, walked);
+        listed[d] = -1;
+        update_vertex_mass(map, darts, corner, listed);
+        EXPECT_EQ(listed[d], walked[d]) << spec << " dart " << d;
+        EXPECT_GT(listed[d], 0.0) << spec << " dart " << d;
+      });
+      if (std::string(spec) == "fan") {
+        EXPECT_GE(largest, 78u);  // 39 or 40 corners of 2 darts: past the list
+      }
     }
   }
 }

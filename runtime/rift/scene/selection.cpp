@@ -14,41 +14,12 @@ namespace {
 
 using Frame = VertexSelector::Frame;
 
-// One dart per vertex, the one and in the order GMap::for_each_cell gives:
-// each vertex's smallest dart, in increasing order. Found as the first dart
-// met of each position slot, one bit per slot: every dart of a vertex holds
-// the vertex's slot and no two vertices share one, so the first dart met of
-// a slot is its vertex's smallest. One pass over the darts, without the
-// orbit walks and marks of for_each_cell (a 10^6-vertex cloth's corner
-// selection swept its vertices three times, 10 ms each). A dart without a
-// slot (a map that is not a simulation's) falls back to for_each_cell.
-std::vector<Dart> vertex_cells(const GMap& map, const Embedding<Vec3>& position) {
-  std::vector<Dart> cells;
-  const OrbitAttachment& vertices = position.attachment();
-  const Slot* slot = vertices.slot_data();
-  std::vector<std::uint64_t> seen((vertices.slot_capacity() + 63) / 64, 0);
-  bool every_dart_slotted = !vertices.dormant();
-  for (std::size_t k = 0; k < map.capacity() && every_dart_slotted; ++k) {
-    const auto d = static_cast<Dart>(k);
-    if (!map.is_alive(d)) continue;
-    const Slot s = slot[d];
-    if (s >= vertices.slot_capacity()) {
-      every_dart_slotted = false;
-      break;
-    }
-    std::uint64_t& word = seen[s / 64];
-    const std::uint64_t bit = std::uint64_t{1} << (s % 64);
-    if ((word & bit) != 0) continue;
-    word |= bit;
-    cells.push_back(d);
-  }
-  if (every_dart_slotted) return cells;
-  cells.clear();
-  map.for_each_cell(Orbit::cell(0, map.dimension()), [&](Dart d) { cells.push_back(d); });
-  return cells;
-}
+// Positions read through a reader: two plain loads a vertex, where an
+// Embedding's read also checks the column's storage with an acquire load
+// (each pass over a 10^6-vertex cloth's corners took 5 ms that way).
+using PositionReader = EmbeddingReader<Vec3>;
 
-Frame frame_of(std::span<const Dart> vertices, const Embedding<Vec3>& position,
+Frame frame_of(std::span<const Dart> vertices, const PositionReader& position,
                const Vec3& up_hint) {
   Frame f;
   f.lo = Vec3::Constant(INFINITY);
@@ -111,7 +82,9 @@ std::vector<Dart> select_vertices(const GMap& map, const Selection& sel, const V
 
 const std::vector<Dart>& VertexSelector::vertices() {
   if (!have_vertices_) {
-    vertices_ = vertex_cells(map_, map_.embedding<Vec3>(state::kPosition));
+    // One dart per vertex: its smallest, in increasing order (for_each_cell).
+    vertices_.reserve(map_.embedding<Vec3>(state::kPosition).attachment().live_slots());
+    map_.for_each_cell(Orbit::cell(0, map_.dimension()), [&](Dart d) { vertices_.push_back(d); });
     have_vertices_ = true;
   }
   return vertices_;
@@ -119,7 +92,7 @@ const std::vector<Dart>& VertexSelector::vertices() {
 
 const Frame& VertexSelector::frame() {
   if (!have_frame_) {
-    frame_ = frame_of(vertices(), map_.embedding<Vec3>(state::kPosition), up_);
+    frame_ = frame_of(vertices(), map_.embedding<Vec3>(state::kPosition).reader(), up_);
     have_frame_ = true;
   }
   return frame_;
@@ -127,7 +100,8 @@ const Frame& VertexSelector::frame() {
 
 std::vector<Dart> VertexSelector::select(const Selection& sel) {
   const GMap& map = map_;
-  const Embedding<Vec3> position = map.embedding<Vec3>(state::kPosition);
+  // Nothing here adds darts or gives a column storage: a reader holds.
+  const PositionReader position = map.embedding<Vec3>(state::kPosition).reader();
   const Orbit vertex = Orbit::cell(0, map.dimension());
   std::vector<Dart> found;
   // The vertices, listed once for every selection's sweeps (the group's

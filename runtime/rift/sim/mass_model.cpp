@@ -26,7 +26,11 @@ void for_each_face_vertex(const GMap& map, Dart d, F&& f) {
   } while (cur != d && ++guard < (1u << 20));
 }
 
-Real polygon_area(const GMap& map, Dart face, const Embedding<Vec3>& position) {
+// Positions: an Embedding<Vec3>, or its reader in a pass over many faces
+// (plain loads, where an Embedding's read checks the column's storage with
+// an acquire load: a 10^6-quad cloth's areas read 8·10^6 positions).
+template <class Positions>
+Real polygon_area(const GMap& map, Dart face, const Positions& position) {
   // Vector area: half the norm of the sum of p_i x p_{i+1}, valid for any
   // planar polygon placed anywhere in space.
   Vec3 twice_area = Vec3::Zero();
@@ -86,7 +90,8 @@ void for_each_corner_dart(const GMap& map, Dart d, F&& f) {
 
 // Adds to `measure` the fan of tetrahedra from `centre` over the polygon of
 // face <0,1>(face), started at the vertex of `face`.
-void add_face_fan(const GMap& map, Dart face, const Vec3& centre, const Embedding<Vec3>& position,
+template <class Positions>
+void add_face_fan(const GMap& map, Dart face, const Vec3& centre, const Positions& position,
                   Real& measure) {
   const Vec3 p0 = position[face] - centre;
   Vec3 prev = Vec3::Zero();
@@ -122,16 +127,17 @@ void sum_elements(const GMap& map, const std::vector<Dart>& firsts, ForEachDart&
                   ElementOf&& element_of, Bits corner_seen, Bits face_seen,
                   const Embedding<Vec3>& position, ElementSums& sums) {
   const bool solid = map.dimension() == 3;
+  const EmbeddingReader<Vec3> reader = position.reader();  // polygon_area
   for_each_dart([&](Dart d) {
     if (corner_seen.test(d)) return;
     for_each_corner_dart(map, d, [&](Dart x) { corner_seen.set(x); });
     const std::uint32_t e = element_of(d);
     ++sums.corners[e];
-    if (solid) sums.centres[e] += position[d];
+    if (solid) sums.centres[e] += reader[d];
   });
   if (!solid) {
     for (std::size_t k = 0; k < firsts.size(); ++k)
-      sums.measures[k] = polygon_area(map, firsts[k], position);
+      sums.measures[k] = polygon_area(map, firsts[k], reader);
     return;
   }
   for (std::size_t k = 0; k < firsts.size(); ++k)
@@ -140,7 +146,7 @@ void sum_elements(const GMap& map, const std::vector<Dart>& firsts, ForEachDart&
     if (face_seen.test(d)) return;
     map.for_each_in_two_link_orbit(d, 0, 1, [&](Dart x, int) { face_seen.set(x); });
     const std::uint32_t e = element_of(d);
-    add_face_fan(map, d, sums.centres[e], position, sums.measures[e]);
+    add_face_fan(map, d, sums.centres[e], reader, sums.measures[e]);
   });
 }
 
@@ -257,6 +263,7 @@ MeasuredElements measure_elements(const GMap& map, const Embedding<Vec3>& positi
             return true;
           },
           [&](Dart x) {
+            if (!surface) return;  // a solid's corners are counted by sum_elements
             ++darts;
             alone += map.is_free(x, 1);
           });
@@ -265,8 +272,9 @@ MeasuredElements measure_elements(const GMap& map, const Embedding<Vec3>& positi
   }
   if (surface) {
     out.measures.resize(out.darts.size());
+    const EmbeddingReader<Vec3> reader = position.reader();
     for (std::size_t k = 0; k < out.darts.size(); ++k)
-      out.measures[k] = polygon_area(map, out.darts[k], position);
+      out.measures[k] = polygon_area(map, out.darts[k], reader);
     return out;
   }
   ElementSums sums(out.darts.size());
@@ -444,6 +452,31 @@ void update_vertex_mass(const GMap& map, Dart vertex, const Embedding<Real>& cor
   map.for_each_sub_orbit(vertex, Orbit::cell(0, n), corner_orbit(n),
                          [&](Dart c) { m += corner_mass[c]; });
   vertex_mass[vertex] = m;
+}
+
+void update_vertex_mass(const GMap& map, std::span<const Dart> darts,
+                        const Embedding<Real>& corner_mass, Embedding<Real>& vertex_mass) {
+  // Each corner holds one slot of corner_mass and no two share one (a valid
+  // map), so the first dart of each slot met in the walk's order is where
+  // for_each_sub_orbit would add that corner. A tear's vertex has a handful
+  // of corners (8 around an inner hexahedral vertex); a vertex with more
+  // than kCorners (a fan of many elements) is walked instead.
+  constexpr std::size_t kCorners = 32;
+  if (darts.empty()) return;
+  Slot seen[kCorners];
+  std::size_t corners = 0;
+  Real m = 0;
+  for (const Dart x : darts) {
+    const Slot s = corner_mass.slot(x);
+    if (std::find(seen, seen + corners, s) != seen + corners) continue;
+    if (corners == kCorners) {
+      update_vertex_mass(map, darts.front(), corner_mass, vertex_mass);
+      return;
+    }
+    seen[corners++] = s;
+    m += corner_mass[x];
+  }
+  vertex_mass[darts.front()] = m;
 }
 
 void update_all_vertex_masses(const GMap& map, const Embedding<Real>& corner_mass,

@@ -68,6 +68,12 @@ void vertex_masses_from_elements(const GMap& map, const ElementMasses& elements,
 /// vertex_mass(v) = sum of corner_mass over the distinct corners of v.
 void update_vertex_mass(const GMap& map, Dart vertex, const Embedding<Real>& corner_mass,
                         Embedding<Real>& vertex_mass);
+/// The same sum from the vertex's darts as for_each_in_orbit lists them from
+/// darts[0] (a caller that walked the vertex already): each corner is told
+/// by its slot of corner_mass and added at its first dart in that order,
+/// the walk's order, so the same bits. No second walk, and no marks.
+void update_vertex_mass(const GMap& map, std::span<const Dart> darts,
+                        const Embedding<Real>& corner_mass, Embedding<Real>& vertex_mass);
 void update_all_vertex_masses(const GMap& map, const Embedding<Real>& corner_mass,
                               Embedding<Real>& vertex_mass);
 

@@ -221,6 +221,8 @@ class Simulation {
   std::vector<Vec3> held_x_before_;  // handles without loads: by Handles::held_slots()
   Real external_work_ = 0;
   std::vector<Dart> region_;
+  // on_topology_changed: each touched vertex's darts, [first, end) in region_.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> vertex_runs_;
   std::vector<std::unique_ptr<Criterion>> criteria_;
   // The map's topology version when on_topology_changed (or initialise) last
   // brought everything derived from the links up to date: the rewrites the
