@@ -20,6 +20,16 @@ Real sum_vertex_masses(const GMap& map, const Embedding<Real>& vertex_mass) {
   return total;
 }
 
+// Unsews the first element from its neighbours: its vertices split.
+void unsew_first_element(GMap& map) {
+  const int n = map.dimension();
+  std::vector<Dart> inner;
+  map.for_each_in_orbit(0, element_orbit(n), [&](Dart d) { inner.push_back(d); });
+  for (Dart d : inner) {
+    if (!map.is_free(d, n)) map.unsew(d, n);
+  }
+}
+
 TEST(MassModel, ElementMeasures) {
   for (const char* spec : {"grid:quad:4x3", "grid:tri:4x3", "grid:mix:5x5"}) {
     GMap map = assemble_gmap(make_generated_mesh(spec));
@@ -76,12 +86,7 @@ TEST(MassModel, AllVertexMassesAreEachVertexsCornerSums) {
       test::jitter_vertices(map, 5, 0.1);
       auto pos = map.embedding<Vec3>("position");
       if (split) {
-        // Unsew the first element from its neighbours: its vertices split.
-        std::vector<Dart> inner;
-        map.for_each_in_orbit(0, element_orbit(n), [&](Dart d) { inner.push_back(d); });
-        for (Dart d : inner) {
-          if (!map.is_free(d, n)) map.unsew(d, n);
-        }
+        unsew_first_element(map);
         ASSERT_TRUE(map.is_valid());
       }
       // From the elements' masses before corners hold slots: the pass then
@@ -146,11 +151,7 @@ TEST(MassModel, AVertexsWalkedDartsGiveTheWalksSum) {
       const int n = map.dimension();
       test::jitter_vertices(map, 7, 0.1);
       if (split) {
-        std::vector<Dart> inner;
-        map.for_each_in_orbit(0, element_orbit(n), [&](Dart d) { inner.push_back(d); });
-        for (Dart d : inner) {
-          if (!map.is_free(d, n)) map.unsew(d, n);
-        }
+        unsew_first_element(map);
         ASSERT_TRUE(map.is_valid());
       }
       auto pos = map.embedding<Vec3>("position");
