@@ -284,6 +284,10 @@ void emit_criterion(Writer& w, const lower::CriterionPlan& plan, const PackModel
          "::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& "
          "touched) {");
   w.line("if (!g.is_alive(candidate.at)) return false;");
+  // On a large map the rewrite and the re-matches after it read a few
+  // hundred lines around the candidate, one miss after another: asked for
+  // first, their misses overlap (GMap::prefetch_around).
+  w.line("g.prefetch_around(candidate.at);");
   w.line("const rift::Dart " + d + " = candidate.at;");
   if (!plan.pattern.empty()) {
     // The map may have changed since collect(): the candidate is applied only

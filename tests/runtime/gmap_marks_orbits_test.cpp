@@ -5,6 +5,7 @@
 #include <set>
 #include <vector>
 
+#include "rift/core/prefetch.hpp"
 #include "rift/gmap/gmap.hpp"
 #include "rift/mesh/assemble.hpp"
 #include "rift/mesh/generators.hpp"
@@ -255,6 +256,39 @@ TEST(Cells, ForEachCellGivesOneDartPerCell) {
   EXPECT_EQ(calls, 24u);
   EXPECT_EQ(faces.size(), 24u);
   EXPECT_EQ(map.count_cells_of_dimension(2), 24u);
+}
+
+// prefetch_around is a hint: on a map large enough to be prefetched (2^19
+// darts), asking for the lines around darts at every radius changes no link
+// and no slot, leaves no mark reserved, and walks after it see the same map.
+TEST(GMapPrefetch, AroundADartLeavesTheMapAsItWas) {
+  GMap map = assemble_gmap(make_generated_mesh("grid:quad:256x256"));
+  ASSERT_GE(map.capacity(), kPrefetchFromDarts);
+  const Embedding<Vec3> position = map.embedding<Vec3>("position");
+  std::vector<Dart> links;
+  std::vector<Slot> slots;
+  for (Dart d = 0; d < map.capacity(); ++d) {
+    for (int i = 0; i <= 2; ++i)
+      links.push_back(map.alpha(d, i));
+    slots.push_back(position.slot(d));
+  }
+  const std::uint64_t version = map.topology_version();
+  const std::size_t vertices = map.count_cells(Orbit{1, 2});
+  for (const Dart d : {Dart{0}, Dart{777}, static_cast<Dart>(map.capacity() / 2),
+                       static_cast<Dart>(map.capacity() - 1)}) {
+    for (int radius = 0; radius <= 5; ++radius)
+      map.prefetch_around(d, radius);
+  }
+  EXPECT_EQ(map.reserved_marks(), 0);
+  EXPECT_EQ(map.topology_version(), version);
+  std::size_t k = 0;
+  for (Dart d = 0; d < map.capacity(); ++d) {
+    for (int i = 0; i <= 2; ++i)
+      ASSERT_EQ(map.alpha(d, i), links[k++]) << "dart " << d << " link " << i;
+    ASSERT_EQ(position.slot(d), slots[d]) << "dart " << d;
+  }
+  EXPECT_EQ(map.count_cells(Orbit{1, 2}), vertices);
+  EXPECT_TRUE(map.is_valid());
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "rift/core/huge_pages.hpp"
+#include "rift/core/prefetch.hpp"
 
 namespace rift {
 
@@ -242,6 +243,48 @@ const OrbitAttachment* GMap::slotted_attachment(Orbit o) const {
     if (att->slotted_darts() == size()) return att.get();
   }
   return nullptr;
+}
+
+void GMap::prefetch_around(Dart hook, int radius) const {
+  if (capacity() < kPrefetchFromDarts || !is_alive(hook)) return;
+  std::vector<Dart>& near = acquire_scratch();
+  struct ScratchGuard {
+    const GMap& map;
+    ~ScratchGuard() { map.release_scratch(); }
+  } guard{*this};
+  // Each dart with the link that reached it, which is not taken back (an
+  // involution would only list its dart again): at most 1 + n (n+1)^r darts
+  // are listed, a few of them twice, which costs a hint more each.
+  near.clear();
+  std::vector<int>& via = via_scratch_;
+  via.clear();
+  near.push_back(hook);
+  via.push_back(-1);
+  std::size_t begin = 0;
+  for (int level = 0; level < radius; ++level) {
+    const std::size_t end = near.size();
+    for (std::size_t k = begin; k < end; ++k) {
+      const Dart x = near[k];
+      for (int i = 0; i <= dimension_; ++i) {
+        if (i == via[k]) continue;
+        const Dart y = alpha_[static_cast<std::size_t>(i)][x];
+        if (y == x) continue;  // free
+        near.push_back(y);
+        via.push_back(i);
+      }
+    }
+    begin = end;
+  }
+  for (const Dart x : near) {
+    for (int i = 0; i <= dimension_; ++i)
+      prefetch(alpha_[static_cast<std::size_t>(i)].data() + x);
+    prefetch(alive_.data() + x);
+    prefetch(mark_bits_.data() + x);
+    for (const auto& att : attachments_) {
+      if (att->dormant()) continue;
+      if (const Slot* slots = att->slot_data()) prefetch(slots + x);
+    }
+  }
 }
 
 std::size_t GMap::count_cells(Orbit o) const {

@@ -285,6 +285,7 @@ void StretchStrainCriterion::collect(const rift::GMap& g, std::vector<rift::Tear
 
 bool StretchStrainCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
+  g.prefetch_around(candidate.at);
   const rift::Dart d_a = candidate.at;
   rift::packs::topology2d::remove_edge_elements_args args;
   const rift::Dart hooks[] = {d_a};
@@ -317,6 +318,7 @@ void StretchForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
 
 bool StretchForceCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
+  g.prefetch_around(candidate.at);
   const rift::Dart d_a = candidate.at;
   rift::packs::topology2d::remove_edge_elements_args args;
   const rift::Dart hooks[] = {d_a};
@@ -351,6 +353,7 @@ void SpringSplitCriterion::collect(const rift::GMap& g, std::vector<rift::TearCa
 
 bool SpringSplitCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
+  g.prefetch_around(candidate.at);
   const rift::Dart d_a = candidate.at;
   rift::packs::topology2d::split_ends_args args;
   args.normal = rift::generated::payload_as<rift::Vec3>(candidate, 0);
@@ -386,6 +389,7 @@ void ShearForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCan
 
 bool ShearForceCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
+  g.prefetch_around(candidate.at);
   const rift::Dart d_f = candidate.at;
   rift::packs::topology2d::remove_element_args args;
   const rift::Dart hooks[] = {d_f};
@@ -422,6 +426,7 @@ void BendForceCriterion::collect(const rift::GMap& g, std::vector<rift::TearCand
 
 bool BendForceCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
+  g.prefetch_around(candidate.at);
   const rift::Dart d_d = candidate.at;
   if (g.is_free(d_d, 2)) return false;
   rift::packs::topology2d::separate_faces_args args;
@@ -460,6 +465,7 @@ void ElementStressCriterion::collect(const rift::GMap& g, std::vector<rift::Tear
 
 bool ElementStressCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
+  g.prefetch_around(candidate.at);
   const rift::Dart d_f = candidate.at;
   rift::packs::topology2d::remove_element_args args;
   const rift::Dart hooks[] = {d_f};
@@ -497,6 +503,7 @@ void InteractionForceCriterion::collect(const rift::GMap& g, std::vector<rift::T
 
 bool InteractionForceCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
+  g.prefetch_around(candidate.at);
   const rift::Dart d_v = candidate.at;
   split_along_largest_force_args args;
   const rift::Dart hooks[] = {d_v};
@@ -537,6 +544,7 @@ void VertexStressCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
 
 bool VertexStressCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
+  g.prefetch_around(candidate.at);
   const rift::Dart d_v = candidate.at;
   rift::packs::topology2d::split_vertex_args args;
   args.normal = rift::generated::payload_as<rift::Vec3>(candidate, 0);
@@ -590,6 +598,7 @@ void VertexEnergyCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
 
 bool VertexEnergyCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
+  g.prefetch_around(candidate.at);
   const rift::Dart d_v = candidate.at;
   rift::packs::topology2d::split_vertex_args args;
   args.normal = rift::generated::payload_as<rift::Vec3>(candidate, 0);
@@ -628,6 +637,7 @@ void VertexSumCriterion::collect(const rift::GMap& g, std::vector<rift::TearCand
 
 bool VertexSumCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
+  g.prefetch_around(candidate.at);
   const rift::Dart d_v = candidate.at;
   rift::packs::topology2d::split_vertex_args args;
   args.normal = rift::generated::payload_as<rift::Vec3>(candidate, 0);
@@ -680,6 +690,7 @@ void AtomicEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCan
 
 bool AtomicEdgeCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
+  g.prefetch_around(candidate.at);
   const rift::Dart d_a = candidate.at;
   if (g.is_free(d_a, 2)) return false;
   rift::packs::topology2d::separate_faces_args args;
@@ -720,6 +731,7 @@ void GlobalEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCan
 
 bool GlobalEdgeCriterion::apply(rift::GMap& g, const rift::TearCandidate& candidate, std::vector<rift::Dart>& touched) {
   if (!g.is_alive(candidate.at)) return false;
+  g.prefetch_around(candidate.at);
   const rift::Dart d_a = candidate.at;
   if (g.is_free(d_a, 2)) return false;
   rift::packs::topology2d::separate_faces_args args;
