@@ -1163,6 +1163,17 @@ void write_group_key(Writer& w, const Kernel& k) {
   w.line("(void)out;");
   w.close();
   w.line();
+  // The same values, asked for ahead: a re-match on a large map computes
+  // the keys of the matches it finds again, and the values behind them
+  // are misses there (rift::MatchCache::prefetch_entries).
+  w.open("void " + k.cls + "::prefetch_key([[maybe_unused]] const Match& m) const {");
+  if (!k.reads.empty()) w.line("const Columns c = columns();");
+  for (const auto& [name, slot] : k.reads) {
+    w.line("rift::prefetch(c." + member_name(name) + " + m." +
+           k.slots[static_cast<std::size_t>(slot)] + ");");
+  }
+  w.close();
+  w.line();
 }
 
 void write_add_forces_grouped(Writer& w, const Kernel& k, bool indexed);
@@ -1485,6 +1496,8 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
     w.line("/// (rift/sim/match_groups.hpp): the vertex slots, then the bits of the values read.");
     w.line("static constexpr int kGroupKey = " + std::to_string(group_key_words(k, model)) + ";");
     w.line("void group_key(const Match& m, std::uint64_t* out) const;");
+    w.line("/// Hints: the values group_key reads through m's slots (a re-match).");
+    w.line("void prefetch_key(const Match& m) const;");
     w.line("/// One match's kForceTerms forces (zero where a `when` fails; false then).");
     w.line(
         "bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) "

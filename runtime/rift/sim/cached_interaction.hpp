@@ -611,6 +611,12 @@ class CachedInteraction final : public ForceModel {
     void prefetch_group(std::uint32_t e) const {
       if constexpr (requires { inner.prefetch_group(e); }) inner.prefetch_group(e);
     }
+    void prefetch_members(std::uint32_t e) const {
+      if constexpr (requires { inner.prefetch_members(e); }) inner.prefetch_members(e);
+    }
+    void prefetch_tail() const {
+      if constexpr (requires { inner.prefetch_tail(); }) inner.prefetch_tail();
+    }
   };
 
   // Follows the match cache's changes in the groups, and the groups' in the colouring.
@@ -637,8 +643,31 @@ class CachedInteraction final : public ForceModel {
       Colouring c{self};
       self.groups_.inserted(e, m, self.key_fn(), c);
     }
+    // The colouring is over groups: a group's place is asked for once its
+    // id is known (prefetch_group reads the entry's group), its block a
+    // level later.
     void prefetch_entry(std::uint32_t e) const { self.groups_.prefetch_entry(e); }
-    void prefetch_group(std::uint32_t e) const { self.groups_.prefetch_group_of(e); }
+    void prefetch_group(std::uint32_t e) const {
+      self.groups_.prefetch_group_of(e);
+      if (e < self.cache_.size()) self.colouring_.prefetch_place(self.groups_.group_of(e));
+    }
+    void prefetch_members(std::uint32_t e) const {
+      self.groups_.prefetch_members(e, self.cache_.matches());
+      if (e >= self.cache_.size()) return;
+      self.colouring_.prefetch_block(self.groups_.group_of(e));
+      // replaced() computes the key of e's new match, which mostly reads
+      // the values behind the old one's slots.
+      if constexpr (requires(const Match& m) { self.kernel_.prefetch_key(m); }) {
+        self.kernel_.prefetch_key(self.cache_.matches()[e]);
+      }
+    }
+    // drop_group moves the last group into a dropped one's place.
+    void prefetch_tail() const {
+      self.groups_.prefetch_last_group();
+      if (self.groups_.size() > 0) {
+        self.colouring_.prefetch_place(static_cast<std::uint32_t>(self.groups_.size() - 1));
+      }
+    }
   };
 
   // The coloured scatter over groups: each group's representative is
@@ -726,6 +755,10 @@ class CachedInteraction final : public ForceModel {
       kernel.force_targets(m, s);
       colouring.insert(e, s);
     }
+    // MatchCache::prefetch_entries' levels: the colouring's, for entry e.
+    void prefetch_entry(std::uint32_t e) const { colouring.prefetch_place(e); }
+    void prefetch_group(std::uint32_t e) const { colouring.prefetch_block(e); }
+    void prefetch_members(std::uint32_t e) const { colouring.prefetch_block_end(e); }
   };
 
   void add_forces_coloured(const ForceInput& in, Vec3* f, bool store) {

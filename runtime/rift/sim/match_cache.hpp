@@ -15,6 +15,7 @@
 // keeps no owners either: rematch then refuses.
 #pragma once
 
+#include <algorithm>
 #include <span>
 #include <stdexcept>
 #include <vector>
@@ -80,6 +81,7 @@ class MatchCache {
     // time (NoAllocation.WarmTearsAllocateNothing).
     frontier_.reserve(kTearDarts);
     seen_.reserve(kTearDarts);
+    found_.reserve(kTearDarts);
   }
 
   /// Matches every support orbit of the map. match(map, dart, Match&) -> bool.
@@ -261,7 +263,8 @@ class MatchCache {
     report.add(owner, "matches", matches_);
     report.add(owner, "match owners (support darts)", owners_);
     entry_of_.report_memory(report, owner);
-    report.add(owner, "re-match lists", (frontier_.capacity() + seen_.capacity()) * sizeof(Dart));
+    report.add(owner, "re-match lists",
+               (frontier_.capacity() + seen_.capacity() + found_.capacity()) * sizeof(Dart));
   }
 
  private:
@@ -271,22 +274,45 @@ class MatchCache {
   // of a tear's cost at 10^6 vertices (issue 12, "one tear"). Asked for up
   // front, a level at a time, the misses overlap. Hints only: nothing read
   // here decides anything.
+  //
+  // Each level reads only what the one before asked for: the owners'
+  // entries, then each entry's match, owner and what the observer keeps of
+  // it, then its group, then the group's other members (an entry that
+  // leaves its group relinks them). An erase also moves the last entry into
+  // the hole, reading the last entries' owners and groups: those are asked
+  // for too, whether or not the re-match erases (a few lines).
   template <class Observer>
-  void prefetch_entries(Observer& observer) const {
+  void prefetch_entries(Observer& observer) {
     for (Dart d : frontier_)
       entry_of_.prefetch_owner(d);
+    found_.clear();
     for (Dart d : frontier_) {
       const std::uint32_t e = entry_of_.find(d);
       if (e == kNone) continue;
+      found_.push_back(e);
       prefetch(&matches_[e]);
       prefetch(&owners_[e]);
       if constexpr (requires { observer.prefetch_entry(e); }) observer.prefetch_entry(e);
     }
+    const std::size_t tail = std::min<std::size_t>(kTailPrefetch, matches_.size());
+    for (std::size_t k = 1; k <= tail; ++k) {
+      const auto last = static_cast<std::uint32_t>(matches_.size() - k);
+      prefetch(&matches_[last]);
+      prefetch(&owners_[last]);
+      if constexpr (requires { observer.prefetch_entry(last); }) observer.prefetch_entry(last);
+    }
     if constexpr (requires(std::uint32_t e) { observer.prefetch_group(e); }) {
-      for (Dart d : frontier_) {
-        const std::uint32_t e = entry_of_.find(d);
-        if (e != kNone) observer.prefetch_group(e);
-      }
+      for (std::uint32_t e : found_)
+        observer.prefetch_group(e);
+      for (std::size_t k = 1; k <= tail; ++k)
+        observer.prefetch_group(static_cast<std::uint32_t>(matches_.size() - k));
+    }
+    for (std::size_t k = 1; k <= tail; ++k)
+      entry_of_.prefetch_owner(owners_[matches_.size() - k]);
+    if constexpr (requires { observer.prefetch_tail(); }) observer.prefetch_tail();
+    if constexpr (requires(std::uint32_t e) { observer.prefetch_members(e); }) {
+      for (std::uint32_t e : found_)
+        observer.prefetch_members(e);
     }
   }
 
@@ -319,8 +345,11 @@ class MatchCache {
   bool keeps_owners_ = true;  ///< false: never re-matched, owners_ stays empty
   /// Darts rematch's lists have room for from the first re-match on.
   static constexpr std::size_t kTearDarts = 2048;
+  /// The last entries prefetch_entries asks for (erase moves them).
+  static constexpr std::size_t kTailPrefetch = 2;
   FlatList<Dart> frontier_;
-  FlatList<Dart> seen_;  ///< rematch's darts of the support orbits it walked
+  FlatList<Dart> seen_;            ///< rematch's darts of the support orbits it walked
+  FlatList<std::uint32_t> found_;  ///< prefetch_entries' entries of the frontier
 };
 
 }  // namespace rift

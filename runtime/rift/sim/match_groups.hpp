@@ -244,6 +244,33 @@ class MatchGroups {
     prefetch(&head_[g]);
   }
 
+  /// Hints for a caller whose entry e may leave its group next (replaced
+  /// with another key, erased), after prefetch_group_of: the link and match
+  /// of the group's first member, which remove relinks and takes as the
+  /// representative, and the group's home in the table, which drop_group
+  /// clears. `matches`: the cache's dense array.
+  void prefetch_members(std::uint32_t e, std::span<const Match> matches) const {
+    if (keep_ != Keep::kEverything || e >= group_of_.size()) return;
+    const std::uint32_t g = group_of_[e];
+    if (g >= head_.size()) return;
+    const std::uint32_t h = head_[g];
+    if (h < next_.size()) prefetch(&next_[h]);
+    if (h < matches.size()) prefetch(&matches[h]);
+    if (!table_.empty()) prefetch(&table_[hash(key_of(g))]);
+  }
+
+  /// Hints for drop_group, which moves the last group into the place of
+  /// the group it drops: the last group's key, representative, count and
+  /// first member.
+  void prefetch_last_group() const {
+    if (keep_ != Keep::kEverything || reps_.empty()) return;
+    const auto last = static_cast<std::uint32_t>(reps_.size() - 1);
+    prefetch(key_of(last));
+    prefetch(&reps_[last]);
+    prefetch(&count_[last]);
+    prefetch(&head_[last]);
+  }
+
   /// Entry e is matched again: `before` becomes `after`.
   template <class KeyFn, class Observer>
   void replaced(std::uint32_t e, const Match& before, const Match& after,

@@ -40,6 +40,7 @@
 
 #include "rift/core/huge_pages.hpp"
 #include "rift/core/memory_report.hpp"
+#include "rift/core/prefetch.hpp"
 #include "rift/core/types.hpp"
 
 namespace rift {
@@ -116,6 +117,29 @@ class ScatterColouring {
   void replace(std::uint32_t e, bool same, std::span<const Slot> slots);
   /// A new entry (the index after the last) with these vertex slots.
   void insert(std::uint32_t e, std::span<const Slot> slots);
+
+  /// Hints for a caller about to change entry e (a re-match of a large map:
+  /// MatchCache::prefetch_entries), one level at a time, each reading only
+  /// what the one before asked for: e's place, then its block, then the
+  /// block's last entry, which remove moves into e's place. Nothing else
+  /// is read; a frozen colouring has nothing to ask for.
+  void prefetch_place(std::uint32_t e) const {
+    if (e < where_.size()) prefetch(&where_[e]);
+  }
+  void prefetch_block(std::uint32_t e) const {
+    if (e >= where_.size()) return;
+    const std::uint32_t w = where_[e];
+    if ((w & kPendingBit) != 0) return;
+    if (w / block_ < blocks_.size()) prefetch(&blocks_[w / block_]);
+  }
+  void prefetch_block_end(std::uint32_t e) const {
+    if (e >= where_.size()) return;
+    const std::uint32_t w = where_[e];
+    if ((w & kPendingBit) != 0 || w / block_ >= blocks_.size()) return;
+    const Block& b = blocks_[w / block_];
+    const std::size_t last = w / block_ * block_ + b.size;
+    if (b.size > 0 && last - 1 < order_.size()) prefetch(&order_[last - 1]);
+  }
 
   /// Calls body on every block: colour by colour, the blocks of one colour
   /// in parallel (rift/core/parallel.hpp), then the blocks beyond

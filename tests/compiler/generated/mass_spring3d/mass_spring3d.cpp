@@ -363,6 +363,12 @@ void StretchKernel::group_key(const Match& m, std::uint64_t* out) const {
   (void)out;
 }
 
+void StretchKernel::prefetch_key([[maybe_unused]] const Match& m) const {
+  const Columns c = columns();
+  rift::prefetch(c.stretch_k + m.orbit0_a);
+  rift::prefetch(c.stretch_rest + m.orbit0_a);
+}
+
 bool StretchKernel::evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const {
   Result r;
   if (!evaluate<true>(m, in, columns(), r)) {
@@ -813,6 +819,13 @@ void ShearKernel::group_key(const Match& m, std::uint64_t* out) const {
   out = rift::key_words(c.shear_rest02[m.orbit01_c0], out);
   out = rift::key_words(c.shear_rest13[m.orbit01_c0], out);
   (void)out;
+}
+
+void ShearKernel::prefetch_key([[maybe_unused]] const Match& m) const {
+  const Columns c = columns();
+  rift::prefetch(c.shear_k + m.orbit01_c0);
+  rift::prefetch(c.shear_rest02 + m.orbit01_c0);
+  rift::prefetch(c.shear_rest13 + m.orbit01_c0);
 }
 
 bool ShearKernel::evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const {
@@ -1572,6 +1585,15 @@ void VolumeShearKernel::group_key(const Match& m, std::uint64_t* out) const {
   out = rift::key_words(c.vshear_rest2[m.orbit012_b0], out);
   out = rift::key_words(c.vshear_rest3[m.orbit012_b0], out);
   (void)out;
+}
+
+void VolumeShearKernel::prefetch_key([[maybe_unused]] const Match& m) const {
+  const Columns c = columns();
+  rift::prefetch(c.vshear_k + m.orbit012_b0);
+  rift::prefetch(c.vshear_rest0 + m.orbit012_b0);
+  rift::prefetch(c.vshear_rest1 + m.orbit012_b0);
+  rift::prefetch(c.vshear_rest2 + m.orbit012_b0);
+  rift::prefetch(c.vshear_rest3 + m.orbit012_b0);
 }
 
 bool VolumeShearKernel::evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const {

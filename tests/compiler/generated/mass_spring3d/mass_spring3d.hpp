@@ -97,6 +97,8 @@ class StretchKernel {
   /// (rift/sim/match_groups.hpp): the vertex slots, then the bits of the values read.
   static constexpr int kGroupKey = 4;
   void group_key(const Match& m, std::uint64_t* out) const;
+  /// Hints: the values group_key reads through m's slots (a re-match).
+  void prefetch_key(const Match& m) const;
   /// One match's kForceTerms forces (zero where a `when` fails; false then).
   bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
   /// Stores forces computed by evaluate_terms into m's stored-force slots.
@@ -223,6 +225,8 @@ class ShearKernel {
   /// (rift/sim/match_groups.hpp): the vertex slots, then the bits of the values read.
   static constexpr int kGroupKey = 7;
   void group_key(const Match& m, std::uint64_t* out) const;
+  /// Hints: the values group_key reads through m's slots (a re-match).
+  void prefetch_key(const Match& m) const;
   /// One match's kForceTerms forces (zero where a `when` fails; false then).
   bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
   /// Stores forces computed by evaluate_terms into m's stored-force slots.
@@ -365,6 +369,8 @@ class VolumeShearKernel {
   /// (rift/sim/match_groups.hpp): the vertex slots, then the bits of the values read.
   static constexpr int kGroupKey = 13;
   void group_key(const Match& m, std::uint64_t* out) const;
+  /// Hints: the values group_key reads through m's slots (a re-match).
+  void prefetch_key(const Match& m) const;
   /// One match's kForceTerms forces (zero where a `when` fails; false then).
   bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
   /// Stores forces computed by evaluate_terms into m's stored-force slots.
