@@ -267,12 +267,20 @@ std::string check_event(const Simulation& sim, DartLedger& ledger) {
 
   const std::vector<Real>& mass = sim.vertex_mass().values();
   const std::vector<Vec3>& velocity = sim.velocity().values();
+  const std::vector<Real>& inverse_mass = sim.inverse_masses();
   Real vertex_total = 0;
   Vec3 momentum = Vec3::Zero();
   for (Slot v = 0; v < mass.size(); ++v) {
     if (!vertices.slot_alive(v)) continue;
     vertex_total += mass[v];
     momentum += mass[v] * velocity[v];
+    // The scenes pin nothing and hold nothing: every vertex moves by 1 / m,
+    // its new copies and the vertices whose corners a rewrite took included.
+    const Real expected_inverse = mass[v] > 0 ? 1 / mass[v] : 0;
+    if (v >= inverse_mass.size() || inverse_mass[v] != expected_inverse) {
+      return "vertex slot " + std::to_string(v) + " of mass " + num(mass[v]) +
+             " has inverse mass " + (v < inverse_mass.size() ? num(inverse_mass[v]) : "none");
+    }
   }
   ledger.record_velocities(sim);
 

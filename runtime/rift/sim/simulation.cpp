@@ -151,17 +151,18 @@ void Simulation::refresh_inverse_masses() {
   }
 }
 
-void Simulation::refresh_inverse_masses(std::span<const Dart> region) {
+void Simulation::refresh_touched_inverse_masses() {
   // Only the vertices a rewrite touched (a tear costs what it touches): the
-  // live darts of the region, whose vertex slots include the new ones of a
-  // split, and the slots rewrites freed, which must not move (the free list
-  // is short: slots are freed only when a whole vertex disappears).
+  // vertices on_topology_changed walked, whose slots include the new ones
+  // of a split, once each (by the first dart of its run: refreshing at each
+  // of a quad cloth's 8 darts of a vertex was 3 % of a tear), and the slots
+  // rewrites freed, which must not move (the free list is short: slots are
+  // freed only when a whole vertex disappears).
   const OrbitAttachment& att = position_.attachment();
   if (inverse_mass_.size() < att.slot_capacity())
     grow_huge(inverse_mass_, att.slot_capacity(), Real{0});
-  for (Dart d : region) {
-    if (map_.is_alive(d)) refresh_inverse_mass(att.slot(d));
-  }
+  for (const auto& [first, end] : vertex_runs_)
+    refresh_inverse_mass(att.slot(region_[first]));
   for (Slot s : att.free_slots())
     refresh_inverse_mass(s);
 }
@@ -425,7 +426,7 @@ void Simulation::on_topology_changed(std::span<const Dart> touched) {
   if (handles_) handles_->topology_changed(map_, region_);
   if (implicit_) implicit_->topology_changed();
   bdf2_.restart();  // the slots' history no longer matches the map
-  refresh_inverse_masses(region_);
+  refresh_touched_inverse_masses();
 }
 
 std::size_t Simulation::per_vertex_bytes() const {

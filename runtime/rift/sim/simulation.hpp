@@ -185,7 +185,9 @@ class Simulation {
   /// (then it keeps the positions before the step).
   bool tracks_external_work() const { return !external_.empty() || handles_ != nullptr; }
   void refresh_inverse_masses();
-  void refresh_inverse_masses(std::span<const Dart> region);
+  /// The inverse masses of the vertices on_topology_changed walked (its
+  /// vertex_runs_) and of the free slots.
+  void refresh_touched_inverse_masses();
   void refresh_inverse_mass(Slot s);
   void implicit_step();  // simulation_implicit.cpp
   std::size_t apply_criteria();
