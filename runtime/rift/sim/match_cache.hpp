@@ -294,9 +294,11 @@ class MatchCache {
       prefetch(&owners_[e]);
       if constexpr (requires { observer.prefetch_entry(e); }) observer.prefetch_entry(e);
     }
-    const std::size_t tail = std::min<std::size_t>(kTailPrefetch, matches_.size());
-    for (std::size_t k = 1; k <= tail; ++k) {
-      const auto last = static_cast<std::uint32_t>(matches_.size() - k);
+    // The tail: entries [first_last, size).
+    const auto first_last =
+        static_cast<std::uint32_t>(matches_.size() - std::min(kTailPrefetch, matches_.size()));
+    const auto end = static_cast<std::uint32_t>(matches_.size());
+    for (std::uint32_t last = first_last; last < end; ++last) {
       prefetch(&matches_[last]);
       prefetch(&owners_[last]);
       if constexpr (requires { observer.prefetch_entry(last); }) observer.prefetch_entry(last);
@@ -304,11 +306,11 @@ class MatchCache {
     if constexpr (requires(std::uint32_t e) { observer.prefetch_group(e); }) {
       for (std::uint32_t e : found_)
         observer.prefetch_group(e);
-      for (std::size_t k = 1; k <= tail; ++k)
-        observer.prefetch_group(static_cast<std::uint32_t>(matches_.size() - k));
+      for (std::uint32_t last = first_last; last < end; ++last)
+        observer.prefetch_group(last);
     }
-    for (std::size_t k = 1; k <= tail; ++k)
-      entry_of_.prefetch_owner(owners_[matches_.size() - k]);
+    for (std::uint32_t last = first_last; last < end; ++last)
+      entry_of_.prefetch_owner(owners_[last]);
     if constexpr (requires { observer.prefetch_tail(); }) observer.prefetch_tail();
     if constexpr (requires(std::uint32_t e) { observer.prefetch_members(e); }) {
       for (std::uint32_t e : found_)
