@@ -233,6 +233,7 @@ void emit_criterion(Writer& w, const lower::CriterionPlan& plan, const PackModel
     // Two segments: what every cell computes, and what only a candidate does
     // (values are shared across both, folds are walked together within each).
     std::vector<ir::ExprId> roots = {plan.measure, plan.threshold}, payload;
+    roots.insert(roots.end(), plan.guards.begin(), plan.guards.end());
     for (const lower::PayloadField& f : plan.payload) {
       lower::lets_read(b, f.value, for_payload);
       payload.push_back(f.value);
@@ -247,6 +248,23 @@ void emit_criterion(Writer& w, const lower::CriterionPlan& plan, const PackModel
       write_pattern(w, plan, nodes_read(b, all), "return;");
     }
     BodyRenderer r(b.graph, b.sharing, collect_ctx, roots);
+    // A cell that fails a guard cannot pass: it is left before the lets
+    // only the rest of the measure reads (lower/measure_guards.hpp).
+    for (std::size_t k = 0; k < plan.guards.size(); ++k) {
+      const ir::ExprId guard = plan.guards[k];
+      std::vector<bool> needs(b.lets.size(), false);
+      lower::lets_read(b, guard, needs);
+      write_wanted_lets(w, r, b, needs, written);
+      const diag::Location& loc = crit.measure->args[0]->loc;
+      if (b.graph[guard].op == ir::Op::Let) {
+        write_rendered(w, r, loc, "if (!", guard, ") return;");
+        continue;
+      }
+      const std::string name = "guard" + std::to_string(k);
+      write_rendered(w, r, loc, "const bool " + name + " = ", guard, ";");
+      r.computed(guard, name);
+      w.line("if (!" + name + ") return;");
+    }
     write_wanted_lets(w, r, b, wanted, written);
     write_rendered(w, r, crit.measure->args[0]->loc, "const rift::Real measure = ", plan.measure,
                    ";");

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "lower/expr_lower.hpp"
+#include "lower/measure_guards.hpp"
 #include "lower/orbit_memo.hpp"
 #include "lower/share.hpp"
 
@@ -71,7 +72,10 @@ CriterionPlan plan_criterion(const ast::Criterion& crit, const std::vector<ast::
         {a.name.text, to, plan.payload_reals, lowering.lower_as(*a.value, to), a.value->loc});
     plan.payload_reals += ast::payload_reals(to);
   }
+  plan.guards = measure_guards(body, plan.measure, plan.threshold, crit.measure->op, crit.params);
   std::vector<ir::ExprId*> roots = {&plan.measure, &plan.threshold};
+  for (ir::ExprId& guard : plan.guards)
+    roots.push_back(&guard);
   for (PayloadField& f : plan.payload)
     roots.push_back(&f.value);
   share_common_subexpressions(body, roots);

@@ -51,6 +51,9 @@ struct CriterionPlan {
   std::vector<PatternNode> pattern;
   ir::ExprId measure = ir::kNoExpr;    // the left-hand side of the comparison, a real
   ir::ExprId threshold = ir::kNoExpr;  // the right-hand side, a real
+  /// Conditions without which the measure cannot pass, each tested as soon
+  /// as its lets are computed, in this order (lower/measure_guards.hpp).
+  std::vector<ir::ExprId> guards;
   /// The apply arguments in the order written, laid out one after the other
   /// (ast::payload_reals reals each); check/types.cpp proved they fit.
   std::vector<PayloadField> payload;

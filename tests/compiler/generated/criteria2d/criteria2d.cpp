@@ -270,8 +270,10 @@ void StretchStrainCriterion::collect(const rift::GMap& g, std::vector<rift::Tear
     [[maybe_unused]] const rift::EmbeddingReader<rift::Real, rift::ReadBy::kSlot> r_stretch_rest = e_stretch_rest.reader<rift::ReadBy::kSlot>();
     for (const rift::Dart d_a : cells) {
       [&]() RIFT_CELL_BODY {
+        const bool guard0 = (r_stretch_rest[d_a] > 0.0);
+        if (!guard0) return;
         const rift::Real l_l = ((r_position[g.alpha(d_a, 0)] - r_position[d_a])).norm();
-        const rift::Real measure = ((r_stretch_rest[d_a] > 0.0) ? ((l_l - r_stretch_rest[d_a]) / r_stretch_rest[d_a]) : 0.0);
+        const rift::Real measure = (guard0 ? ((l_l - r_stretch_rest[d_a]) / r_stretch_rest[d_a]) : 0.0);
         const rift::Real threshold = p_.threshold;
         if (!(measure > threshold)) return;
         rift::TearCandidate c;
@@ -578,9 +580,11 @@ void VertexEnergyCriterion::collect(const rift::GMap& g, std::vector<rift::TearC
         rift::Real s0 = rift::Real(0);
         rift::Real s1 = rift::Real(0);
         for_each_sub_orbit(g, d_v, rift::Orbit{1, 2}, rift::Orbit{0, 1}, [&](rift::Dart d_f) { const rift::Real s2 = (((r_position[g.alpha(d_f, 0)] - r_position[d_f])).cross((r_position[g.alpha(g.alpha(d_f, 1), 0)] - r_position[d_f]))).norm(); const std::uint32_t memo0_entry = memo0_.entry(g, d_f, rift::Orbit{0, 1}); const rift::Mat3 s3 = memo0_0_.get(memo0_, memo0_entry, 0, [&]() -> rift::Mat3 { return [&]() { rift::Mat3 acc1 = rift::Mat3::Zero(); for_each_sub_orbit(g, d_f, rift::Orbit{0, 1}, rift::Orbit{1}, [&](rift::Dart d_c) { acc1 += (r_f_membrane[d_c]) * (r_position[d_c]).transpose(); }); return acc1; }(); }); const rift::Mat3 s4 = (s3 + (s3).transpose()); s0 += (((r_membrane_mu[d_f] > 0.0) && (s2 > 0.0)) ? (((((s4 * s4)).trace() / (16.0 * r_membrane_mu[d_f])) - ((r_membrane_lambda[d_f] * std::pow((2.0 * (s3).trace()), 2.0)) / ((32.0 * r_membrane_mu[d_f]) * (r_membrane_lambda[d_f] + r_membrane_mu[d_f])))) / (1.5 * s2)) : 0.0); s1 += (s2 / 6.0); });
-        const rift::Real l_stored = s0;
         const rift::Real l_share = s1;
-        const rift::Real measure = ((l_share > 0.0) ? (l_stored / std::sqrt(l_share)) : 0.0);
+        const bool guard0 = (l_share > 0.0);
+        if (!guard0) return;
+        const rift::Real l_stored = s0;
+        const rift::Real measure = (guard0 ? (l_stored / std::sqrt(l_share)) : 0.0);
         const rift::Real threshold = p_.toughness;
         if (!(measure > threshold)) return;
         rift::TearCandidate c;
@@ -666,17 +670,23 @@ void AtomicEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCan
       [&]() RIFT_CELL_BODY {
         if (g.is_free(d_a, 2)) return;
         const rift::Dart d_b = g.alpha(d_a, 2);
-        const rift::Vec3 s0 = r_position[g.alpha(d_a, 0)];
-        const rift::Vec3 l_ab = (s0 - r_position[d_a]);
         const rift::Vec3 l_p1 = r_position[g.alpha(g.alpha(d_a, 1), 0)];
-        const rift::Vec3 l_p2 = r_position[g.alpha(g.alpha(d_b, 1), 0)];
         const rift::Vec3 l_f1 = (((((fold_sum(g, r_f_stretch, d_a, rift::Orbit{1}, rift::Orbit{}) + fold_sum(g, r_f_stretch, g.alpha(d_a, 0), rift::Orbit{1}, rift::Orbit{})) + r_f_shear[d_a]) + r_f_shear[g.alpha(d_a, 0)]) + r_f_membrane[d_a]) + r_f_membrane[g.alpha(d_a, 0)]);
-        const rift::Vec3 l_f2 = (((((fold_sum(g, r_f_stretch, d_b, rift::Orbit{1}, rift::Orbit{}) + fold_sum(g, r_f_stretch, g.alpha(d_b, 0), rift::Orbit{1}, rift::Orbit{})) + r_f_shear[d_b]) + r_f_shear[g.alpha(d_b, 0)]) + r_f_membrane[d_b]) + r_f_membrane[g.alpha(d_b, 0)]);
+        const rift::Vec3 s0 = r_position[g.alpha(d_a, 0)];
         const rift::Vec3 l_mid = (0.5 * (r_position[d_a] + s0));
-        const bool l_contract = (((l_f1).dot((l_p1 - l_mid)) > 0.0) && ((l_f2).dot((l_p2 - l_mid)) > 0.0));
+        const bool guard0 = ((l_f1).dot((l_p1 - l_mid)) > 0.0);
+        if (!guard0) return;
+        const rift::Vec3 l_p2 = r_position[g.alpha(g.alpha(d_b, 1), 0)];
+        const rift::Vec3 l_f2 = (((((fold_sum(g, r_f_stretch, d_b, rift::Orbit{1}, rift::Orbit{}) + fold_sum(g, r_f_stretch, g.alpha(d_b, 0), rift::Orbit{1}, rift::Orbit{})) + r_f_shear[d_b]) + r_f_shear[g.alpha(d_b, 0)]) + r_f_membrane[d_b]) + r_f_membrane[g.alpha(d_b, 0)]);
+        const bool guard1 = ((l_f2).dot((l_p2 - l_mid)) > 0.0);
+        if (!guard1) return;
+        const rift::Vec3 l_ab = (s0 - r_position[d_a]);
         const rift::Vec3 l_across = (l_ab).cross(((l_ab).cross((l_p1 - r_position[d_a])) + ((l_p2 - r_position[d_a])).cross(l_ab)));
+        const bool guard2 = ((l_across).dot(l_across) > 0.0);
+        if (!guard2) return;
+        const bool l_contract = (guard0 && guard1);
         const rift::Real s1 = (l_across).norm();
-        const rift::Real measure = (((s1 > 0.0) && l_contract) ? (std::abs(((l_f1 - l_f2)).dot(l_across)) / s1) : 0.0);
+        const rift::Real measure = ((l_contract && (s1 > 0.0)) ? (std::abs(((l_f1 - l_f2)).dot(l_across)) / s1) : 0.0);
         const rift::Real threshold = p_.threshold;
         if (!(measure > threshold)) return;
         rift::TearCandidate c;
@@ -716,6 +726,8 @@ void GlobalEdgeCriterion::collect(const rift::GMap& g, std::vector<rift::TearCan
         const rift::Dart d_b = g.alpha(d_a, 2);
         const rift::Vec3 l_ab = (r_position[g.alpha(d_a, 0)] - r_position[d_a]);
         const rift::Vec3 l_n = (l_ab).cross(((l_ab).cross((r_position[g.alpha(g.alpha(d_a, 1), 0)] - r_position[d_a])) + ((r_position[g.alpha(g.alpha(d_b, 1), 0)] - r_position[d_a])).cross(l_ab)));
+        const bool guard0 = ((l_n).dot(l_n) > 0.0);
+        if (!guard0) return;
         const rift::Real l_l = (l_n).norm();
         const rift::Real measure = ((l_l > 0.0) ? (std::abs(((r_vertex_force[d_a] + r_vertex_force[g.alpha(d_a, 0)])).dot(l_n)) / l_l) : 0.0);
         const rift::Real threshold = p_.threshold;
