@@ -58,8 +58,12 @@ using Mask = decltype(Real{} < Real{});
 using Slots = std::array<Slot, kWidth>;
 
 /// Three coordinates of kWidth vectors, one vector per lane.
+/// Like Eigen's, a default-constructed one is uninitialised: a kernel's
+/// ResultLanes is filled by evaluate_lanes, and zeroing it first was a
+/// `rep stos` of 384 bytes per four matches in a storing pass. `Vec3{}` (a
+/// literal zero of a lanes body) is zero.
 struct Vec3 {
-  Real x{}, y{}, z{};
+  Real x, y, z;
 
   Vec3() = default;
   Vec3(Real x_, Real y_, Real z_) : x(x_), y(y_), z(z_) {}
