@@ -755,6 +755,15 @@ void write_lanes_pass(Writer& w, const Kernel& k, const std::string& ms, const L
   auto stored_at = [&](const ir::Force& f) {
     return std::string("stored_") + f.embedding + "[" + slot_at(k, f.store_slot, "ss[i]") + "]";
   };
+  // What a lane stores of force i: a force that negates another is stored as
+  // that force's lane negated (the same bits), so that evaluate_lanes' lanes
+  // of the negation are dead and a storing pass does not take them apart.
+  std::vector<std::string> stored_lane(b.forces.size());
+  for (std::size_t i = 0; i < b.forces.size(); ++i) {
+    const int j = negated_force(b, i);
+    stored_lane[i] =
+        j >= 0 ? "-" + raw[static_cast<std::size_t>(j)] + ".lane(lane)" : raw[i] + ".lane(lane)";
+  }
   w.open("for (int lane = 0; lane < rift::lanes::kWidth; ++lane) {");
   w.line("[[maybe_unused]] const std::size_t i = done + static_cast<std::size_t>(lane);");
   w.line("const Match& m = lane_ms[lane];");
@@ -779,12 +788,12 @@ void write_lanes_pass(Writer& w, const Kernel& k, const std::string& ms, const L
       w.line(targets[i] + " += " + value[i] + ".lane(lane);");
     }
     if (!out.if_store.empty())
-      w.line(out.if_store + stored_at(b.forces[i]) + " = " + raw[i] + ".lane(lane);");
+      w.line(out.if_store + stored_at(b.forces[i]) + " = " + stored_lane[i] + ";");
   }
   if (out.grouped) {
     w.open("if (terms) {");
     for (std::size_t i = 0; i < b.forces.size(); ++i)
-      w.line("terms[i * " + n + " + " + std::to_string(i) + "] = " + raw[i] + ".lane(lane);");
+      w.line("terms[i * " + n + " + " + std::to_string(i) + "] = " + stored_lane[i] + ";");
     w.close();
   }
   w.close();

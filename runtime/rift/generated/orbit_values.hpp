@@ -26,6 +26,17 @@ T zero() {
   }
 }
 
+/// Whether every dart has a slot of e: a reader by dart (the slot is the
+/// dart itself), which a fold then reads without testing for kNoSlot.
+template <class E>
+constexpr bool reads_every_dart() {
+  if constexpr (requires { E::kReadBy; }) {
+    return E::kReadBy == ReadBy::kDart;
+  } else {
+    return false;
+  }
+}
+
 /// Calls f(value of e) at one dart of each sub-orbit <sub> of <o>(d).
 // Inlined into the generated criteria, whose collect functions are too
 // large for the compiler's own choice: a call per fold was a third of the
@@ -39,8 +50,9 @@ template <class E, class F>
   // end's <1>, every step): d, then its neighbour, as for_each_sub_orbit.
   if (o.size() == 1 && sub.size() == 0) {
     const Dart y = g.alpha(d, o.first());
-    if (e.slot(d) != kNoSlot) f(e[d]);
-    if (y != d && e.slot(y) != kNoSlot) f(e[y]);
+    constexpr bool kEveryDart = reads_every_dart<E>();
+    if (kEveryDart || e.slot(d) != kNoSlot) f(e[d]);
+    if (y != d && (kEveryDart || e.slot(y) != kNoSlot)) f(e[y]);
     return;
   }
   for_each_sub_orbit(g, d, o, sub, [&](Dart x) {

@@ -40,6 +40,7 @@ template <class T, ReadBy kBy = ReadBy::kAny>
 class EmbeddingReader {
  public:
   using value_type = T;
+  static constexpr ReadBy kReadBy = kBy;
   EmbeddingReader(const Slot* slots, const T* values, Slot mask)
       : slots_(slots), values_(values), mask_(mask) {}
 

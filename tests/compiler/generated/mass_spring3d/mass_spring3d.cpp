@@ -290,7 +290,7 @@ void StretchKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, 
           f[to_vertex_a] += r.f_stretch_a.lane(lane);
           if constexpr (kStore) stored_f_stretch[ss[i].dart_a] = r.f_stretch_a.lane(lane);
           f[to_vertex_b] -= r.f_stretch_a.lane(lane);
-          if constexpr (kStore) stored_f_stretch[ss[i].dart_b] = r.f_stretch_b.lane(lane);
+          if constexpr (kStore) stored_f_stretch[ss[i].dart_b] = -r.f_stretch_a.lane(lane);
         }
       }
     }
@@ -420,7 +420,7 @@ void StretchKernel::add_forces_grouped(std::span<const Match> reps, const rift::
         f[to_vertex_b] -= cf0.lane(lane);
         if (terms) {
           terms[i * 2 + 0] = r.f_stretch_a.lane(lane);
-          terms[i * 2 + 1] = r.f_stretch_b.lane(lane);
+          terms[i * 2 + 1] = -r.f_stretch_a.lane(lane);
         }
       }
     }
@@ -723,11 +723,11 @@ void ShearKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, co
           f[to_vertex_c0] += r.f_shear_c0.lane(lane);
           if constexpr (kStore) stored_f_shear[ss[i].orbit1_c0] = r.f_shear_c0.lane(lane);
           f[to_vertex_c2] -= r.f_shear_c0.lane(lane);
-          if constexpr (kStore) stored_f_shear[ss[i].orbit1_c2] = r.f_shear_c2.lane(lane);
+          if constexpr (kStore) stored_f_shear[ss[i].orbit1_c2] = -r.f_shear_c0.lane(lane);
           f[to_vertex_c1] += r.f_shear_c1.lane(lane);
           if constexpr (kStore) stored_f_shear[ss[i].orbit1_c1] = r.f_shear_c1.lane(lane);
           f[to_vertex_c3] -= r.f_shear_c1.lane(lane);
-          if constexpr (kStore) stored_f_shear[ss[i].orbit1_c3] = r.f_shear_c3.lane(lane);
+          if constexpr (kStore) stored_f_shear[ss[i].orbit1_c3] = -r.f_shear_c1.lane(lane);
         }
       }
     }
@@ -890,9 +890,9 @@ void ShearKernel::add_forces_grouped(std::span<const Match> reps, const rift::Re
         f[to_vertex_c3] -= cf2.lane(lane);
         if (terms) {
           terms[i * 4 + 0] = r.f_shear_c0.lane(lane);
-          terms[i * 4 + 1] = r.f_shear_c2.lane(lane);
+          terms[i * 4 + 1] = -r.f_shear_c0.lane(lane);
           terms[i * 4 + 2] = r.f_shear_c1.lane(lane);
-          terms[i * 4 + 3] = r.f_shear_c3.lane(lane);
+          terms[i * 4 + 3] = -r.f_shear_c1.lane(lane);
         }
       }
     }
@@ -1439,19 +1439,19 @@ void VolumeShearKernel::add_forces_all(std::span<const Match> ms, const Stored* 
           f[to_vertex_b0] += r.f_volume_shear_b0.lane(lane);
           if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_b0] = r.f_volume_shear_b0.lane(lane);
           f[to_vertex_s22] -= r.f_volume_shear_b0.lane(lane);
-          if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s22] = r.f_volume_shear_s22.lane(lane);
+          if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s22] = -r.f_volume_shear_b0.lane(lane);
           f[to_vertex_b2] += r.f_volume_shear_b2.lane(lane);
           if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_b2] = r.f_volume_shear_b2.lane(lane);
           f[to_vertex_s32] -= r.f_volume_shear_b2.lane(lane);
-          if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s32] = r.f_volume_shear_s32.lane(lane);
+          if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s32] = -r.f_volume_shear_b2.lane(lane);
           f[to_vertex_b4] += r.f_volume_shear_b4.lane(lane);
           if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_b4] = r.f_volume_shear_b4.lane(lane);
           f[to_vertex_s02] -= r.f_volume_shear_b4.lane(lane);
-          if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s02] = r.f_volume_shear_s02.lane(lane);
+          if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s02] = -r.f_volume_shear_b4.lane(lane);
           f[to_vertex_b6] += r.f_volume_shear_b6.lane(lane);
           if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_b6] = r.f_volume_shear_b6.lane(lane);
           f[to_vertex_s12] -= r.f_volume_shear_b6.lane(lane);
-          if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s12] = r.f_volume_shear_s12.lane(lane);
+          if constexpr (kStore) stored_f_volume_shear[ss[i].orbit12_s12] = -r.f_volume_shear_b6.lane(lane);
         }
       }
     }
@@ -1680,13 +1680,13 @@ void VolumeShearKernel::add_forces_grouped(std::span<const Match> reps, const ri
         f[to_vertex_s12] -= cf6.lane(lane);
         if (terms) {
           terms[i * 8 + 0] = r.f_volume_shear_b0.lane(lane);
-          terms[i * 8 + 1] = r.f_volume_shear_s22.lane(lane);
+          terms[i * 8 + 1] = -r.f_volume_shear_b0.lane(lane);
           terms[i * 8 + 2] = r.f_volume_shear_b2.lane(lane);
-          terms[i * 8 + 3] = r.f_volume_shear_s32.lane(lane);
+          terms[i * 8 + 3] = -r.f_volume_shear_b2.lane(lane);
           terms[i * 8 + 4] = r.f_volume_shear_b4.lane(lane);
-          terms[i * 8 + 5] = r.f_volume_shear_s02.lane(lane);
+          terms[i * 8 + 5] = -r.f_volume_shear_b4.lane(lane);
           terms[i * 8 + 6] = r.f_volume_shear_b6.lane(lane);
-          terms[i * 8 + 7] = r.f_volume_shear_s12.lane(lane);
+          terms[i * 8 + 7] = -r.f_volume_shear_b6.lane(lane);
         }
       }
     }
