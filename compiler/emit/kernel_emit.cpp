@@ -1212,25 +1212,30 @@ void write_group_passes(Writer& w, const Kernel& k) {
   }
   w.close();
   w.line();
-  // The members of a pass's groups store their group's terms in one call:
-  // each column's storage is asked for once (values() is an acquire load,
-  // which no later load may pass), not once per member and force.
-  w.open("void " + k.cls + "::store_terms_of(std::span<const Match> ms, " +
+  // The members of groups[i], i < n, store the terms of their group: the
+  // walk of the groups' member lists inside the kernel, where each member's
+  // stores follow its link with nothing in between (a list of entries
+  // handed over in batches cost about as much again as the stores). Each
+  // column's storage is asked for once (values() is an acquire load, which
+  // no later load may pass), not once per member and force.
+  w.open("void " + k.cls + "::store_group_terms(std::span<const Match> ms, " +
          (has_stored_slots(k) ? "const Stored* ss" : "const Stored* /*ss*/") +
-         ", const std::uint32_t* entries, const std::uint32_t* term_of, std::size_t n, const "
-         "rift::Vec3* terms) {");
+         ", const std::uint32_t* head, const std::uint32_t* next, const std::uint32_t* groups, "
+         "std::size_t n, const rift::Vec3* terms) {");
   const std::set<std::string> stores = force_embeddings(b);
   for (const std::string& e : stores)
     w.line("rift::Vec3* const stored_" + e + " = " + embedding_var(e) + ".values().data();");
   w.open("for (std::size_t i = 0; i < n; ++i) {");
-  w.line("[[maybe_unused]] const Match& m = ms[entries[i]];");
-  if (has_stored_slots(k)) w.line("[[maybe_unused]] const Stored& s = ss[entries[i]];");
-  w.line("const rift::Vec3* const t = terms + std::size_t{term_of[i]} * " + n + ";");
+  w.line("const rift::Vec3* const t = terms + i * " + n + ";");
+  w.open("for (std::uint32_t e = head[groups[i]]; e != rift::kNoMember; e = next[e]) {");
+  w.line("[[maybe_unused]] const Match& m = ms[e];");
+  if (has_stored_slots(k)) w.line("[[maybe_unused]] const Stored& s = ss[e];");
   for (std::size_t i = 0; i < b.forces.size(); ++i) {
     const ir::Force& f = b.forces[i];
     w.line("stored_" + f.embedding + "[" + slot_at(k, f.store_slot, "s") + "] = t[" +
            std::to_string(i) + "];");
   }
+  w.close();
   w.close();
   w.close();
   w.line();
@@ -1513,11 +1518,12 @@ void declare_kernel(Writer& w, const InteractionPlan& plan, const PackModel& mod
         "const;");
     w.line("/// Stores forces computed by evaluate_terms into m's stored-force slots.");
     w.line("void store_terms(const Match& m, const Stored& s, const rift::Vec3* terms);");
-    w.line("/// store_terms for entries[i] of ms (ss parallel to ms), i < n, with the");
-    w.line("/// terms at terms + term_of[i] * kForceTerms.");
+    w.line("/// store_terms for every member of groups[i], i < n (its members: e = head[g],");
+    w.line("/// then next[e], until rift::kNoMember), with the terms at terms + i * kForceTerms.");
     w.line(
-        "void store_terms_of(std::span<const Match> ms, const Stored* ss, const std::uint32_t* "
-        "entries, const std::uint32_t* term_of, std::size_t n, const rift::Vec3* terms);");
+        "void store_group_terms(std::span<const Match> ms, const Stored* ss, const "
+        "std::uint32_t* head, const std::uint32_t* next, const std::uint32_t* groups, "
+        "std::size_t n, const rift::Vec3* terms);");
     w.line("/// The force pass over groups: adds counts[i] times the forces of reps[i];");
     w.line("/// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.");
     w.line(

@@ -67,10 +67,12 @@
 //   void add_forces_all(std::span<const Match>, const Stored* ss, const ForceInput&,
 //                       Vec3* f, bool store);                 // ss parallel to the matches
 //   void store_terms(const Match&, const Stored&, const Vec3* terms);
-//   void store_terms_of(std::span<const Match>, const Stored* ss, const std::uint32_t* entries,
-//                       const std::uint32_t* term_of, std::size_t n, const Vec3* terms);
-//                       // optional: store_terms of entries[i] (i < n) with the terms at
-//                       // terms + term_of[i] × kForceTerms, many members in one call
+//   void store_group_terms(std::span<const Match>, const Stored* ss, const std::uint32_t* head,
+//                          const std::uint32_t* next, const std::uint32_t* groups,
+//                          std::size_t n, const Vec3* terms);
+//                          // optional: store_terms of every member of groups[i] (i < n),
+//                          // walking MatchGroups::member_links, with the terms at
+//                          // terms + i × kForceTerms: many groups in one call
 //   void reset_stored(const Match&, const Stored&);
 //   void set_store_forces(bool);                              // optional, before initialise
 //
@@ -442,15 +444,16 @@ class CachedInteraction final : public ForceModel {
   };
 
   bool keeps_stored() const { return kKeepsStored && store_forces_; }
-  /// The kernel stores many members' terms in one call (riftc's kernels):
-  /// its columns' storage is then asked for once per batch, not per member.
-  static constexpr bool kStoresMany =
+  /// The kernel stores the terms of many groups' members in one call
+  /// (riftc's kernels): its columns' storage is then asked for once per
+  /// gather, not per member, and the member lists are walked inside it.
+  static constexpr bool kStoresGroups =
       requires(Kernel & k, std::span<const Match> ms, const Stored* ss, const std::uint32_t* e,
                std::size_t n, const Vec3* t) {
-    k.store_terms_of(ms, ss, e, e, n, t);
+    k.store_group_terms(ms, ss, e, e, e, n, t);
   };
-  bool stores_members_in_batches() const {
-    if constexpr (kStoresMany) {
+  bool stores_groups_at_once() const {
+    if constexpr (kStoresGroups) {
       return keeps_stored() || !kKeepsStored;  // the kernel reads ss only when it has slots there
     } else {
       return false;
@@ -702,37 +705,28 @@ class CachedInteraction final : public ForceModel {
           pass(0, n, nullptr);
           return;
         }
-        Vec3 terms[kGather * kTerms];  // Eigen leaves it uninitialised
-        // The members' entries and their group's place in terms, handed to
-        // the kernel a batch at a time (store_terms_of).
-        std::uint32_t members[kMemberBatch], term_of[kMemberBatch];
-        std::size_t held = 0;
-        auto flush = [&] {
-          if constexpr (kStoresMany) {
-            if (held != 0)
-              kernel_.store_terms_of(all, stored_from(0), members, term_of, held, terms);
-          }
-          held = 0;
-        };
+        Vec3 terms[kGather * kTerms];     // Eigen leaves it uninitialised
+        std::uint32_t gathered[kGather];  // the gather's groups, parallel to its terms
         for (std::size_t first = 0; first < n; first += kGather) {
           const std::size_t count = std::min(kGather, n - first);
           pass(first, count, terms);
           for (std::size_t i = 0; i < count; ++i) {
-            const auto g = static_cast<std::uint32_t>(consecutive ? entries[0] + first + i
-                                                                  : entries[first + i]);
-            if (stores_members_in_batches()) {
-              groups_.for_each_member(g, [&](std::uint32_t e) {
-                members[held] = e;
-                term_of[held] = static_cast<std::uint32_t>(i);
-                if (++held == kMemberBatch) flush();
-              });
-            } else {
+            gathered[i] = static_cast<std::uint32_t>(consecutive ? entries[0] + first + i
+                                                                 : entries[first + i]);
+          }
+          if (stores_groups_at_once()) {
+            if constexpr (kStoresGroups) {
+              const auto links = groups_.member_links();
+              kernel_.store_group_terms(all, stored_from(0), links.head, links.next, gathered,
+                                        count, terms);
+            }
+          } else {
+            for (std::size_t i = 0; i < count; ++i) {
               const Vec3* t = terms + i * kTerms;
               groups_.for_each_member(
-                  g, [&](std::uint32_t e) { store_one(all[e], stored_entry(e), t); });
+                  gathered[i], [&](std::uint32_t e) { store_one(all[e], stored_entry(e), t); });
             }
           }
-          flush();  // before the next gather overwrites terms
         }
       };
       colouring_.run(body);
@@ -795,10 +789,6 @@ class CachedInteraction final : public ForceModel {
   }
 
   static constexpr std::size_t kGather = 64;
-  /// Members per store_terms_of call: a gather's groups have about twice as
-  /// many (two half-edges per spring), so a storing pass of more than one
-  /// gather's groups also stores across a full batch (Grouping tests).
-  static constexpr std::size_t kMemberBatch = kGather;
   static constexpr std::size_t kInterruptBlock = 4096;
   Kernel kernel_;
   MatchCache<typename Kernel::Match> cache_;

@@ -48,6 +48,10 @@
 
 namespace rift {
 
+/// The end of a group's member list (MatchGroups::member_links); generated
+/// kernels walk the lists up to it.
+inline constexpr std::uint32_t kNoMember = ~0u;
+
 // The words of a key (generated group_key functions write them): a slot as
 // it is, a value by its bits, so equal words mean the very same numbers.
 inline std::uint64_t* key_words(std::uint32_t slot, std::uint64_t* out) {
@@ -80,7 +84,7 @@ inline std::uint64_t* key_words(const Mat3& v, std::uint64_t* out) {
 template <class Match>
 class MatchGroups {
  public:
-  static constexpr std::uint32_t kNone = ~0u;
+  static constexpr std::uint32_t kNone = kNoMember;
   /// Words per key, at most this many (kernels with longer keys, e.g. a
   /// hexahedron reading 8 vertices and 48 values, are not grouped).
   static constexpr int kMaxKey = 64;
@@ -117,6 +121,14 @@ class MatchGroups {
   Keep keeps() const { return keep_; }
   /// Whether the table still homes keys by their first word (see hash).
   bool homes_by_first_word() const { return by_slot_; }
+  /// The member lists as arrays, for a loop that walks many groups' members
+  /// (a kernel's store_group_terms): group g's members are e = head[g], then
+  /// next[e], until kNone. Valid until the groups change.
+  struct MemberLinks {
+    const std::uint32_t* head;
+    const std::uint32_t* next;
+  };
+  MemberLinks member_links() const { return {head_.data(), next_.data()}; }
   /// f(entry) for each member of group g (not after a build keeping kCounts).
   template <class F>
   void for_each_member(std::uint32_t g, F&& f) const {

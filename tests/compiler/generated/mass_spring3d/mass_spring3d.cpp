@@ -385,14 +385,16 @@ void StretchKernel::store_terms([[maybe_unused]] const Match& m, [[maybe_unused]
   e_f_stretch.values()[s.dart_b] = terms[1];
 }
 
-void StretchKernel::store_terms_of(std::span<const Match> ms, const Stored* ss, const std::uint32_t* entries, const std::uint32_t* term_of, std::size_t n, const rift::Vec3* terms) {
+void StretchKernel::store_group_terms(std::span<const Match> ms, const Stored* ss, const std::uint32_t* head, const std::uint32_t* next, const std::uint32_t* groups, std::size_t n, const rift::Vec3* terms) {
   rift::Vec3* const stored_f_stretch = e_f_stretch.values().data();
   for (std::size_t i = 0; i < n; ++i) {
-    [[maybe_unused]] const Match& m = ms[entries[i]];
-    [[maybe_unused]] const Stored& s = ss[entries[i]];
-    const rift::Vec3* const t = terms + std::size_t{term_of[i]} * 2;
-    stored_f_stretch[s.dart_a] = t[0];
-    stored_f_stretch[s.dart_b] = t[1];
+    const rift::Vec3* const t = terms + i * 2;
+    for (std::uint32_t e = head[groups[i]]; e != rift::kNoMember; e = next[e]) {
+      [[maybe_unused]] const Match& m = ms[e];
+      [[maybe_unused]] const Stored& s = ss[e];
+      stored_f_stretch[s.dart_a] = t[0];
+      stored_f_stretch[s.dart_b] = t[1];
+    }
   }
 }
 
@@ -848,16 +850,18 @@ void ShearKernel::store_terms([[maybe_unused]] const Match& m, [[maybe_unused]] 
   e_f_shear.values()[s.orbit1_c3] = terms[3];
 }
 
-void ShearKernel::store_terms_of(std::span<const Match> ms, const Stored* ss, const std::uint32_t* entries, const std::uint32_t* term_of, std::size_t n, const rift::Vec3* terms) {
+void ShearKernel::store_group_terms(std::span<const Match> ms, const Stored* ss, const std::uint32_t* head, const std::uint32_t* next, const std::uint32_t* groups, std::size_t n, const rift::Vec3* terms) {
   rift::Vec3* const stored_f_shear = e_f_shear.values().data();
   for (std::size_t i = 0; i < n; ++i) {
-    [[maybe_unused]] const Match& m = ms[entries[i]];
-    [[maybe_unused]] const Stored& s = ss[entries[i]];
-    const rift::Vec3* const t = terms + std::size_t{term_of[i]} * 4;
-    stored_f_shear[s.orbit1_c0] = t[0];
-    stored_f_shear[s.orbit1_c2] = t[1];
-    stored_f_shear[s.orbit1_c1] = t[2];
-    stored_f_shear[s.orbit1_c3] = t[3];
+    const rift::Vec3* const t = terms + i * 4;
+    for (std::uint32_t e = head[groups[i]]; e != rift::kNoMember; e = next[e]) {
+      [[maybe_unused]] const Match& m = ms[e];
+      [[maybe_unused]] const Stored& s = ss[e];
+      stored_f_shear[s.orbit1_c0] = t[0];
+      stored_f_shear[s.orbit1_c2] = t[1];
+      stored_f_shear[s.orbit1_c1] = t[2];
+      stored_f_shear[s.orbit1_c3] = t[3];
+    }
   }
 }
 
@@ -1624,20 +1628,22 @@ void VolumeShearKernel::store_terms([[maybe_unused]] const Match& m, [[maybe_unu
   e_f_volume_shear.values()[s.orbit12_s12] = terms[7];
 }
 
-void VolumeShearKernel::store_terms_of(std::span<const Match> ms, const Stored* ss, const std::uint32_t* entries, const std::uint32_t* term_of, std::size_t n, const rift::Vec3* terms) {
+void VolumeShearKernel::store_group_terms(std::span<const Match> ms, const Stored* ss, const std::uint32_t* head, const std::uint32_t* next, const std::uint32_t* groups, std::size_t n, const rift::Vec3* terms) {
   rift::Vec3* const stored_f_volume_shear = e_f_volume_shear.values().data();
   for (std::size_t i = 0; i < n; ++i) {
-    [[maybe_unused]] const Match& m = ms[entries[i]];
-    [[maybe_unused]] const Stored& s = ss[entries[i]];
-    const rift::Vec3* const t = terms + std::size_t{term_of[i]} * 8;
-    stored_f_volume_shear[s.orbit12_b0] = t[0];
-    stored_f_volume_shear[s.orbit12_s22] = t[1];
-    stored_f_volume_shear[s.orbit12_b2] = t[2];
-    stored_f_volume_shear[s.orbit12_s32] = t[3];
-    stored_f_volume_shear[s.orbit12_b4] = t[4];
-    stored_f_volume_shear[s.orbit12_s02] = t[5];
-    stored_f_volume_shear[s.orbit12_b6] = t[6];
-    stored_f_volume_shear[s.orbit12_s12] = t[7];
+    const rift::Vec3* const t = terms + i * 8;
+    for (std::uint32_t e = head[groups[i]]; e != rift::kNoMember; e = next[e]) {
+      [[maybe_unused]] const Match& m = ms[e];
+      [[maybe_unused]] const Stored& s = ss[e];
+      stored_f_volume_shear[s.orbit12_b0] = t[0];
+      stored_f_volume_shear[s.orbit12_s22] = t[1];
+      stored_f_volume_shear[s.orbit12_b2] = t[2];
+      stored_f_volume_shear[s.orbit12_s32] = t[3];
+      stored_f_volume_shear[s.orbit12_b4] = t[4];
+      stored_f_volume_shear[s.orbit12_s02] = t[5];
+      stored_f_volume_shear[s.orbit12_b6] = t[6];
+      stored_f_volume_shear[s.orbit12_s12] = t[7];
+    }
   }
 }
 

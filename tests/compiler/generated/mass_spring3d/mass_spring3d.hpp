@@ -103,9 +103,9 @@ class StretchKernel {
   bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
   /// Stores forces computed by evaluate_terms into m's stored-force slots.
   void store_terms(const Match& m, const Stored& s, const rift::Vec3* terms);
-  /// store_terms for entries[i] of ms (ss parallel to ms), i < n, with the
-  /// terms at terms + term_of[i] * kForceTerms.
-  void store_terms_of(std::span<const Match> ms, const Stored* ss, const std::uint32_t* entries, const std::uint32_t* term_of, std::size_t n, const rift::Vec3* terms);
+  /// store_terms for every member of groups[i], i < n (its members: e = head[g],
+  /// then next[e], until rift::kNoMember), with the terms at terms + i * kForceTerms.
+  void store_group_terms(std::span<const Match> ms, const Stored* ss, const std::uint32_t* head, const std::uint32_t* next, const std::uint32_t* groups, std::size_t n, const rift::Vec3* terms);
   /// The force pass over groups: adds counts[i] times the forces of reps[i];
   /// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.
   void add_forces_grouped(std::span<const Match> reps, const rift::Real* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
@@ -231,9 +231,9 @@ class ShearKernel {
   bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
   /// Stores forces computed by evaluate_terms into m's stored-force slots.
   void store_terms(const Match& m, const Stored& s, const rift::Vec3* terms);
-  /// store_terms for entries[i] of ms (ss parallel to ms), i < n, with the
-  /// terms at terms + term_of[i] * kForceTerms.
-  void store_terms_of(std::span<const Match> ms, const Stored* ss, const std::uint32_t* entries, const std::uint32_t* term_of, std::size_t n, const rift::Vec3* terms);
+  /// store_terms for every member of groups[i], i < n (its members: e = head[g],
+  /// then next[e], until rift::kNoMember), with the terms at terms + i * kForceTerms.
+  void store_group_terms(std::span<const Match> ms, const Stored* ss, const std::uint32_t* head, const std::uint32_t* next, const std::uint32_t* groups, std::size_t n, const rift::Vec3* terms);
   /// The force pass over groups: adds counts[i] times the forces of reps[i];
   /// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.
   void add_forces_grouped(std::span<const Match> reps, const rift::Real* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
@@ -375,9 +375,9 @@ class VolumeShearKernel {
   bool evaluate_terms(const Match& m, const rift::ForceInput& in, rift::Vec3* terms) const;
   /// Stores forces computed by evaluate_terms into m's stored-force slots.
   void store_terms(const Match& m, const Stored& s, const rift::Vec3* terms);
-  /// store_terms for entries[i] of ms (ss parallel to ms), i < n, with the
-  /// terms at terms + term_of[i] * kForceTerms.
-  void store_terms_of(std::span<const Match> ms, const Stored* ss, const std::uint32_t* entries, const std::uint32_t* term_of, std::size_t n, const rift::Vec3* terms);
+  /// store_terms for every member of groups[i], i < n (its members: e = head[g],
+  /// then next[e], until rift::kNoMember), with the terms at terms + i * kForceTerms.
+  void store_group_terms(std::span<const Match> ms, const Stored* ss, const std::uint32_t* head, const std::uint32_t* next, const std::uint32_t* groups, std::size_t n, const rift::Vec3* terms);
   /// The force pass over groups: adds counts[i] times the forces of reps[i];
   /// unless null, terms[i * kForceTerms + t] receives reps[i]'s t-th force.
   void add_forces_grouped(std::span<const Match> reps, const rift::Real* counts, const rift::ForceInput& in, rift::Vec3* f, rift::Vec3* terms);
