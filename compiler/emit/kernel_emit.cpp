@@ -806,46 +806,62 @@ void write_add_forces_all(Writer& w, const Kernel& k, bool indexed) {
   const bool forces = !b.forces.empty();
   const bool stores_values = !b.stores.empty();
   const std::string ss_i = indexed ? "ss[at[i]]" : "ss[i]";
-  w.open("void " + k.cls +
-         (indexed ? "::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, "
-                    "std::size_t n, "
-                  : "::add_forces_all(std::span<const Match> ms, ") +
-         (has_stored_slots(k) ? "const Stored* ss" : "const Stored* /*ss*/") +
-         ", const rift::ForceInput& in_arg, " +
-         (forces          ? "rift::Vec3* f, bool store"
-          : stores_values ? "rift::Vec3* /*f*/, bool store"
-                          : "rift::Vec3* /*f*/, bool /*store*/") +
-         ") {");
-  w.line(kLocalInput);
-  w.line("const Columns c = columns();");
   const std::set<std::string> stores = force_embeddings(b);
-  // Not asked for unless storing: a column nothing reads has no storage
-  // (rift::ForceModel::set_store_forces), and values() would give it some.
-  for (const std::string& e : stores)
-    w.line("rift::Vec3* const stored_" + e + " = store ? " + embedding_var(e) +
-           ".values().data() : nullptr;");
-  std::set<std::string> values;
-  for (const ir::Store& st : b.stores)
-    if (!stores.contains(st.embedding)) values.insert(st.embedding);
-  for (const std::string& e : values)
-    w.line("auto* const stored_" + e + " = store ? " + embedding_var(e) +
-           ".values().data() : nullptr;");
-  auto store_at = [&](const ir::Store& st) {
-    return "stored_" + st.embedding + "[" + slot_at(k, st.store_slot, ss_i) + "]";
-  };
   // One loop per kind of pass (storing or not), each with its own
   // instantiation of the body: the integrator's other stages run a loop
   // without stores, and without a test of `store` at each stored force
   // (3 % of the shear spring's loop).
   const bool two_passes = stores_values || !stores.empty();
+  // The two passes are a lambda that takes what it reads as parameters (by
+  // value) rather than captures: a capture is read through the closure, and
+  // Eigen's force stores, which may alias anything, made the loop read the
+  // force array's, the matches' and the stored columns' addresses again
+  // after each of them. The function's own parameters are then `NAME_arg`.
+  const std::string arg = two_passes ? "_arg" : "";
+  const bool stored_slots = has_stored_slots(k);
+  w.open("void " + k.cls +
+         (indexed ? "::add_forces_at(std::span<const Match> ms" + arg +
+                        ", const std::uint32_t* at" + arg + ", std::size_t n" + arg + ", "
+                  : "::add_forces_all(std::span<const Match> ms" + arg + ", ") +
+         (stored_slots ? "const Stored* ss" + arg : std::string("const Stored* /*ss*/")) +
+         ", const rift::ForceInput& in_arg, " +
+         (forces          ? "rift::Vec3* f" + arg + ", bool store"
+          : stores_values ? std::string("rift::Vec3* /*f*/, bool store")
+                          : std::string("rift::Vec3* /*f*/, bool /*store*/")) +
+         ") {");
+  // Not asked for unless storing: a column nothing reads has no storage
+  // (rift::ForceModel::set_store_forces), and values() would give it some.
+  auto write_stored_columns = [&](const std::string& storing, const std::string& attribute) {
+    for (const std::string& e : stores)
+      w.line(attribute + "rift::Vec3* const stored_" + e + " = " + storing + " ? " +
+             embedding_var(e) + ".values().data() : nullptr;");
+    std::set<std::string> values;
+    for (const ir::Store& st : b.stores)
+      if (!stores.contains(st.embedding)) values.insert(st.embedding);
+    for (const std::string& e : values)
+      w.line(attribute + "auto* const stored_" + e + " = " + storing + " ? " + embedding_var(e) +
+             ".values().data() : nullptr;");
+  };
+  auto store_at = [&](const ir::Store& st) {
+    return "stored_" + st.embedding + "[" + slot_at(k, st.store_slot, ss_i) + "]";
+  };
   const std::string if_store = two_passes ? "if constexpr (kStore) " : "if (store) ";
-  // With stored values not inlined: two instantiations of the body in one
-  // function exceed the inliner's growth limits, and the matrix products of
-  // both would be calls. Without, inlined: a call would read the input and
-  // the columns through the closure at every use.
   if (two_passes) {
-    w.open(stores_values ? "auto pass = [&]<bool kStore>() __attribute__((noinline)) {"
-                         : "auto pass = [&]<bool kStore>() {");
+    // With stored values not inlined: two instantiations of the body in one
+    // function exceed the inliner's growth limits, and the matrix products of
+    // both would be calls. Without, inlined.
+    const std::string params = std::string("(std::span<const Match> ms, ") +
+                               (indexed ? "const std::uint32_t* at, std::size_t n, " : "") +
+                               (stored_slots ? "const Stored* ss, " : "") +
+                               "const rift::ForceInput in, const Columns c" +
+                               (forces ? ", rift::Vec3* f" : "") + ")";
+    w.open("auto pass = [this]<bool kStore>" + params +
+           (stores_values ? " __attribute__((noinline)) {" : " {"));
+    write_stored_columns("kStore", "[[maybe_unused]] ");
+  } else {
+    w.line(kLocalInput);
+    w.line("const Columns c = columns();");
+    write_stored_columns("store", "");
   }
   const bool lanes = k.lanes && !indexed;
   if (lanes) {
@@ -905,10 +921,13 @@ void write_add_forces_all(Writer& w, const Kernel& k, bool indexed) {
   w.close();
   if (two_passes) {
     w.close("};");
+    const std::string args = std::string("(ms_arg, ") + (indexed ? "at_arg, n_arg, " : "") +
+                             (stored_slots ? "ss_arg, " : "") + "in_arg, columns()" +
+                             (forces ? ", f_arg" : "") + ")";
     w.line("if (store) {");
-    w.line("  pass.template operator()<true>();");
+    w.line("  pass.template operator()<true>" + args + ";");
     w.line("} else {");
-    w.line("  pass.template operator()<false>();");
+    w.line("  pass.template operator()<false>" + args + ";");
     w.line("}");
   }
   w.close();

@@ -289,13 +289,11 @@ inline bool CorotationalKernel::evaluate(const Match& m, const rift::ForceInput&
   return true;
 }
 
-void CorotationalKernel::add_forces_all(std::span<const Match> ms, const Stored* /*ss*/, const rift::ForceInput& in_arg, rift::Vec3* f, bool store) {
-  const rift::ForceInput in = in_arg;  // a local: see the targets below
-  const Columns c = columns();
-  rift::Vec3* const stored_f_fem = store ? e_f_fem.values().data() : nullptr;
-  auto* const stored_stress_mass = store ? e_stress_mass.values().data() : nullptr;
-  auto* const stored_stress_weighted = store ? e_stress_weighted.values().data() : nullptr;
-  auto pass = [&]<bool kStore>() __attribute__((noinline)) {
+void CorotationalKernel::add_forces_all(std::span<const Match> ms_arg, const Stored* /*ss*/, const rift::ForceInput& in_arg, rift::Vec3* f_arg, bool store) {
+  auto pass = [this]<bool kStore>(std::span<const Match> ms, const rift::ForceInput in, const Columns c, rift::Vec3* f) __attribute__((noinline)) {
+    [[maybe_unused]] rift::Vec3* const stored_f_fem = kStore ? e_f_fem.values().data() : nullptr;
+    [[maybe_unused]] auto* const stored_stress_mass = kStore ? e_stress_mass.values().data() : nullptr;
+    [[maybe_unused]] auto* const stored_stress_weighted = kStore ? e_stress_weighted.values().data() : nullptr;
     for (std::size_t i = 0; i < ms.size(); ++i) {
       const Match& m = ms[i];
       Result r;
@@ -333,19 +331,17 @@ void CorotationalKernel::add_forces_all(std::span<const Match> ms, const Stored*
     }
   };
   if (store) {
-    pass.template operator()<true>();
+    pass.template operator()<true>(ms_arg, in_arg, columns(), f_arg);
   } else {
-    pass.template operator()<false>();
+    pass.template operator()<false>(ms_arg, in_arg, columns(), f_arg);
   }
 }
 
-void CorotationalKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* /*ss*/, const rift::ForceInput& in_arg, rift::Vec3* f, bool store) {
-  const rift::ForceInput in = in_arg;  // a local: see the targets below
-  const Columns c = columns();
-  rift::Vec3* const stored_f_fem = store ? e_f_fem.values().data() : nullptr;
-  auto* const stored_stress_mass = store ? e_stress_mass.values().data() : nullptr;
-  auto* const stored_stress_weighted = store ? e_stress_weighted.values().data() : nullptr;
-  auto pass = [&]<bool kStore>() __attribute__((noinline)) {
+void CorotationalKernel::add_forces_at(std::span<const Match> ms_arg, const std::uint32_t* at_arg, std::size_t n_arg, const Stored* /*ss*/, const rift::ForceInput& in_arg, rift::Vec3* f_arg, bool store) {
+  auto pass = [this]<bool kStore>(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const rift::ForceInput in, const Columns c, rift::Vec3* f) __attribute__((noinline)) {
+    [[maybe_unused]] rift::Vec3* const stored_f_fem = kStore ? e_f_fem.values().data() : nullptr;
+    [[maybe_unused]] auto* const stored_stress_mass = kStore ? e_stress_mass.values().data() : nullptr;
+    [[maybe_unused]] auto* const stored_stress_weighted = kStore ? e_stress_weighted.values().data() : nullptr;
     for (std::size_t i = 0; i < n; ++i) {
       const Match& m = ms[at[i]];
       Result r;
@@ -383,9 +379,9 @@ void CorotationalKernel::add_forces_at(std::span<const Match> ms, const std::uin
     }
   };
   if (store) {
-    pass.template operator()<true>();
+    pass.template operator()<true>(ms_arg, at_arg, n_arg, in_arg, columns(), f_arg);
   } else {
-    pass.template operator()<false>();
+    pass.template operator()<false>(ms_arg, at_arg, n_arg, in_arg, columns(), f_arg);
   }
 }
 

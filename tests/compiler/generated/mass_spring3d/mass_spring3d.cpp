@@ -264,11 +264,9 @@ inline rift::lanes::Mask StretchKernel::evaluate_lanes(const Match* ms, const ri
   return active;
 }
 
-void StretchKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in_arg, rift::Vec3* f, bool store) {
-  const rift::ForceInput in = in_arg;  // a local: see the targets below
-  const Columns c = columns();
-  rift::Vec3* const stored_f_stretch = store ? e_f_stretch.values().data() : nullptr;
-  auto pass = [&]<bool kStore>() {
+void StretchKernel::add_forces_all(std::span<const Match> ms_arg, const Stored* ss_arg, const rift::ForceInput& in_arg, rift::Vec3* f_arg, bool store) {
+  auto pass = [this]<bool kStore>(std::span<const Match> ms, const Stored* ss, const rift::ForceInput in, const Columns c, rift::Vec3* f) {
+    [[maybe_unused]] rift::Vec3* const stored_f_stretch = kStore ? e_f_stretch.values().data() : nullptr;
     std::size_t done = 0;
     if (lanes_) {
       for (; done + rift::lanes::kWidth <= ms.size(); done += rift::lanes::kWidth) {
@@ -313,17 +311,15 @@ void StretchKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, 
     }
   };
   if (store) {
-    pass.template operator()<true>();
+    pass.template operator()<true>(ms_arg, ss_arg, in_arg, columns(), f_arg);
   } else {
-    pass.template operator()<false>();
+    pass.template operator()<false>(ms_arg, ss_arg, in_arg, columns(), f_arg);
   }
 }
 
-void StretchKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput& in_arg, rift::Vec3* f, bool store) {
-  const rift::ForceInput in = in_arg;  // a local: see the targets below
-  const Columns c = columns();
-  rift::Vec3* const stored_f_stretch = store ? e_f_stretch.values().data() : nullptr;
-  auto pass = [&]<bool kStore>() {
+void StretchKernel::add_forces_at(std::span<const Match> ms_arg, const std::uint32_t* at_arg, std::size_t n_arg, const Stored* ss_arg, const rift::ForceInput& in_arg, rift::Vec3* f_arg, bool store) {
+  auto pass = [this]<bool kStore>(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput in, const Columns c, rift::Vec3* f) {
+    [[maybe_unused]] rift::Vec3* const stored_f_stretch = kStore ? e_f_stretch.values().data() : nullptr;
     for (std::size_t i = 0; i < n; ++i) {
       const Match& m = ms[at[i]];
       Result r;
@@ -343,9 +339,9 @@ void StretchKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t
     }
   };
   if (store) {
-    pass.template operator()<true>();
+    pass.template operator()<true>(ms_arg, at_arg, n_arg, ss_arg, in_arg, columns(), f_arg);
   } else {
-    pass.template operator()<false>();
+    pass.template operator()<false>(ms_arg, at_arg, n_arg, ss_arg, in_arg, columns(), f_arg);
   }
 }
 
@@ -695,11 +691,9 @@ inline rift::lanes::Mask ShearKernel::evaluate_lanes(const Match* ms, const rift
   return active;
 }
 
-void ShearKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in_arg, rift::Vec3* f, bool store) {
-  const rift::ForceInput in = in_arg;  // a local: see the targets below
-  const Columns c = columns();
-  rift::Vec3* const stored_f_shear = store ? e_f_shear.values().data() : nullptr;
-  auto pass = [&]<bool kStore>() {
+void ShearKernel::add_forces_all(std::span<const Match> ms_arg, const Stored* ss_arg, const rift::ForceInput& in_arg, rift::Vec3* f_arg, bool store) {
+  auto pass = [this]<bool kStore>(std::span<const Match> ms, const Stored* ss, const rift::ForceInput in, const Columns c, rift::Vec3* f) {
+    [[maybe_unused]] rift::Vec3* const stored_f_shear = kStore ? e_f_shear.values().data() : nullptr;
     std::size_t done = 0;
     if (lanes_) {
       for (; done + rift::lanes::kWidth <= ms.size(); done += rift::lanes::kWidth) {
@@ -760,17 +754,15 @@ void ShearKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, co
     }
   };
   if (store) {
-    pass.template operator()<true>();
+    pass.template operator()<true>(ms_arg, ss_arg, in_arg, columns(), f_arg);
   } else {
-    pass.template operator()<false>();
+    pass.template operator()<false>(ms_arg, ss_arg, in_arg, columns(), f_arg);
   }
 }
 
-void ShearKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput& in_arg, rift::Vec3* f, bool store) {
-  const rift::ForceInput in = in_arg;  // a local: see the targets below
-  const Columns c = columns();
-  rift::Vec3* const stored_f_shear = store ? e_f_shear.values().data() : nullptr;
-  auto pass = [&]<bool kStore>() {
+void ShearKernel::add_forces_at(std::span<const Match> ms_arg, const std::uint32_t* at_arg, std::size_t n_arg, const Stored* ss_arg, const rift::ForceInput& in_arg, rift::Vec3* f_arg, bool store) {
+  auto pass = [this]<bool kStore>(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput in, const Columns c, rift::Vec3* f) {
+    [[maybe_unused]] rift::Vec3* const stored_f_shear = kStore ? e_f_shear.values().data() : nullptr;
     for (std::size_t i = 0; i < n; ++i) {
       const Match& m = ms[at[i]];
       Result r;
@@ -798,9 +790,9 @@ void ShearKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* 
     }
   };
   if (store) {
-    pass.template operator()<true>();
+    pass.template operator()<true>(ms_arg, at_arg, n_arg, ss_arg, in_arg, columns(), f_arg);
   } else {
-    pass.template operator()<false>();
+    pass.template operator()<false>(ms_arg, at_arg, n_arg, ss_arg, in_arg, columns(), f_arg);
   }
 }
 
@@ -1405,11 +1397,9 @@ inline rift::lanes::Mask VolumeShearKernel::evaluate_lanes(const Match* ms, cons
   return active;
 }
 
-void VolumeShearKernel::add_forces_all(std::span<const Match> ms, const Stored* ss, const rift::ForceInput& in_arg, rift::Vec3* f, bool store) {
-  const rift::ForceInput in = in_arg;  // a local: see the targets below
-  const Columns c = columns();
-  rift::Vec3* const stored_f_volume_shear = store ? e_f_volume_shear.values().data() : nullptr;
-  auto pass = [&]<bool kStore>() {
+void VolumeShearKernel::add_forces_all(std::span<const Match> ms_arg, const Stored* ss_arg, const rift::ForceInput& in_arg, rift::Vec3* f_arg, bool store) {
+  auto pass = [this]<bool kStore>(std::span<const Match> ms, const Stored* ss, const rift::ForceInput in, const Columns c, rift::Vec3* f) {
+    [[maybe_unused]] rift::Vec3* const stored_f_volume_shear = kStore ? e_f_volume_shear.values().data() : nullptr;
     std::size_t done = 0;
     if (lanes_) {
       for (; done + rift::lanes::kWidth <= ms.size(); done += rift::lanes::kWidth) {
@@ -1502,17 +1492,15 @@ void VolumeShearKernel::add_forces_all(std::span<const Match> ms, const Stored* 
     }
   };
   if (store) {
-    pass.template operator()<true>();
+    pass.template operator()<true>(ms_arg, ss_arg, in_arg, columns(), f_arg);
   } else {
-    pass.template operator()<false>();
+    pass.template operator()<false>(ms_arg, ss_arg, in_arg, columns(), f_arg);
   }
 }
 
-void VolumeShearKernel::add_forces_at(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput& in_arg, rift::Vec3* f, bool store) {
-  const rift::ForceInput in = in_arg;  // a local: see the targets below
-  const Columns c = columns();
-  rift::Vec3* const stored_f_volume_shear = store ? e_f_volume_shear.values().data() : nullptr;
-  auto pass = [&]<bool kStore>() {
+void VolumeShearKernel::add_forces_at(std::span<const Match> ms_arg, const std::uint32_t* at_arg, std::size_t n_arg, const Stored* ss_arg, const rift::ForceInput& in_arg, rift::Vec3* f_arg, bool store) {
+  auto pass = [this]<bool kStore>(std::span<const Match> ms, const std::uint32_t* at, std::size_t n, const Stored* ss, const rift::ForceInput in, const Columns c, rift::Vec3* f) {
+    [[maybe_unused]] rift::Vec3* const stored_f_volume_shear = kStore ? e_f_volume_shear.values().data() : nullptr;
     for (std::size_t i = 0; i < n; ++i) {
       const Match& m = ms[at[i]];
       Result r;
@@ -1556,9 +1544,9 @@ void VolumeShearKernel::add_forces_at(std::span<const Match> ms, const std::uint
     }
   };
   if (store) {
-    pass.template operator()<true>();
+    pass.template operator()<true>(ms_arg, at_arg, n_arg, ss_arg, in_arg, columns(), f_arg);
   } else {
-    pass.template operator()<false>();
+    pass.template operator()<false>(ms_arg, at_arg, n_arg, ss_arg, in_arg, columns(), f_arg);
   }
 }
 
