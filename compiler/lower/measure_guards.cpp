@@ -54,10 +54,10 @@ bool always_fails(const ir::Body& body, double k, const std::string& op, ExprId 
   return false;
 }
 
-/// The test a guard makes of `cond`: `norm(v) > 0` (or `l > 0`, `let l =
-/// norm(v)`) as `dot(v, v) > 0`. The
-/// same truth value for every v: a sum of squares is positive exactly when
-/// its square root is, and NaN fails both.
+/// The test a guard makes of `cond`: `norm(v) > 0` (or `l > 0` with
+/// `let l = norm(v)`) as `dot(v, v) > 0`, the same truth value for every v
+/// (norm is of vec3 only): a sum of squares is positive exactly when its
+/// square root is, and NaN fails both.
 ExprId cheaper_test(ir::Body& body, ExprId cond) {
   ir::Graph& g = body.graph;
   const Node& n = g[cond];
