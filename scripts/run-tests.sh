@@ -28,8 +28,9 @@ release() {
 job release release
 if [ "${RIFT_RELIABILITY:-1}" != 0 ]; then
   # The clang ASan+UBSan build is shared by the sanitizer tests and the
-  # fuzzers; clang-tidy reads the compile commands of build/release.
+  # fuzzers; clang-tidy configures a tree of its own (build/tidy) for the
+  # compile commands of each source.
   job sanitizers ./scripts/sanitize-tests.sh
   job fuzz ./scripts/fuzz.sh all "${RIFT_FUZZ_SECONDS:-10}" -seed=1
-  job clang-tidy ./scripts/clang-tidy.sh build/release
+  job clang-tidy ./scripts/clang-tidy.sh
 fi

@@ -4,20 +4,14 @@
 #include <utility>
 #include <vector>
 
+#include "ast/orbit_text.hpp"
 #include "check/alpha_word.hpp"
 
 namespace rift::check {
 
 namespace {
 
-std::string path_text(const std::string& from, const std::vector<int>& hops) {
-  std::string s = from;
-  for (int h : hops) {
-    s.push_back('@');
-    s.append(std::to_string(h));
-  }
-  return s;
-}
+using ast::path_text;
 
 void check_criterion(const ast::Criterion& crit, int dimension, diag::Diagnostics& diags) {
   // Each node's path from the criterion's dart, and its normal form.

@@ -29,15 +29,7 @@ using lower::InteractionPlan;
 constexpr int kMaxReachLinks = 15;
 
 using ast::orbit_text;
-
-std::string path_text(const std::string& node, const std::vector<int>& hops) {
-  std::string out = node;
-  for (int h : hops) {
-    out += '@';
-    out += std::to_string(h);
-  }
-  return out;
-}
+using ast::path_text;
 
 /// Names of the match's slots, from the orbit and the dart: `vertex_a` for
 /// the vertex of node a, `orbit0_b_1` for the orbit <0> of b@1, `dart_c`.
@@ -85,13 +77,6 @@ int negated_force(const ir::Body& b, std::size_t i) {
 /// The field of Result a `store` is returned in: `stored_fem_stress_c0`.
 std::string store_field(const ir::Body& body, const ir::Store& st) {
   return "stored_" + st.embedding + "_" + body.nodes[static_cast<std::size_t>(st.node)];
-}
-
-/// The additive zero of a `store +=` value's type (real, vec3 or mat3).
-std::string zero_of(ir::Type t) {
-  if (t == ir::Type::Vec3) return "rift::Vec3::Zero()";
-  if (t == ir::Type::Mat3) return "rift::Mat3::Zero()";
-  return "rift::Real{0}";
 }
 
 bool accumulates(const ir::Body& b) {

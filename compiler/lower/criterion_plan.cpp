@@ -11,17 +11,11 @@ namespace rift::lower {
 
 namespace {
 
-bool contains(const std::vector<int>& outer, const std::vector<int>& inner) {
-  return std::all_of(inner.begin(), inner.end(), [&](int d) {
-    return std::find(outer.begin(), outer.end(), d) != outer.end();
-  });
-}
-
 /// Whether the runtime walks the sub-orbits <sub> of <outer> without the
 /// map's marks: <outer> is one sub-orbit, or <sub> lies inside an <outer> of
 /// at most two links (rift/generated/sub_orbits.hpp, walks_without_marks).
 bool walks_without_marks(const std::vector<int>& outer, const std::vector<int>& sub) {
-  return contains(sub, outer) || (contains(outer, sub) && outer.size() <= 2);
+  return orbit_contains(sub, outer) || (orbit_contains(outer, sub) && outer.size() <= 2);
 }
 
 }  // namespace

@@ -11,7 +11,8 @@ namespace rift::lower {
 
 namespace {
 
-void embeddings_read(const ir::Graph& g, ir::ExprId root, std::set<std::string>& out) {
+// The columns a value reads (position and velocity are not columns).
+void add_columns_read(const ir::Graph& g, ir::ExprId root, std::set<std::string>& out) {
   ir::visit(g, root, [&](const ir::Node& n) {
     if (n.op == ir::Op::Read) out.insert(n.embedding);
   });
@@ -104,7 +105,7 @@ InteractionPlan plan_interaction(const check::CheckedInteraction& ci,
     p.loc = init.value->loc;
     plan.inits.push_back(p);
     plan.embeddings.insert(p.embedding);
-    embeddings_read(body.graph, p.value, plan.embeddings);
+    add_columns_read(body.graph, p.value, plan.embeddings);
   }
 
   std::vector<ir::ExprId*> init_roots;
@@ -120,7 +121,7 @@ InteractionPlan plan_interaction(const check::CheckedInteraction& ci,
   for (const ir::Store& st : body.stores)
     plan.embeddings.insert(st.embedding);
   auto loop_reads = [&](ir::ExprId root) {
-    if (root != ir::kNoExpr) embeddings_read(body.graph, root, plan.embeddings);
+    if (root != ir::kNoExpr) add_columns_read(body.graph, root, plan.embeddings);
   };
   for (const ir::Let& l : body.lets)
     loop_reads(l.value);

@@ -14,13 +14,6 @@ using ir::ExprId;
 using ir::Node;
 using ir::Op;
 
-/// Whether every dimension of `inner` is one of `outer`'s.
-bool contains(const std::vector<int>& outer, const std::vector<int>& inner) {
-  return std::all_of(inner.begin(), inner.end(), [&](int d) {
-    return std::find(outer.begin(), outer.end(), d) != outer.end();
-  });
-}
-
 /// A fold enclosing the node being looked at.
 struct Enclosing {
   int var = -1;
@@ -118,7 +111,7 @@ class MemoPlanner {
         body_.sharing.fold_vars[i] != (std::uint32_t{1} << e->depth))
       return false;
     const std::vector<int> orbit = orbit_of(n);
-    if (!contains(orbit, e->sub) || contains(cell_orbit_, orbit)) return false;
+    if (!orbit_contains(orbit, e->sub) || orbit_contains(cell_orbit_, orbit)) return false;
     std::map<int, std::vector<int>> bound = {{n.var, n.orbit}};
     return reads_only_its_orbit(n.a, bound);
   }
@@ -137,7 +130,7 @@ class MemoPlanner {
       case Op::Read:
       case Op::Fold: {
         const auto it = bound.find(n.place.node);
-        if (it == bound.end() || !n.place.hops.empty() || !contains(orbit_of(n), it->second))
+        if (it == bound.end() || !n.place.hops.empty() || !orbit_contains(orbit_of(n), it->second))
           return false;
         break;
       }
@@ -172,6 +165,12 @@ class MemoPlanner {
 };
 
 }  // namespace
+
+bool orbit_contains(const std::vector<int>& outer, const std::vector<int>& inner) {
+  return std::all_of(inner.begin(), inner.end(), [&](int d) {
+    return std::find(outer.begin(), outer.end(), d) != outer.end();
+  });
+}
 
 std::vector<ir::OrbitMemo> plan_orbit_memos(const ir::Body& body,
                                             const std::vector<ir::ExprId>& roots,

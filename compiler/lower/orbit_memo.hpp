@@ -43,6 +43,9 @@ namespace rift::lower {
 /// The orbit an embedding lives on (its dimensions).
 using EmbeddingOrbit = std::function<std::vector<int>(const std::string& embedding)>;
 
+/// Whether every dimension of orbit `inner` is one of orbit `outer`'s.
+bool orbit_contains(const std::vector<int>& outer, const std::vector<int>& inner);
+
 /// The memos of the nodes reachable from `roots` in `body` (already shared,
 /// lower/share.hpp), for a criterion on cells of orbit `cell_orbit`; grouped by
 /// (fold variable, orbit), in node order. Outermost nodes only: a memoised

@@ -12,10 +12,6 @@ namespace rift {
 
 namespace {
 
-std::error_code last_os_error() {
-  return std::error_code(errno != 0 ? errno : EIO, std::generic_category());
-}
-
 void append_field(std::string& out, std::string_view text) {
   if (text.find_first_of(",\"\r\n") == std::string_view::npos) {
     out += text;

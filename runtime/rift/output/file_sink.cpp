@@ -9,14 +9,6 @@
 
 namespace rift {
 
-namespace {
-
-std::error_code last_os_error() {
-  return std::error_code(errno != 0 ? errno : EIO, std::generic_category());
-}
-
-}  // namespace
-
 void ensure_directory(const std::filesystem::path& dir) {
   if (dir.empty()) return;
   std::error_code ec;

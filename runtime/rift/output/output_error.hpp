@@ -1,6 +1,7 @@
 // The one error type of the output writers: names the path and the OS error.
 #pragma once
 
+#include <cerrno>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -28,5 +29,11 @@ class OutputError : public std::runtime_error {
   std::filesystem::path path_;
   std::error_code error_;
 };
+
+/// The error of the C library call that just failed, as errno tells it (EIO
+/// when errno was left 0, so that a failure never reads as success).
+inline std::error_code last_os_error() {
+  return std::error_code(errno != 0 ? errno : EIO, std::generic_category());
+}
 
 }  // namespace rift

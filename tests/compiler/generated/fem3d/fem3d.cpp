@@ -400,14 +400,14 @@ void CorotationalKernel::reset_stored([[maybe_unused]] const Match& m, [[maybe_u
 }
 
 void CorotationalKernel::clear_accumulated() {
-  std::fill(e_stress_mass.values().begin(), e_stress_mass.values().end(), rift::Real{0});
+  std::fill(e_stress_mass.values().begin(), e_stress_mass.values().end(), rift::Real(0));
   std::fill(e_stress_weighted.values().begin(), e_stress_weighted.values().end(), rift::Mat3::Zero());
 }
 
 void CorotationalKernel::reset_accumulated(const rift::GMap& g, std::span<const rift::Dart> region) {
   for (const rift::Dart d : region) {
     if (!g.is_alive(d)) continue;
-    if (const rift::Slot s = e_stress_mass.slot(d); s < e_stress_mass.values().size()) e_stress_mass.values()[s] = rift::Real{0};
+    if (const rift::Slot s = e_stress_mass.slot(d); s < e_stress_mass.values().size()) e_stress_mass.values()[s] = rift::Real(0);
     if (const rift::Slot s = e_stress_weighted.slot(d); s < e_stress_weighted.values().size()) e_stress_weighted.values()[s] = rift::Mat3::Zero();
   }
 }
