@@ -7,13 +7,20 @@
 # (cmake/RiftUnity.cmake), so its compile commands name the batches, not the
 # sources, and a command clang-tidy guessed for a source would be another
 # target's. The job therefore configures a tree of its own without batches
-# (build/tidy, or the folder given) and generates there only the parser and
+# (build/tidy, or $RIFT_TIDY_BUILD) and generates there only the parser and
 # lexer riftc's sources include: nothing is compiled in it. Checked alone, a
 # source that misses an #include fails here, as it would in a build without
 # batches.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-build=${1:-build/tidy}
+if [ $# -ne 0 ]; then
+  # It once read the compile commands of the folder given (build/release):
+  # configuring that folder without batches would change the user's build.
+  echo "clang-tidy.sh takes no argument: it configures build/tidy" \
+    "(set RIFT_TIDY_BUILD for another folder)" >&2
+  exit 2
+fi
+build=${RIFT_TIDY_BUILD:-build/tidy}
 jobs=$(nproc 2>/dev/null || echo 2)
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRIFT_WERROR=ON \
   -DRIFT_UNITY_BUILD=OFF -DRIFT_UNITY_TESTS=OFF > /dev/null
